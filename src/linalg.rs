@@ -1,0 +1,313 @@
+//! Small dense linear algebra over any [`Scalar`]: 3-vectors, 3×3 matrices and 2×2
+//! matrices (used with complex scalars for su(2)).  Part of the numbers layer: it
+//! knows nothing about the Euler top.
+
+use crate::numbers::{ComplexScalar, Scalar};
+use std::ops::{Add, Mul, Neg, Sub};
+
+/// A column 3-vector.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Vec3<S>(pub [S; 3]);
+
+/// A 3×3 matrix, row-major.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mat3<S>(pub [[S; 3]; 3]);
+
+/// A 2×2 matrix, row-major.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mat2<S>(pub [[S; 2]; 2]);
+
+impl<S: Scalar> Vec3<S> {
+    /// `(x, y, z)`.
+    pub fn new(x: S, y: S, z: S) -> Self {
+        Vec3([x, y, z])
+    }
+    /// The zero vector with the precision of `like`.
+    pub fn zeros(like: &S) -> Self {
+        Vec3([like.zero(), like.zero(), like.zero()])
+    }
+    /// Component `i` (0-based).
+    pub fn get(&self, i: usize) -> &S {
+        &self.0[i]
+    }
+    /// Euclidean inner product ⟨self, o⟩.
+    pub fn dot(&self, o: &Self) -> S {
+        let [a, b, c] = &self.0;
+        let [x, y, z] = &o.0;
+        a.clone() * x.clone() + b.clone() * y.clone() + c.clone() * z.clone()
+    }
+    /// The standard (right-handed) cross product: `(a×b)₁ = a₂b₃ − a₃b₂`, cyclic.
+    pub fn cross(&self, o: &Self) -> Self {
+        let [a1, a2, a3] = &self.0;
+        let [b1, b2, b3] = &o.0;
+        Vec3([
+            a2.clone() * b3.clone() - a3.clone() * b2.clone(),
+            a3.clone() * b1.clone() - a1.clone() * b3.clone(),
+            a1.clone() * b2.clone() - a2.clone() * b1.clone(),
+        ])
+    }
+    /// `s · self`.
+    pub fn scale(&self, s: &S) -> Self {
+        Vec3(self.0.clone().map(|x| x * s.clone()))
+    }
+    /// Componentwise product.
+    pub fn hadamard(&self, o: &Self) -> Self {
+        let [a, b, c] = self.0.clone();
+        let [x, y, z] = o.0.clone();
+        Vec3([a * x, b * y, c * z])
+    }
+    /// Squared Euclidean norm.
+    pub fn norm2(&self) -> S {
+        self.dot(self)
+    }
+    /// Largest component magnitude (∞-norm), as f64.
+    pub fn max_magnitude(&self) -> f64 {
+        self.0.iter().map(|x| x.magnitude()).fold(0.0, f64::max)
+    }
+}
+
+impl<S: Scalar> Add for Vec3<S> {
+    type Output = Self;
+    fn add(self, o: Self) -> Self {
+        let [a, b, c] = self.0;
+        let [x, y, z] = o.0;
+        Vec3([a + x, b + y, c + z])
+    }
+}
+impl<S: Scalar> Sub for Vec3<S> {
+    type Output = Self;
+    fn sub(self, o: Self) -> Self {
+        let [a, b, c] = self.0;
+        let [x, y, z] = o.0;
+        Vec3([a - x, b - y, c - z])
+    }
+}
+impl<S: Scalar> Neg for Vec3<S> {
+    type Output = Self;
+    fn neg(self) -> Self {
+        Vec3(self.0.map(|x| -x))
+    }
+}
+
+impl<S: Scalar> Mat3<S> {
+    /// Build from a function of (row, column).
+    pub fn from_fn(mut f: impl FnMut(usize, usize) -> S) -> Self {
+        Mat3(std::array::from_fn(|i| std::array::from_fn(|j| f(i, j))))
+    }
+    /// The zero matrix.
+    pub fn zeros(like: &S) -> Self {
+        Self::from_fn(|_, _| like.zero())
+    }
+    /// The identity matrix.
+    pub fn identity(like: &S) -> Self {
+        Self::from_fn(|i, j| if i == j { like.one() } else { like.zero() })
+    }
+    /// `diag(d₁, d₂, d₃)`.
+    pub fn diag(d: &Vec3<S>) -> Self {
+        let z = d.0[0].zero();
+        Self::from_fn(|i, j| if i == j { d.0[i].clone() } else { z.clone() })
+    }
+    /// Entry (i, j), 0-based.
+    pub fn at(&self, i: usize, j: usize) -> &S {
+        &self.0[i][j]
+    }
+    /// Transpose.
+    pub fn transpose(&self) -> Self {
+        Self::from_fn(|i, j| self.0[j][i].clone())
+    }
+    /// `s · self`.
+    pub fn scale(&self, s: &S) -> Self {
+        Self::from_fn(|i, j| self.0[i][j].clone() * s.clone())
+    }
+    /// Matrix–vector product.
+    pub fn mul_vec(&self, v: &Vec3<S>) -> Vec3<S> {
+        Vec3(std::array::from_fn(|i| {
+            self.0[i][0].clone() * v.0[0].clone()
+                + self.0[i][1].clone() * v.0[1].clone()
+                + self.0[i][2].clone() * v.0[2].clone()
+        }))
+    }
+    /// Determinant (cofactor expansion).
+    pub fn det(&self) -> S {
+        let m = &self.0;
+        let c = |i: usize, j: usize| m[i][j].clone();
+        c(0, 0) * (c(1, 1) * c(2, 2) - c(1, 2) * c(2, 1))
+            - c(0, 1) * (c(1, 0) * c(2, 2) - c(1, 2) * c(2, 0))
+            + c(0, 2) * (c(1, 0) * c(2, 1) - c(1, 1) * c(2, 0))
+    }
+    /// Inverse by the adjugate; `None` when the determinant is exactly zero.
+    pub fn inverse(&self) -> Option<Self> {
+        let d = self.det();
+        if d.is_zero() {
+            return None;
+        }
+        let m = &self.0;
+        let c = |i: usize, j: usize| m[i % 3][j % 3].clone();
+        // adj(A)_{ji} = cofactor_{ij}
+        Some(Self::from_fn(|j, i| {
+            (c(i + 1, j + 1) * c(i + 2, j + 2) - c(i + 1, j + 2) * c(i + 2, j + 1)) / d.clone()
+        }))
+    }
+    /// Commutator `[self, o] = self·o − o·self`.
+    pub fn commutator(&self, o: &Self) -> Self {
+        self.clone() * o.clone() - o.clone() * self.clone()
+    }
+    /// Largest entry magnitude, as f64.
+    pub fn max_magnitude(&self) -> f64 {
+        self.0
+            .iter()
+            .flat_map(|r| r.iter())
+            .map(|x| x.magnitude())
+            .fold(0.0, f64::max)
+    }
+    /// Trace.
+    pub fn trace(&self) -> S {
+        self.0[0][0].clone() + self.0[1][1].clone() + self.0[2][2].clone()
+    }
+}
+
+impl<S: Scalar> Add for Mat3<S> {
+    type Output = Self;
+    fn add(self, o: Self) -> Self {
+        Self::from_fn(|i, j| self.0[i][j].clone() + o.0[i][j].clone())
+    }
+}
+impl<S: Scalar> Sub for Mat3<S> {
+    type Output = Self;
+    fn sub(self, o: Self) -> Self {
+        Self::from_fn(|i, j| self.0[i][j].clone() - o.0[i][j].clone())
+    }
+}
+impl<S: Scalar> Neg for Mat3<S> {
+    type Output = Self;
+    fn neg(self) -> Self {
+        Self::from_fn(|i, j| -self.0[i][j].clone())
+    }
+}
+impl<S: Scalar> Mul for Mat3<S> {
+    type Output = Self;
+    fn mul(self, o: Self) -> Self {
+        Self::from_fn(|i, j| {
+            self.0[i][0].clone() * o.0[0][j].clone()
+                + self.0[i][1].clone() * o.0[1][j].clone()
+                + self.0[i][2].clone() * o.0[2][j].clone()
+        })
+    }
+}
+
+impl<S: Scalar> Mat2<S> {
+    /// Build from a function of (row, column).
+    pub fn from_fn(mut f: impl FnMut(usize, usize) -> S) -> Self {
+        Mat2(std::array::from_fn(|i| std::array::from_fn(|j| f(i, j))))
+    }
+    /// The zero matrix.
+    pub fn zeros(like: &S) -> Self {
+        Self::from_fn(|_, _| like.zero())
+    }
+    /// The identity matrix.
+    pub fn identity(like: &S) -> Self {
+        Self::from_fn(|i, j| if i == j { like.one() } else { like.zero() })
+    }
+    /// `s · self`.
+    pub fn scale(&self, s: &S) -> Self {
+        Self::from_fn(|i, j| self.0[i][j].clone() * s.clone())
+    }
+    /// Determinant.
+    pub fn det(&self) -> S {
+        let m = &self.0;
+        m[0][0].clone() * m[1][1].clone() - m[0][1].clone() * m[1][0].clone()
+    }
+    /// Inverse; `None` when the determinant is exactly zero.
+    pub fn inverse(&self) -> Option<Self> {
+        let d = self.det();
+        if d.is_zero() {
+            return None;
+        }
+        let m = &self.0;
+        Some(Mat2([
+            [m[1][1].clone() / d.clone(), -m[0][1].clone() / d.clone()],
+            [-m[1][0].clone() / d.clone(), m[0][0].clone() / d],
+        ]))
+    }
+    /// Commutator `[self, o]`.
+    pub fn commutator(&self, o: &Self) -> Self {
+        self.clone() * o.clone() - o.clone() * self.clone()
+    }
+    /// Largest entry magnitude, as f64.
+    pub fn max_magnitude(&self) -> f64 {
+        self.0
+            .iter()
+            .flat_map(|r| r.iter())
+            .map(|x| x.magnitude())
+            .fold(0.0, f64::max)
+    }
+}
+
+impl<C: ComplexScalar> Mat2<C> {
+    /// Pauli matrix σ_k, k ∈ {1, 2, 3}:
+    /// σ₁ = [[0,1],[1,0]], σ₂ = [[0,−i],[i,0]], σ₃ = [[1,0],[0,−1]].
+    /// Returns `None` for any other k.
+    pub fn pauli(k: usize, like: &C) -> Option<Self> {
+        let (o, z, i) = (like.one(), like.zero(), like.i());
+        Some(match k {
+            1 => Mat2([[z.clone(), o.clone()], [o, z]]),
+            2 => Mat2([[z.clone(), -i.clone()], [i, z]]),
+            3 => Mat2([[o.clone(), z.clone()], [z, -o]]),
+            _ => return None,
+        })
+    }
+}
+
+impl<S: Scalar> Add for Mat2<S> {
+    type Output = Self;
+    fn add(self, o: Self) -> Self {
+        Self::from_fn(|i, j| self.0[i][j].clone() + o.0[i][j].clone())
+    }
+}
+impl<S: Scalar> Sub for Mat2<S> {
+    type Output = Self;
+    fn sub(self, o: Self) -> Self {
+        Self::from_fn(|i, j| self.0[i][j].clone() - o.0[i][j].clone())
+    }
+}
+impl<S: Scalar> Neg for Mat2<S> {
+    type Output = Self;
+    fn neg(self) -> Self {
+        Self::from_fn(|i, j| -self.0[i][j].clone())
+    }
+}
+impl<S: Scalar> Mul for Mat2<S> {
+    type Output = Self;
+    fn mul(self, o: Self) -> Self {
+        Self::from_fn(|i, j| {
+            self.0[i][0].clone() * o.0[0][j].clone() + self.0[i][1].clone() * o.0[1][j].clone()
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::numbers::C64;
+    #[test]
+    fn inverse_and_cross() {
+        let m = Mat3([[2.0, 1.0, 0.0], [0.0, 3.0, 1.0], [1.0, 0.0, 4.0]]);
+        let p = m.clone() * m.inverse().unwrap();
+        assert!((p - Mat3::identity(&1.0)).max_magnitude() < 1e-15);
+        let e1 = Vec3::new(1.0, 0.0, 0.0);
+        let e2 = Vec3::new(0.0, 1.0, 0.0);
+        assert_eq!(e1.cross(&e2), Vec3::new(0.0, 0.0, 1.0));
+    }
+    #[test]
+    fn pauli_algebra() {
+        let z = C64::new(0.0, 0.0);
+        let s1 = Mat2::pauli(1, &z).unwrap();
+        let s2 = Mat2::pauli(2, &z).unwrap();
+        let s3 = Mat2::pauli(3, &z).unwrap();
+        // σ₁σ₂ = iσ₃
+        let lhs = s1 * s2;
+        let rhs = s3.scale(&C64::new(0.0, 1.0));
+        assert!((lhs - rhs).max_magnitude() < 1e-16);
+        assert!(Mat2::pauli(4, &z).is_none());
+    }
+}

@@ -1,0 +1,284 @@
+//! The numbers layer: one scalar abstraction shared by every number system.
+//!
+//! * [`Scalar`] — field operations, constants taken from `&self`, parsing, exact
+//!   square roots where they exist.  Implemented for `f64`, [`rug::Float`] (MPFR at
+//!   any precision), [`Cplx`] (complex numbers over any [`Real`], e.g. `Cplx<f64>`),
+//!   [`rug::Complex`] (MPC), [`num_rational::BigRational`] (exact) and [`Dual`]
+//!   (forward-mode automatic differentiation over any scalar).
+//! * [`Real`] — an ordered scalar with the elementary transcendental functions:
+//!   `f64`, `rug::Float`, `Dual<R>`.
+//! * [`ComplexScalar`] — a complex scalar with its real type: `Cplx<R>`, `rug::Complex`.
+//!
+//! **Precision travels with the values.**  `rug::Float` is not `Copy` and carries its
+//! own precision, so every constant or conversion is made from an existing value
+//! (`x.from_f64(0.5)`, `x.pi()`), and the result has that value's precision.  There
+//! is no global precision setting.
+//!
+//! ```
+//! use eulertop::numbers::{Real, Scalar};
+//! let x = rug::Float::with_val(256, 2);
+//! let r = x.sqrt();                // 256-bit square root of 2
+//! assert_eq!(r.prec(), 256);
+//! let back = r.clone() * r - x.from_i64(2);
+//! assert!(back.magnitude() < 1e-75);
+//! ```
+
+mod complex;
+mod dual;
+mod float64;
+mod mpfr;
+mod rational;
+
+pub use complex::{Cplx, C64};
+pub use dual::Dual;
+pub use rational::{parse_rational, Rational};
+
+use std::fmt::Debug;
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// Errors of the numbers layer.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum NumError {
+    /// A string that is not a number of the expected form.
+    #[error("malformed number '{0}'")]
+    Parse(String),
+    /// An exact square root of a value that is not a perfect square.
+    #[error("square root of {0} is not rational")]
+    NotPerfectSquare(String),
+    /// A square root of a negative real.
+    #[error("square root of negative value {0}")]
+    NegativeSqrt(String),
+    /// An operation the number system cannot do (e.g. `exp` on exact rationals).
+    #[error("{0} is not available for exact rationals")]
+    NotExact(&'static str),
+    /// Division by an exact zero.
+    #[error("division by zero")]
+    DivisionByZero,
+}
+
+/// A field element of some number system.
+///
+/// All constructors take `&self` so that the result inherits the receiver's
+/// precision (for MPFR) or exactness (for rationals).
+pub trait Scalar:
+    Clone
+    + Debug
+    + PartialEq
+    + Send
+    + Sync
+    + 'static
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+{
+    /// Zero, with the precision of `self`.
+    fn zero(&self) -> Self;
+    /// One, with the precision of `self`.
+    fn one(&self) -> Self;
+    /// The integer `n`, with the precision of `self` (correctly rounded).
+    fn from_i64(&self, n: i64) -> Self;
+    /// The f64 value `x`, with the precision of `self` (exact when the precision is
+    /// at least 53 bits or the scalar is exact).
+    fn from_f64(&self, x: f64) -> Self;
+    /// The fraction `n/d`, correctly rounded to the precision of `self`.
+    fn from_ratio(&self, n: i64, d: i64) -> Self {
+        self.from_i64(n) / self.from_i64(d)
+    }
+    /// Parses a decimal literal (`1.25`, `-3e-4`, and for exact scalars `3/4`) at the
+    /// precision of `self`.
+    fn parse_like(&self, s: &str) -> Result<Self, NumError>;
+    /// Working precision in bits; `None` for exact arithmetic.
+    fn precision(&self) -> Option<u32>;
+    /// Is this exactly zero?
+    fn is_zero(&self) -> bool;
+    /// The absolute value (modulus), rounded to `f64`.  Used for residual scaling.
+    fn magnitude(&self) -> f64;
+    /// A square root: correctly rounded for floating types (principal branch for
+    /// complex ones, error for negative reals), and exact for rationals, where it is an
+    /// error unless the argument is a perfect square.
+    fn try_sqrt(&self) -> Result<Self, NumError>;
+    /// `1/self`.
+    fn recip(&self) -> Self {
+        self.one() / self.clone()
+    }
+    /// `self` squared.
+    fn sqr(&self) -> Self {
+        self.clone() * self.clone()
+    }
+    /// Integer power by repeated squaring (negative `n` inverts).
+    fn powi(&self, n: i32) -> Self {
+        let mut base = if n < 0 { self.recip() } else { self.clone() };
+        let mut e = n.unsigned_abs();
+        let mut acc = self.one();
+        while e > 0 {
+            if e & 1 == 1 {
+                acc = acc * base.clone();
+            }
+            e >>= 1;
+            if e > 0 {
+                base = base.sqr();
+            }
+        }
+        acc
+    }
+    /// Decimal rendering with `digits` significant digits (exact form for rationals).
+    fn to_decimal(&self, digits: usize) -> String;
+}
+
+/// An ordered real scalar with elementary functions.
+pub trait Real: Scalar + PartialOrd {
+    /// Precision in bits (53 for `f64`).
+    fn prec(&self) -> u32;
+    /// The same value rounded to `bits` of precision (identity for `f64`).
+    fn with_prec(&self, bits: u32) -> Self;
+    /// The value rounded to `f64`.
+    fn to_f64(&self) -> f64;
+    /// π at the precision of `self`.
+    fn pi(&self) -> Self;
+    /// Machine epsilon at the precision of `self`: `2^(1-prec)`.
+    fn epsilon(&self) -> Self {
+        self.one().mul_2si(1 - self.prec() as i32)
+    }
+    /// `self · 2^n`, exactly.
+    fn mul_2si(&self, n: i32) -> Self;
+    /// `|self|`.
+    fn abs(&self) -> Self;
+    /// Square root; NaN (not a panic) for negative arguments.
+    fn sqrt(&self) -> Self;
+    /// `e^self`.
+    fn exp(&self) -> Self;
+    /// Natural logarithm.
+    fn ln(&self) -> Self;
+    /// Sine.
+    fn sin(&self) -> Self;
+    /// Cosine.
+    fn cos(&self) -> Self;
+    /// Sine and cosine together.
+    fn sin_cos(&self) -> (Self, Self) {
+        (self.sin(), self.cos())
+    }
+    /// Tangent.
+    fn tan(&self) -> Self {
+        let (s, c) = self.sin_cos();
+        s / c
+    }
+    /// Arc tangent.
+    fn atan(&self) -> Self;
+    /// Four-quadrant arc tangent `atan2(self, x)`.
+    fn atan2(&self, x: &Self) -> Self;
+    /// Arc sine.
+    fn asin(&self) -> Self;
+    /// Hyperbolic sine.
+    fn sinh(&self) -> Self;
+    /// Hyperbolic cosine.
+    fn cosh(&self) -> Self;
+    /// Hyperbolic tangent.
+    fn tanh(&self) -> Self;
+    /// Inverse hyperbolic sine.
+    fn asinh(&self) -> Self;
+    /// Inverse hyperbolic tangent.
+    fn atanh(&self) -> Self;
+    /// Largest integer not above `self`.
+    fn floor(&self) -> Self;
+    /// Nearest integer (ties away from zero).
+    fn round(&self) -> Self;
+    /// Is the value finite (not NaN or infinite)?
+    fn is_finite(&self) -> bool;
+    /// `self^y` for real `y` (`exp(y ln self)`, self > 0).
+    fn powf(&self, y: &Self) -> Self {
+        (y.clone() * self.ln()).exp()
+    }
+    /// The larger of two values.
+    fn max_of(&self, other: &Self) -> Self {
+        if self >= other {
+            self.clone()
+        } else {
+            other.clone()
+        }
+    }
+    /// The smaller of two values.
+    fn min_of(&self, other: &Self) -> Self {
+        if self <= other {
+            self.clone()
+        } else {
+            other.clone()
+        }
+    }
+    /// Sign: -1, 0 or 1.
+    fn signum_i(&self) -> i32 {
+        if self.is_zero() {
+            0
+        } else if *self > self.zero() {
+            1
+        } else {
+            -1
+        }
+    }
+}
+
+/// A complex scalar over a real type.
+pub trait ComplexScalar: Scalar {
+    /// The underlying real type.
+    type R: Real;
+    /// `re + i·im`.
+    fn from_parts(re: Self::R, im: Self::R) -> Self;
+    /// Real part.
+    fn re(&self) -> Self::R;
+    /// Imaginary part.
+    fn im(&self) -> Self::R;
+    /// Complex conjugate.
+    fn conj(&self) -> Self {
+        Self::from_parts(self.re(), -self.im())
+    }
+    /// Modulus.
+    fn abs(&self) -> Self::R {
+        let (a, b) = (self.re(), self.im());
+        (a.sqr() + b.sqr()).sqrt()
+    }
+    /// Argument in (-π, π].
+    fn arg(&self) -> Self::R {
+        self.im().atan2(&self.re())
+    }
+    /// The imaginary unit at the precision of `self`.
+    fn i(&self) -> Self {
+        let z = self.re().zero();
+        Self::from_parts(z.clone(), z.one())
+    }
+    /// Embeds a real of the same precision.
+    fn from_real(x: Self::R) -> Self {
+        let z = x.zero();
+        Self::from_parts(x, z)
+    }
+    /// Principal square root.
+    fn sqrt(&self) -> Self {
+        let (a, b) = (self.re(), self.im());
+        let r = self.abs();
+        let zero = a.zero();
+        if r.is_zero() {
+            return Self::from_parts(zero.clone(), zero);
+        }
+        let half = a.from_ratio(1, 2);
+        // sqrt((r + |a|)/2) computed without cancellation
+        let t = ((r + a.abs()) * half.clone()).sqrt();
+        if a >= zero {
+            let im = b / (t.clone() * a.from_i64(2));
+            Self::from_parts(t, im)
+        } else {
+            let re = b.abs() / (t.clone() * a.from_i64(2));
+            let im = if b < zero { -t } else { t };
+            Self::from_parts(re, im)
+        }
+    }
+    /// Complex exponential.
+    fn exp(&self) -> Self {
+        let e = self.re().exp();
+        let (s, c) = self.im().sin_cos();
+        Self::from_parts(e.clone() * c, e * s)
+    }
+    /// Principal logarithm.
+    fn ln(&self) -> Self {
+        Self::from_parts(self.abs().ln(), self.arg())
+    }
+}
