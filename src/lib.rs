@@ -8,6 +8,7 @@
 
 #![warn(missing_docs)]
 
+pub mod claims;
 pub mod cli;
 pub mod linalg;
 pub mod numbers;
