@@ -13,11 +13,22 @@ struct Cli {
 }
 
 #[derive(Subcommand)]
-enum Command {}
+enum Command {
+    /// Verify the claim catalogue on a precision ladder.
+    Verify(eulertop::cli::verify::Args),
+    /// Residual of one claim against precision, up to thousands of bits.
+    Audit(eulertop::cli::audit::Args),
+    /// Evaluate an expression of the catalogue language.
+    Eval(eulertop::cli::eval::Args),
+}
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    let result: Result<i32, eulertop::cli::CliError> = match cli.command {};
+    let result: Result<i32, eulertop::cli::CliError> = match cli.command {
+        Command::Verify(a) => eulertop::cli::verify::run(a),
+        Command::Audit(a) => eulertop::cli::audit::run(a),
+        Command::Eval(a) => eulertop::cli::eval::run(a),
+    };
     match result {
         Ok(code) => ExitCode::from(code as u8),
         Err(e) => {

@@ -146,7 +146,7 @@ fn real_fn_generic<R: Real>(x: &R, f: RealFn) -> Result<R, String> {
 }
 
 fn check_k<R: Real>(k: &R) -> Result<(), String> {
-    if !(k.abs() < k.one()) {
+    if k.abs() >= k.one() || !k.is_finite() {
         return Err(format!("modulus k = {:.6e} outside |k| < 1", k.to_f64()));
     }
     Ok(())
@@ -287,9 +287,8 @@ impl Log2Abs for Float {
         if Float::is_zero(self) {
             return f64::NEG_INFINITY;
         }
-        match self.to_f64_exp() {
-            (m, e) => m.abs().log2() + f64::from(e),
-        }
+        let (m, e) = self.to_f64_exp();
+        m.abs().log2() + f64::from(e)
     }
 }
 impl<S: Log2Abs> Log2Abs for Dual<S> {

@@ -205,7 +205,7 @@ fn call_inner<T: Num>(like: &T, name: &str, a: &[Value<T>]) -> Result<Value<T>, 
         "Kp" => {
             arity(a, 1)?;
             let k = a[0].as_real()?;
-            if !(k.clone() * k.clone() < k.one()) {
+            if k.clone() * k.clone() >= k.one() {
                 return Err("modulus outside |k| < 1".into());
             }
             let kp = (k.one() - k.clone() * k).real_fn(RealFn::Sqrt)?;

@@ -389,7 +389,7 @@ fn origin_of(file: &Arc<SourceFile>, s: &Spanned<String>) -> Origin {
                     c += 2;
                 }
             }
-            if inner == value || (!literal && !inner.contains('\\') && inner == value) {
+            if inner == value && (literal || !inner.contains('\\')) {
                 content_start = Some(c);
             }
             break;

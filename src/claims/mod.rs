@@ -14,3 +14,4 @@ pub mod parser;
 pub mod registry;
 pub mod sampler;
 pub mod value;
+pub mod verdict;

@@ -240,7 +240,7 @@ impl<'c> Sampler<'c> {
         let x: f64 = match name.as_str() {
             "uniform" => {
                 let a = reals(args)?;
-                if a.len() != 2 || !(a[0] < a[1]) {
+                if a.len() != 2 || a[0] >= a[1] || !a[0].is_finite() || !a[1].is_finite() {
                     return Err("uniform(a, b) needs a < b".into());
                 }
                 let j = self.rng.gen_range(0..=UNIFORM_GRID);
