@@ -20,6 +20,8 @@ enum Command {
     Audit(eulertop::cli::audit::Args),
     /// Evaluate an expression of the catalogue language.
     Eval(eulertop::cli::eval::Args),
+    /// sn, cn, dn of `u k` lines from stdin (`--complex`: `re(u) im(u) k`).
+    Jacobi(eulertop::cli::jacobi::Args),
 }
 
 fn main() -> ExitCode {
@@ -28,6 +30,7 @@ fn main() -> ExitCode {
         Command::Verify(a) => eulertop::cli::verify::run(a),
         Command::Audit(a) => eulertop::cli::audit::run(a),
         Command::Eval(a) => eulertop::cli::eval::run(a),
+        Command::Jacobi(a) => eulertop::cli::jacobi::run(a),
     };
     match result {
         Ok(code) => ExitCode::from(code as u8),
