@@ -7,7 +7,8 @@ use super::ast::Expr;
 use super::eval::{derive_with, EvalError, Evaluator};
 use super::registry::ExtFunction;
 use super::value::{Cx, Value};
-use crate::numbers::{Dual, Rational, Real, Scalar};
+use crate::numbers::{Cplx, Dual, Rational, Real, Scalar};
+use crate::special;
 use num_traits::{Signed, ToPrimitive};
 use rug::Float;
 
@@ -79,6 +80,10 @@ pub trait Num: Scalar + PartialOrd {
     fn ellipk(k: &Self) -> Result<Self, String>;
     /// Incomplete elliptic integral F(φ, k).
     fn ellipf(phi: &Self, k: &Self) -> Result<Self, String>;
+    /// Complementary complete integral K'(k) = K(√(1−k²)).
+    fn ellipkp(k: &Self) -> Result<Self, String>;
+    /// The real u in (−2K, 2K] with the given sn, cn, dn.
+    fn jacobi_inverse(s: &Self, c: &Self, d: &Self, k: &Self) -> Result<Self, String>;
     /// Calls a registered function on this backend.
     fn ext_call(f: &dyn ExtFunction, args: &[Value<Self>]) -> Result<Value<Self>, String>;
     /// Evaluates `d(body, var[, comp])` (forward-mode AD in the matching dual backend).
@@ -145,135 +150,6 @@ fn real_fn_generic<R: Real>(x: &R, f: RealFn) -> Result<R, String> {
     }
 }
 
-fn check_k<R: Real>(k: &R) -> Result<(), String> {
-    if k.abs() >= k.one() || !k.is_finite() {
-        return Err(format!("modulus k = {:.6e} outside |k| < 1", k.to_f64()));
-    }
-    Ok(())
-}
-
-/// Jacobi sn, cn, dn and am of real argument by the AGM / descending Landen scheme
-/// (DLMF 22.20(ii)); generic so that duals differentiate through it.
-pub fn sncndn_am_real<R: Real>(u: &R, k: &R) -> Result<([R; 3], R), String> {
-    check_k(k)?;
-    let one = u.one();
-    if k.is_zero() {
-        let (s, c) = u.sin_cos();
-        return Ok(([s, c, one.clone()], u.clone()));
-    }
-    let eps = u.epsilon();
-    let kp = (one.clone() - k.sqr()).sqrt();
-    let mut a = vec![one.clone()];
-    let mut c = vec![k.clone()];
-    let mut b = kp;
-    let mut extra = 0;
-    for _ in 0..200 {
-        let n = a.len() - 1;
-        if c[n].abs() <= eps.clone() * a[n].abs() {
-            extra += 1;
-            if extra > 1 {
-                break;
-            }
-        }
-        let an = a[n].clone();
-        let a1 = (an.clone() + b.clone()).mul_2si(-1);
-        let c1 = (an.clone() - b.clone()).mul_2si(-1);
-        b = (an * b).sqrt();
-        a.push(a1);
-        c.push(c1);
-    }
-    let n = a.len() - 1;
-    let mut phi = a[n].clone() * u.clone();
-    phi = phi.mul_2si(n as i32);
-    let mut phi_next = phi.clone();
-    for j in (1..=n).rev() {
-        let t = c[j].clone() / a[j].clone() * phi.sin();
-        let t = if t.abs() > one {
-            one.clone() * t.from_i64(t.signum_i() as i64)
-        } else {
-            t
-        };
-        phi_next = phi.clone();
-        phi = (phi.clone() + t.asin()).mul_2si(-1);
-    }
-    let (s, cc) = phi.sin_cos();
-    let d = if n == 0 {
-        (one - k.sqr() * s.sqr()).sqrt()
-    } else {
-        cc.clone() / (phi_next - phi.clone()).cos()
-    };
-    if !(s.is_finite() && cc.is_finite() && d.is_finite()) {
-        return Err(format!("sn/cn/dn not finite at u = {:.6e}", u.to_f64()));
-    }
-    Ok(([s, cc, d], phi))
-}
-
-fn ellipk_generic<R: Real>(k: &R) -> Result<R, String> {
-    check_k(k)?;
-    let one = k.one();
-    let mut a = one.clone();
-    let mut b = (one - k.sqr()).sqrt();
-    let eps = k.epsilon();
-    for _ in 0..200 {
-        if (a.clone() - b.clone()).abs() <= eps.clone() * a.clone() {
-            let a1 = (a.clone() + b.clone()).mul_2si(-1);
-            return Ok(k.pi() / a1.mul_2si(1));
-        }
-        let a1 = (a.clone() + b.clone()).mul_2si(-1);
-        b = (a * b).sqrt();
-        a = a1;
-    }
-    Err("AGM for K(k) did not converge".into())
-}
-
-fn ellipf_generic<R: Real>(phi: &R, k: &R) -> Result<R, String> {
-    check_k(k)?;
-    // Newton on am(u) = phi; d am/du = dn >= sqrt(1-k^2) > 0.
-    let mut u = phi.clone();
-    let eps = phi.epsilon();
-    for _ in 0..200 {
-        let ([_, _, d], am) = sncndn_am_real(&u, k)?;
-        let du = (am - phi.clone()) / d;
-        u = u - du.clone();
-        if du.abs() <= eps.clone() * (u.abs() + u.one()) {
-            // one more step for the derivative part of duals
-            let ([_, _, d], am) = sncndn_am_real(&u, k)?;
-            return Ok(u.clone() - (am - phi.clone()) / d);
-        }
-    }
-    Err(format!(
-        "F(phi, k): Newton did not converge at phi = {:.6e}",
-        phi.to_f64()
-    ))
-}
-
-/// Complex sn, cn, dn by the Jacobi imaginary transformation and the addition theorem
-/// (Abramowitz–Stegun 16.21.1–3).
-fn sncndn_complex_generic<R: Real>(u: &Cx<R>, k: &R) -> Result<[Cx<R>; 3], String> {
-    check_k(k)?;
-    let ([s, c, d], _) = sncndn_am_real(&u.re, k)?;
-    let kp = (k.one() - k.sqr()).sqrt();
-    let ([s1, c1, d1], _) = sncndn_am_real(&u.im, &kp)?;
-    let k2 = k.sqr();
-    let den = c1.sqr() + k2.clone() * s.sqr() * s1.sqr();
-    if den.is_zero() {
-        return Err("pole of sn/cn/dn".into());
-    }
-    let sn = Cx {
-        re: s.clone() * d1.clone() / den.clone(),
-        im: c.clone() * d.clone() * s1.clone() * c1.clone() / den.clone(),
-    };
-    let cn = Cx {
-        re: c.clone() * c1.clone() / den.clone(),
-        im: -(s.clone() * d.clone() * s1.clone() * d1.clone()) / den.clone(),
-    };
-    let dn = Cx {
-        re: d * c1 * d1 / den.clone(),
-        im: -(k2 * s * c * s1) / den,
-    };
-    Ok([sn, cn, dn])
-}
-
 trait Log2Abs {
     fn log2_abs_impl(&self) -> f64;
 }
@@ -332,19 +208,30 @@ macro_rules! real_backend {
                 log2_abs_of(self)
             }
             fn sncndn(u: &Self, k: &Self) -> Result<[Self; 3], String> {
-                sncndn_am_real(u, k).map(|r| r.0)
+                special::sncndn(u, k)
+                    .map(|(s, c, d)| [s, c, d])
+                    .map_err(|e| e.to_string())
             }
             fn sncndn_c(u: &Cx<Self>, k: &Self) -> Result<[Cx<Self>; 3], String> {
-                sncndn_complex_generic(u, k)
+                let z = Cplx::new(u.re.clone(), u.im.clone());
+                let (s, c, d) = special::sncndn_complex(&z, k).map_err(|e| e.to_string())?;
+                let back = |w: Cplx<Self>| Cx { re: w.re, im: w.im };
+                Ok([back(s), back(c), back(d)])
             }
             fn am(u: &Self, k: &Self) -> Result<Self, String> {
-                sncndn_am_real(u, k).map(|r| r.1)
+                special::am(u, k).map_err(|e| e.to_string())
             }
             fn ellipk(k: &Self) -> Result<Self, String> {
-                ellipk_generic(k)
+                special::ellipk(k).map_err(|e| e.to_string())
+            }
+            fn ellipkp(k: &Self) -> Result<Self, String> {
+                special::ellipkp(k).map_err(|e| e.to_string())
             }
             fn ellipf(phi: &Self, k: &Self) -> Result<Self, String> {
-                ellipf_generic(phi, k)
+                special::ellipf(phi, k).map_err(|e| e.to_string())
+            }
+            fn jacobi_inverse(s: &Self, c: &Self, d: &Self, k: &Self) -> Result<Self, String> {
+                special::jacobi_inverse(s, c, d, k).map_err(|e| e.to_string())
             }
             fn ext_call(f: &dyn ExtFunction, args: &[Value<Self>]) -> Result<Value<Self>, String> {
                 f.$call(args)
@@ -432,32 +319,13 @@ impl Num for Rational {
     fn ellipf(_p: &Self, _k: &Self) -> Result<Self, String> {
         not_exact("F")
     }
+    fn ellipkp(_k: &Self) -> Result<Self, String> {
+        not_exact("Kp")
+    }
+    fn jacobi_inverse(_s: &Self, _c: &Self, _d: &Self, _k: &Self) -> Result<Self, String> {
+        not_exact("jacobi_inverse")
+    }
     fn ext_call(f: &dyn ExtFunction, args: &[Value<Self>]) -> Result<Value<Self>, String> {
         f.call_exact(args)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    #[test]
-    fn agm_matches_identities() {
-        for &(u, k) in &[(0.3, 0.5), (1.7, 0.9), (-2.5, 0.1), (4.0, 0.99)] {
-            let ([s, c, d], _) = sncndn_am_real(&u, &k).unwrap();
-            assert!((s * s + c * c - 1.0).abs() < 1e-14);
-            assert!((k * k * s * s + d * d - 1.0).abs() < 1e-14);
-            // d sn/du = cn dn by duals
-            let ([sd, _, _], _) = sncndn_am_real(&Dual::var(u), &Dual::constant(k)).unwrap();
-            assert!((sd.d - c * d).abs() < 1e-12, "{u} {k}");
-        }
-        // K(0) = pi/2
-        assert!((ellipk_generic(&0.0f64).unwrap() - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
-        // sn(K) = 1
-        let kk = ellipk_generic(&0.7f64).unwrap();
-        let ([s, _, _], _) = sncndn_am_real(&kk, &0.7).unwrap();
-        assert!((s - 1.0).abs() < 1e-14);
-        let f = ellipf_generic(&1.2f64, &0.6).unwrap();
-        let (_, am) = sncndn_am_real(&f, &0.6).unwrap();
-        assert!((am - 1.2).abs() < 1e-14);
     }
 }

@@ -204,16 +204,21 @@ fn call_inner<T: Num>(like: &T, name: &str, a: &[Value<T>]) -> Result<Value<T>, 
         }
         "Kp" => {
             arity(a, 1)?;
-            let k = a[0].as_real()?;
-            if k.clone() * k.clone() >= k.one() {
-                return Err("modulus outside |k| < 1".into());
-            }
-            let kp = (k.one() - k.clone() * k).real_fn(RealFn::Sqrt)?;
-            T::ellipk(&kp).map(Value::Real)
+            T::ellipkp(&a[0].as_real()?).map(Value::Real)
         }
         "F" => {
             arity(a, 2)?;
             T::ellipf(&a[0].as_real()?, &a[1].as_real()?).map(Value::Real)
+        }
+        "jacobi_inverse" => {
+            arity(a, 4)?;
+            T::jacobi_inverse(
+                &a[0].as_real()?,
+                &a[1].as_real()?,
+                &a[2].as_real()?,
+                &a[3].as_real()?,
+            )
+            .map(Value::Real)
         }
         "vec" => {
             arity(a, 3)?;
