@@ -10,4 +10,5 @@
 
 pub mod cli;
 pub mod linalg;
+pub mod model;
 pub mod numbers;

@@ -13,13 +13,11 @@ struct Cli {
 }
 
 #[derive(Subcommand)]
-enum Command {
-}
+enum Command {}
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    let result: Result<i32, eulertop::cli::CliError> = match cli.command {
-    };
+    let result: Result<i32, eulertop::cli::CliError> = match cli.command {};
     match result {
         Ok(code) => ExitCode::from(code as u8),
         Err(e) => {
