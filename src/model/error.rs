@@ -33,3 +33,9 @@ pub enum ModelError {
     #[error("special function: {0}")]
     Special(String),
 }
+
+impl From<crate::special::SpecialError> for ModelError {
+    fn from(e: crate::special::SpecialError) -> Self {
+        ModelError::Special(e.to_string())
+    }
+}

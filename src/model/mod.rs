@@ -31,12 +31,16 @@
 //! product, kept separately so that the mismatch can be recorded as a claim.
 
 pub mod discretization;
+pub mod elliptic_coords;
 pub mod error;
 pub mod euler;
 pub mod params;
+pub mod phase;
+pub mod solution;
 pub mod veselov_moser;
 
 pub use discretization::{Gamma, NewtonOptions, StepReport};
+pub use elliptic_coords::{EllCoords, Sector};
 pub use error::ModelError;
 pub use euler::Inertia;
 pub use params::{EllipticParams, Regime};

@@ -113,6 +113,20 @@ impl<R: Real> EllipticParams<R> {
         })
     }
 
+    /// Converts every parameter with `f` (e.g. to [`Dual`](crate::numbers::Dual) constants).
+    pub fn map<S: Real>(&self, f: impl Fn(&R) -> S) -> EllipticParams<S> {
+        EllipticParams {
+            regime: self.regime,
+            m2: f(&self.m2),
+            e: f(&self.e),
+            k2: f(&self.k2),
+            a2: f(&self.a2),
+            b2: f(&self.b2),
+            c2: f(&self.c2),
+            nu2: f(&self.nu2),
+        }
+    }
+
     /// The modulus `k = √k²` (k).
     pub fn k(&self) -> R {
         self.k2.sqrt()
