@@ -34,6 +34,7 @@ pub mod discretization;
 pub mod elliptic_coords;
 pub mod error;
 pub mod euler;
+pub mod lax;
 pub mod params;
 pub mod phase;
 pub mod solution;
