@@ -90,6 +90,16 @@ pub fn lax_dv<R: Real>(
     Ok(Mat2::identity(&like) + vm.scale(&like))
 }
 
+/// `Ω^{1/2}(V) = (V₁/√A, V₂/√B, V₃/√C)` as used in (gET 1), (gET 2), (dgET aux).
+pub fn omega_half<R: Real>(inertia: &Inertia<R>, v: &Vec3<R>) -> Vec3<R> {
+    let [v1, v2, v3] = v.0.clone();
+    Vec3::new(
+        v1 / inertia.a.sqrt(),
+        v2 / inertia.b.sqrt(),
+        v3 / inertia.c.sqrt(),
+    )
+}
+
 /// The two identities (u0) would need, minus what (ws)/(rokappa) force:
 /// `((1/A − 1/C) − ρ², (1/A − 1/B) − ρ²κ²)`; both are nonzero for A > B > C > 0.
 pub fn u0_defects<R: Real>(inertia: &Inertia<R>) -> (R, R) {
