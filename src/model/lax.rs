@@ -47,9 +47,9 @@ pub fn su2_matrix<R: Real>(x: &Vec3<R>, w: &[Cplx<R>; 3]) -> Mat2<Cplx<R>> {
     let z = like.zero();
     let two_i = Cplx::new(z.re.clone(), z.re.from_i64(2));
     let mut acc = Mat2::zeros(like);
-    for k in 0..3 {
+    for (k, wk) in w.iter().enumerate() {
         let s = Mat2::pauli(k + 1, like).unwrap_or_else(|| Mat2::zeros(like));
-        let coef = Cplx::from_real(x.0[k].clone()) * w[k].clone() / two_i.clone();
+        let coef = Cplx::from_real(x.0[k].clone()) * wk.clone() / two_i.clone();
         acc = acc + s.scale(&coef);
     }
     acc
