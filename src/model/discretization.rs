@@ -165,6 +165,42 @@ pub fn residual_jacobian<R: Real>(
     Ok((res, jac))
 }
 
+/// The derivative `∂M̂/∂M` of the map defined by (impl spec) at a solved pair
+/// `(M, M̂)`, by the implicit function theorem: `−(∂F/∂M̂)⁻¹ ∂F/∂M`, with `∂F/∂M̂`
+/// analytic and `∂F/∂M` from three [`Dual`](crate::numbers::Dual) passes.  Errors if
+/// `∂F/∂M̂` is singular (Proposition 1 fails).
+pub fn step_jacobian<R: Real>(
+    inertia: &Inertia<R>,
+    gamma: Gamma,
+    m: &Vec3<R>,
+    mhat: &Vec3<R>,
+    h: &R,
+) -> Result<Mat3<R>, ModelError> {
+    use crate::numbers::Dual;
+    let (_, jx) = residual_jacobian(inertia, gamma, m, mhat, h)?;
+    let inv = jx.inverse().ok_or_else(|| ModelError::NewtonFailed {
+        what: "step Jacobian (singular dF/dM^)".into(),
+        iterations: 0,
+        residual: f64::NAN,
+    })?;
+    let id = inertia.to_dual();
+    let xd = Vec3(mhat.0.clone().map(Dual::constant));
+    let hd = Dual::constant(h.clone());
+    let mut jm = Mat3::zeros(h);
+    for col in 0..3 {
+        let md = Vec3(std::array::from_fn(|k| {
+            let v = m.0[k].clone();
+            let d = if k == col { v.one() } else { v.zero() };
+            Dual::new(v, d)
+        }));
+        let r = residual(&id, gamma, &md, &xd, &hd)?;
+        for row in 0..3 {
+            jm.0[row][col] = r.0[row].d.clone();
+        }
+    }
+    Ok(-(inv * jm))
+}
+
 /// Options of the Newton solver.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct NewtonOptions {

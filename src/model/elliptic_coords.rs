@@ -130,9 +130,7 @@ pub struct EllCoords<R> {
 /// `φ = asinh((M₂/b)/(M₁/a))`.  Errors ([`ModelError::Undefined`]) at `M = 0` and on
 /// the coordinate axes, where `φ` is undefined.
 pub fn m_to_phi<R: Real>(inertia: &Inertia<R>, m: &Vec3<R>) -> Result<EllCoords<R>, ModelError> {
-    let m2 = inertia.m2(m);
-    let e = inertia.energy(m);
-    let params = EllipticParams::new(inertia, &m2, &e)?;
+    let params = EllipticParams::from_point(inertia, m)?;
     let sector = Sector::of(params.regime, m)?;
     let (a, b, c) = amplitudes(&params, sector);
     let [m1, m2c, m3] = m.0.clone();

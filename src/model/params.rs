@@ -4,6 +4,7 @@
 //! coefficients (alphas) of (master12) and (MV alphabeta) of (MV master).
 
 use super::{Inertia, ModelError};
+use crate::linalg::Vec3;
 use crate::numbers::Real;
 
 /// Which of the three cases of (sol) applies.
@@ -57,6 +58,43 @@ impl<R: Real> EllipticParams<R> {
     /// Errors ([`ModelError::Undefined`]) unless `M² > 0` and `1/A ≤ E/M² ≤ 1/C`
     /// (i.e. `AE − M² ≥ 0` and `M² − CE ≥ 0`), the range attained by real `M ≠ 0`.
     pub fn new(inertia: &Inertia<R>, m2: &R, e: &R) -> Result<Self, ModelError> {
+        let (a, c) = (&inertia.a, &inertia.c);
+        let ae = a.clone() * e.clone() - m2.clone(); // AE − M²
+        let ce = m2.clone() - c.clone() * e.clone(); // M² − CE
+        let regime = Regime::of(inertia, m2, e);
+        Self::from_differences(inertia, m2, e, ae, ce, regime)
+    }
+
+    /// The same parameters for the `(M², E)` of the point `m`, with the differences
+    /// `AE − M² = M₂²(A−B)/B + M₃²(A−C)/C`, `M² − CE = M₁²(A−C)/A + M₂²(B−C)/B` and
+    /// `BE − M² = M₃²(B−C)/C − M₁²(A−B)/A` (whose sign gives the regime) computed
+    /// without cancellation, so that points near the axes keep full relative accuracy.
+    pub fn from_point(inertia: &Inertia<R>, m: &Vec3<R>) -> Result<Self, ModelError> {
+        let (a, b, c) = (&inertia.a, &inertia.b, &inertia.c);
+        let [x, y, z] = &m.0;
+        let (x2, y2, z2) = (x.sqr(), y.sqr(), z.sqr());
+        let ab = a.clone() - b.clone();
+        let bc = b.clone() - c.clone();
+        let ac = a.clone() - c.clone();
+        let ae = y2.clone() * ab.clone() / b.clone() + z2.clone() * ac.clone() / c.clone();
+        let ce = x2.clone() * ac / a.clone() + y2 * bc.clone() / b.clone();
+        let be = z2 * bc / c.clone() - x2 * ab / a.clone();
+        let regime = match be.signum_i() {
+            1 => Regime::Upper,
+            -1 => Regime::Lower,
+            _ => Regime::Separatrix,
+        };
+        Self::from_differences(inertia, &inertia.m2(m), &inertia.energy(m), ae, ce, regime)
+    }
+
+    fn from_differences(
+        inertia: &Inertia<R>,
+        m2: &R,
+        e: &R,
+        ae: R,
+        ce: R,
+        regime: Regime,
+    ) -> Result<Self, ModelError> {
         let (a, b, c) = (&inertia.a, &inertia.b, &inertia.c);
         let z = m2.zero();
         if *m2 <= z || !m2.is_finite() {
@@ -64,8 +102,6 @@ impl<R: Real> EllipticParams<R> {
                 "elliptic parameters undefined at M = 0 (M^2 must be > 0)".into(),
             ));
         }
-        let ae = a.clone() * e.clone() - m2.clone(); // AE − M²
-        let ce = m2.clone() - c.clone() * e.clone(); // M² − CE
         if ae < z || ce < z {
             return Err(ModelError::Undefined(format!(
                 "E/M^2 outside [1/A, 1/C] (M^2={}, E={})",
@@ -77,7 +113,6 @@ impl<R: Real> EllipticParams<R> {
         let bc = b.clone() - c.clone();
         let ac = a.clone() - c.clone();
         let abc = a.clone() * b.clone() * c.clone();
-        let regime = Regime::of(inertia, m2, e);
         let (k2, a2, b2, c2, nu2) = match regime {
             Regime::Upper => (
                 ab.clone() * ce.clone() / (bc.clone() * ae.clone()),
