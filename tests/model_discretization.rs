@@ -115,36 +115,49 @@ fn newton_1024_bits() {
     check_vm_matrix(&like, (3.0, 2.0, 1.0), (0.3, -0.7, 1.1), 0.05);
 }
 
-#[test]
-fn root_set_and_split() {
-    let (i, m) = setup(&1.0f64, (3.0, 2.0, 1.5), (0.3, -0.7, 1.1));
-    let h = 0.05;
+fn check_roots<R: Real>(like: &R) {
+    let (i, m) = setup(like, (3.0, 2.0, 1.5), (0.3, -0.7, 1.1));
+    let h = like.from_f64(0.05);
+    let tol = like.epsilon().to_f64().sqrt() * 1e-2; // roots of a polynomial: ~√ε near clusters
     let s = lambda_roots(&i, &m, &h).unwrap();
     assert_eq!(s.len(), 6);
     // each root annihilates det(I − hλM − λ²J²) (Horner in complex arithmetic)
     let p = lambda_poly(&i, &m, &h);
     for z in &s {
-        let mut acc = Cplx::new(0.0, 0.0);
+        let mut acc = Cplx::new(like.zero(), like.zero());
         for c in p.iter().rev() {
-            acc = acc * z.clone() + Cplx::new(*c, 0.0);
+            acc = acc * z.clone() + Cplx::new(c.clone(), like.zero());
         }
-        assert!(acc.abs() < 1e-10);
+        assert!(acc.abs().to_f64() < like.epsilon().to_f64() * 1e4);
     }
     let st = vm_step(&i, &m, &h).unwrap();
     let (sp, sm) = split_roots(&i, &st.omega).unwrap();
     // S₊ ∪ S₋ = S and S₊ = −S₋
     for z in sp.iter().chain(sm.iter()) {
-        assert!(s.iter().any(|y| (y.clone() - z.clone()).abs() < 1e-8));
+        assert!(s
+            .iter()
+            .any(|y| (y.clone() - z.clone()).abs().to_f64() < tol));
     }
     for z in &sp {
-        assert!(sm.iter().any(|y| (y.clone() + z.clone()).abs() < 1e-8));
+        assert!(sm
+            .iter()
+            .any(|y| (y.clone() + z.clone()).abs().to_f64() < tol));
     }
     // S₋ is real positive and O(h)-close to 1/J
     let j = j_diag(&i);
     for z in &sm {
-        assert!(z.im.abs() < 1e-8 && z.re > 0.0);
-        assert!(j.0.iter().any(|jj| (z.re - 1.0 / jj).abs() < 10.0 * h));
+        assert!(z.im.abs().to_f64() < tol && z.re > like.zero());
+        assert!(j
+            .0
+            .iter()
+            .any(|jj| (z.re.to_f64() - 1.0 / jj.to_f64()).abs() < 10.0 * h.to_f64()));
     }
+}
+
+#[test]
+fn root_set_and_split() {
+    check_roots(&1.0f64);
+    check_roots(&Float::with_val(256, 1));
 }
 
 #[test]

@@ -189,3 +189,19 @@ fn phi_undefined_on_axes() {
         assert!(m_to_phi(&i, &m).is_err());
     }
 }
+
+#[test]
+fn delta_odd_in_h() {
+    let i = Inertia::new(3.0, 2.0, 1.0).unwrap();
+    let m = Vec3::new(0.3, -0.7, 1.1);
+    let c = m_to_phi(&i, &m).unwrap();
+    for g in [Gamma::G1, Gamma::G2, Gamma::Vm] {
+        let dp = delta(&i, &c.params, g, &0.1).unwrap();
+        let dm = delta(&i, &c.params, g, &-0.1).unwrap();
+        assert_eq!(dp, -dm);
+        // and the backward step indeed has phase step δ(−h)
+        let q = step(&i, g, &m, &-0.1).unwrap();
+        let (_, _, d) = step_phases(&i, &m, &q).unwrap();
+        assert!((d - dm).abs() < 1e-13);
+    }
+}

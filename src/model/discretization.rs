@@ -17,6 +17,11 @@
 //! `16·2^(−p)`, otherwise [`ModelError::NewtonFailed`] is returned (also on a
 //! singular Jacobian, non-finite values or when the iteration cap is reached).
 //! γ_VM returns [`ModelError::ImaginarySqrt`] when its radicand is negative.
+//!
+//! For small `h` the Newton iterate is the solution branch with `M̂ → M` as `h → 0`
+//! (Proposition 1).  For large `h` (impl spec) may have several solutions; a returned
+//! `M̂` always satisfies (impl spec) to working precision (and so preserves `M²`, `E`),
+//! but it need not lie on the branch continuous in `h`.
 
 use super::{Inertia, ModelError};
 use crate::linalg::{Mat3, Vec3};
@@ -286,7 +291,11 @@ pub fn step_report<R: Real>(
     }
     let r = residual(inertia, gamma, m, &x, h)?;
     let scale = mnorm.max_of(&inf_norm(&x));
-    let rel = inf_norm(&r) / scale.clone();
+    let rel = if scale.is_zero() {
+        inf_norm(&r)
+    } else {
+        inf_norm(&r) / scale.clone()
+    };
     let tol = eps.mul_2si(3); // 16·2^(−p)
     if rel > tol || !rel.is_finite() {
         return Err(fail(iterations, rel.to_f64()));

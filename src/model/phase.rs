@@ -35,6 +35,9 @@ where
     F: Fn(&Dual<R>, &Dual<R>, &Dual<R>) -> Dual<R>,
 {
     let pd = p.map(|x| Dual::constant(x.clone()));
+    if h.is_zero() {
+        return Ok(h.zero());
+    }
     let mut x = h.clone() * p.nu() / h.from_i64(2);
     let kq = quarter_period(p)?;
     let eps = h.epsilon();
@@ -74,7 +77,8 @@ where
 }
 
 /// `δ` solving (master12) `sn/(cn dn) = (hν/2)/(1 − α sn²)` for a given `α`
-/// (use [`EllipticParams::alpha1`] or [`EllipticParams::alpha2`], (alphas)).
+/// (use [`EllipticParams::alpha1`] or [`EllipticParams::alpha2`], (alphas)); for
+/// `h ≥ 0` (negative `h` → [`ModelError::NewtonFailed`]; use [`delta`]).
 pub fn delta_master12<R: Real>(p: &EllipticParams<R>, alpha: &R, h: &R) -> Result<R, ModelError> {
     let hn = Dual::constant(h.clone() * p.nu() / h.from_i64(2));
     let al = Dual::constant(alpha.clone());
@@ -84,7 +88,7 @@ pub fn delta_master12<R: Real>(p: &EllipticParams<R>, alpha: &R, h: &R) -> Resul
 }
 
 /// `δ_VM` solving (MV master) `sn cn dn = (hν/2)(1 + α sn² − β sn⁴)` with (α, β)
-/// from (MV alphabeta).  Errors on the separatrix (no printed α, β).
+/// from (MV alphabeta), for `h ≥ 0`.  Errors on the separatrix (no printed α, β).
 pub fn delta_vm<R: Real>(
     inertia: &Inertia<R>,
     p: &EllipticParams<R>,
@@ -104,12 +108,17 @@ pub fn delta_vm<R: Real>(
 
 /// The predicted `φ̄`-independent phase step `δ(M², E, h)` of (phi indep) for γ₁, γ₂
 /// (master12) and γ_VM (MV master); γ₀ has none (it is not Poisson) → error.
+///
+/// For `h < 0` the equations are odd in `(Δφ, h)`, and `δ(−h) = −δ(h)` is returned.
 pub fn delta<R: Real>(
     inertia: &Inertia<R>,
     p: &EllipticParams<R>,
     gamma: Gamma,
     h: &R,
 ) -> Result<R, ModelError> {
+    if *h < h.zero() {
+        return Ok(-delta(inertia, p, gamma, &-h.clone())?);
+    }
     match gamma {
         Gamma::G0 => Err(ModelError::Undefined(
             "gamma0 has no phi-independent phase step delta".into(),

@@ -217,9 +217,14 @@ pub fn lambda_poly<R: Real>(inertia: &Inertia<R>, m: &Vec3<R>, h: &R) -> Vec<R> 
 /// correction is below `4ε` relative (cap 1000 sweeps; then
 /// [`ModelError::NewtonFailed`]).  Errors if the leading coefficient is zero.
 pub fn poly_roots<R: Real>(coef: &[R]) -> Result<Vec<Cplx<R>>, ModelError> {
+    if coef.len() < 2 {
+        return Err(ModelError::Undefined(
+            "polynomial of degree < 1 has no roots to find".into(),
+        ));
+    }
     let n = coef.len() - 1;
     let lead = coef[n].clone();
-    if lead.is_zero() || n == 0 {
+    if lead.is_zero() {
         return Err(ModelError::Undefined(
             "polynomial has zero leading coefficient".into(),
         ));
