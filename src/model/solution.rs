@@ -18,6 +18,20 @@ pub fn continuous<R: Real>(
     continuous_from(&c, t)
 }
 
+/// (sol) exactly in the paper's form: `M(t) = Φ(M², E, ν·(t − t₀))` for given
+/// parameters (from [`EllipticParams::new`](super::EllipticParams::new)), sector
+/// signs and `t₀`; upper/lower expressions and the hyperbolic separatrix case by
+/// `p.regime`.
+pub fn sol<R: Real>(
+    p: &super::EllipticParams<R>,
+    sector: super::Sector,
+    t: &R,
+    t0: &R,
+) -> Result<Vec3<R>, ModelError> {
+    let phi = p.nu() * (t.clone() - t0.clone());
+    phi_to_m(p, sector, &phi)
+}
+
 /// (sol) from already computed elliptic coordinates of the start point.
 pub fn continuous_from<R: Real>(c: &EllCoords<R>, t: &R) -> Result<Vec3<R>, ModelError> {
     let phi = c.phi.clone() + c.params.nu() * t.clone();
