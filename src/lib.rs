@@ -13,5 +13,6 @@
 pub mod claims;
 pub mod cli;
 pub mod linalg;
+pub mod model;
 pub mod numbers;
 pub mod special;

@@ -22,6 +22,10 @@ enum Command {
     Eval(eulertop::cli::eval::Args),
     /// sn, cn, dn of `u k` lines from stdin (`--complex`: `re(u) im(u) k`).
     Jacobi(eulertop::cli::jacobi::Args),
+    /// Iterates a discretization of the Euler top (impl spec / VM) from M1 M2 M3.
+    Step(eulertop::cli::step::Args),
+    /// Iterates and compares with the continuous solution; writes CSV and SVG.
+    Orbit(eulertop::cli::orbit::Args),
 }
 
 fn main() -> ExitCode {
@@ -31,6 +35,8 @@ fn main() -> ExitCode {
         Command::Audit(a) => eulertop::cli::audit::run(a),
         Command::Eval(a) => eulertop::cli::eval::run(a),
         Command::Jacobi(a) => eulertop::cli::jacobi::run(a),
+        Command::Step(a) => eulertop::cli::step::run(a),
+        Command::Orbit(a) => eulertop::cli::orbit::run(a),
     };
     match result {
         Ok(code) => ExitCode::from(code as u8),

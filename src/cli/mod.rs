@@ -17,6 +17,8 @@ impl CliError {
 }
 
 pub mod jacobi;
+pub mod orbit;
+pub mod step;
 
 /// Parses a comma-separated list such as `53,128,256`.
 pub fn parse_list<T: std::str::FromStr>(s: &str, what: &str) -> Result<Vec<T>, CliError> {

@@ -1,0 +1,199 @@
+//! Elliptic coordinates (Section 4): `Φ: (M², E, φ) ↦ M` (ell coord) with the sign
+//! rules for `a, b, c` in the four sectors and on the separatrix half-planes
+//! (halfplanes), and the inverse `Φ⁻¹: M ↦ (M², E, φ)`.
+//!
+//! # Sign rules (the text after (ell coord))
+//! * `E/M² > 1/B` (upper): `sign c = sign M₃`, `sign(ab) = sign c`.  The paper leaves
+//!   the individual signs of `a, b` free (flipping both is `φ ↦ φ + 2K`); this crate
+//!   fixes **`b > 0`**, hence `sign a = sign M₃`.
+//! * `E/M² < 1/B` (lower): `sign a = sign M₁`, `sign(bc) = sign a`; again **`b > 0`**,
+//!   hence `sign c = sign M₁`.
+//! * separatrix: `sign a = sign M₁`, `sign c = sign M₃`, `sign b = sign(ac)`.
+//!
+//! In all cases `abc > 0`, as the paper requires for (sol) with `ν > 0`.
+//! `φ` is returned in `(−2K, 2K]` (via [`jacobi_inverse`]); on the separatrix
+//! `φ ∈ ℝ` (no period).  [`phi_near`] unwraps by multiples of `4K` so that `φ` is
+//! continuous along an orbit.
+
+use super::params::{EllipticParams, Regime};
+use super::{Inertia, ModelError};
+use crate::linalg::Vec3;
+use crate::numbers::Real;
+use crate::special::{ellipk, jacobi_inverse, sncndn};
+
+/// The signs of `a, b, c` in one sector (each ±1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Sector {
+    /// The regime the sector lies in.
+    pub regime: Regime,
+    /// sign(a).
+    pub sa: i8,
+    /// sign(b).
+    pub sb: i8,
+    /// sign(c).
+    pub sc: i8,
+}
+
+fn sgn<R: Real>(x: &R) -> i8 {
+    x.signum_i() as i8
+}
+
+impl Sector {
+    /// The sector of the point `m` (whose regime is `regime`), by the sign rules in
+    /// the module docs.  Errors where the rule needs a sign that is zero (only at the
+    /// fixed points on the axes; for the separatrix, on the `M₂` axis).
+    pub fn of<R: Real>(regime: Regime, m: &Vec3<R>) -> Result<Sector, ModelError> {
+        let [m1, _, m3] = &m.0;
+        let s = match regime {
+            Regime::Upper => {
+                let sc = sgn(m3);
+                Sector {
+                    regime,
+                    sa: sc,
+                    sb: 1,
+                    sc,
+                }
+            }
+            Regime::Lower => {
+                let sa = sgn(m1);
+                Sector {
+                    regime,
+                    sa,
+                    sb: 1,
+                    sc: sa,
+                }
+            }
+            Regime::Separatrix => {
+                let (sa, sc) = (sgn(m1), sgn(m3));
+                Sector {
+                    regime,
+                    sa,
+                    sb: sa * sc,
+                    sc,
+                }
+            }
+        };
+        if s.sa == 0 || s.sc == 0 {
+            return Err(ModelError::Undefined(
+                "elliptic coordinate phi undefined: point on a coordinate axis (fixed point)"
+                    .into(),
+            ));
+        }
+        Ok(s)
+    }
+}
+
+/// The signed amplitudes `(a, b, c)` of (abc) for a sector.
+pub fn amplitudes<R: Real>(p: &EllipticParams<R>, s: Sector) -> (R, R, R) {
+    let sg = |x: &R, sign: i8| if sign < 0 { -x.sqrt() } else { x.sqrt() };
+    (sg(&p.a2, s.sa), sg(&p.b2, s.sb), sg(&p.c2, s.sc))
+}
+
+/// `(sn, cn, dn)(u, k)` for the parameters' modulus; on the separatrix (`k = 1`)
+/// `(tanh u, sech u, sech u)`.
+pub fn sncndn_params<R: Real>(u: &R, p: &EllipticParams<R>) -> Result<(R, R, R), ModelError> {
+    match p.regime {
+        Regime::Separatrix => {
+            let sech = u.cosh().recip();
+            Ok((u.tanh(), sech.clone(), sech))
+        }
+        _ => Ok(sncndn(u, &p.k())?),
+    }
+}
+
+/// `Φ(M², E, φ)` (ell coord) in the given sector (hyperbolic formulas on the
+/// separatrix).
+pub fn phi_to_m<R: Real>(p: &EllipticParams<R>, s: Sector, phi: &R) -> Result<Vec3<R>, ModelError> {
+    let (a, b, c) = amplitudes(p, s);
+    let (sn, cn, dn) = sncndn_params(phi, p)?;
+    Ok(match p.regime {
+        Regime::Upper | Regime::Separatrix => Vec3::new(a * cn, b * sn, c * dn),
+        Regime::Lower => Vec3::new(a * dn, b * sn, c * cn),
+    })
+}
+
+/// A point in elliptic coordinates with the data needed to map it back.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EllCoords<R> {
+    /// Parameters (k), (abc), (nu) of `(M², E)`.
+    pub params: EllipticParams<R>,
+    /// The sector.
+    pub sector: Sector,
+    /// `φ`, in `(−2K, 2K]` (any real on the separatrix).
+    pub phi: R,
+}
+
+/// `Φ⁻¹(M) = (M², E, φ)`.
+///
+/// Upper regime: `(cn φ, sn φ) = (M₁/a, M₂/b)` normalized to the unit circle; lower:
+/// `(cn φ, sn φ) = (M₃/c, M₂/b)`; then `φ` = [`jacobi_inverse`].  Separatrix:
+/// `φ = asinh((M₂/b)/(M₁/a))`.  Errors ([`ModelError::Undefined`]) at `M = 0` and on
+/// the coordinate axes, where `φ` is undefined.
+pub fn m_to_phi<R: Real>(inertia: &Inertia<R>, m: &Vec3<R>) -> Result<EllCoords<R>, ModelError> {
+    let params = EllipticParams::from_point(inertia, m)?;
+    let sector = Sector::of(params.regime, m)?;
+    let (a, b, c) = amplitudes(&params, sector);
+    let [m1, m2c, m3] = m.0.clone();
+    let undefined = || {
+        ModelError::Undefined(
+            "elliptic coordinate phi undefined: point on a coordinate axis (fixed point)".into(),
+        )
+    };
+    let phi = match params.regime {
+        Regime::Separatrix => {
+            if b.is_zero() || a.is_zero() {
+                return Err(undefined());
+            }
+            ((m2c / b) / (m1 / a)).asinh()
+        }
+        _ => {
+            let (x, y) = match params.regime {
+                Regime::Upper => (m1, m2c),
+                _ => (m3, m2c),
+            };
+            let amp = if params.regime == Regime::Upper { a } else { c };
+            if amp.is_zero() || b.is_zero() {
+                return Err(undefined());
+            }
+            let (x, y) = (x / amp, y / b);
+            let r = (x.sqr() + y.sqr()).sqrt();
+            if r.is_zero() || !r.is_finite() {
+                return Err(undefined());
+            }
+            let (cn, sn) = (x / r.clone(), y / r);
+            let k = params.k();
+            let dn = (sn.one() - params.k2.clone() * sn.sqr()).sqrt();
+            jacobi_inverse(&sn, &cn, &dn, &k)?
+        }
+    };
+    Ok(EllCoords {
+        params,
+        sector,
+        phi,
+    })
+}
+
+/// The complete elliptic integral `K(k)` for the parameters (`None` on the
+/// separatrix, where the motion is not periodic).
+pub fn quarter_period<R: Real>(p: &EllipticParams<R>) -> Result<Option<R>, ModelError> {
+    match p.regime {
+        Regime::Separatrix => Ok(None),
+        _ => Ok(Some(ellipk(&p.k())?)),
+    }
+}
+
+/// `Φ⁻¹(M)` with `φ` shifted by a multiple of `4K` to be closest to `prev` (so that
+/// `φ` is continuous along an orbit).
+pub fn phi_near<R: Real>(
+    inertia: &Inertia<R>,
+    m: &Vec3<R>,
+    prev: &R,
+) -> Result<EllCoords<R>, ModelError> {
+    let mut c = m_to_phi(inertia, m)?;
+    if let Some(k) = quarter_period(&c.params)? {
+        let per = k * c.phi.from_i64(4);
+        let n = ((prev.clone() - c.phi.clone()) / per.clone()).round();
+        c.phi = c.phi.clone() + n * per;
+    }
+    Ok(c)
+}

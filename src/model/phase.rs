@@ -1,0 +1,130 @@
+//! Phase steps: `Δφ = (φ̂ − φ)/2`, `φ̄ = (φ + φ̂)/2` (phis) of a computed step, and
+//! the predicted `δ` solving (master12) with (alphas) for γ₁, γ₂ and `δ_VM` solving
+//! (MV master) with (MV alphabeta), at working precision.
+//!
+//! Both equations are solved in the denominator-free form
+//! `sn(1 − α sn²) − (hν/2) cn dn = 0` (master12) and
+//! `sn cn dn − (hν/2)(1 + α sn² − β sn⁴) = 0` (MV master) by Newton's method in
+//! `Δφ` started at `hν/2`, with the derivative from [`Dual`] numbers; the iteration
+//! stops when the update stalls and errors ([`ModelError::NewtonFailed`]) after 200
+//! iterations or if the iterate leaves `(0, K)`.
+
+use super::discretization::Gamma;
+use super::elliptic_coords::{phi_near, quarter_period, sncndn_params, EllCoords};
+use super::params::EllipticParams;
+use super::{Inertia, ModelError};
+use crate::linalg::Vec3;
+use crate::numbers::{Dual, Real, Scalar};
+
+/// `(φ̄, Δφ)` (phis) of a step `M ↦ M̂`, with `φ̂` unwrapped next to `φ`.
+pub fn step_phases<R: Real>(
+    inertia: &Inertia<R>,
+    m: &Vec3<R>,
+    mhat: &Vec3<R>,
+) -> Result<(EllCoords<R>, R, R), ModelError> {
+    let c = super::elliptic_coords::m_to_phi(inertia, m)?;
+    let ch = phi_near(inertia, mhat, &c.phi)?;
+    let half = c.phi.from_ratio(1, 2);
+    let bar = (c.phi.clone() + ch.phi.clone()) * half.clone();
+    let delta = (ch.phi - c.phi.clone()) * half;
+    Ok((c, bar, delta))
+}
+
+fn solve_phase<R: Real, F>(p: &EllipticParams<R>, h: &R, what: &str, f: F) -> Result<R, ModelError>
+where
+    F: Fn(&Dual<R>, &Dual<R>, &Dual<R>) -> Dual<R>,
+{
+    let pd = p.map(|x| Dual::constant(x.clone()));
+    if h.is_zero() {
+        return Ok(h.zero());
+    }
+    let mut x = h.clone() * p.nu() / h.from_i64(2);
+    let kq = quarter_period(p)?;
+    let eps = h.epsilon();
+    let mut prev: Option<R> = None;
+    for it in 0..200 {
+        let (sn, cn, dn) = sncndn_params(&Dual::var(x.clone()), &pd)?;
+        let v = f(&sn, &cn, &dn);
+        if v.d.is_zero() || !v.d.is_finite() {
+            break;
+        }
+        let dx = v.v / v.d;
+        x = x - dx.clone();
+        let bad = x <= x.zero() || kq.as_ref().is_some_and(|k| x >= *k) || !x.is_finite();
+        if bad {
+            return Err(ModelError::NewtonFailed {
+                what: what.into(),
+                iterations: it + 1,
+                residual: f64::NAN,
+            });
+        }
+        let dn_ = dx.abs();
+        if dn_ <= eps.clone() * x.abs() {
+            return Ok(x);
+        }
+        if let Some(pv) = &prev {
+            if dn_ >= *pv && dn_ <= eps.sqrt() * x.abs() {
+                return Ok(x);
+            }
+        }
+        prev = Some(dn_);
+    }
+    Err(ModelError::NewtonFailed {
+        what: what.into(),
+        iterations: 200,
+        residual: f64::NAN,
+    })
+}
+
+/// `δ` solving (master12) `sn/(cn dn) = (hν/2)/(1 − α sn²)` for a given `α`
+/// (use [`EllipticParams::alpha1`] or [`EllipticParams::alpha2`], (alphas)); for
+/// `h ≥ 0` (negative `h` → [`ModelError::NewtonFailed`]; use [`delta`]).
+pub fn delta_master12<R: Real>(p: &EllipticParams<R>, alpha: &R, h: &R) -> Result<R, ModelError> {
+    let hn = Dual::constant(h.clone() * p.nu() / h.from_i64(2));
+    let al = Dual::constant(alpha.clone());
+    solve_phase(p, h, "(master12)", |sn, cn, dn| {
+        sn.clone() * (sn.one() - al.clone() * sn.sqr()) - hn.clone() * cn.clone() * dn.clone()
+    })
+}
+
+/// `δ_VM` solving (MV master) `sn cn dn = (hν/2)(1 + α sn² − β sn⁴)` with (α, β)
+/// from (MV alphabeta), for `h ≥ 0`.  Errors on the separatrix (no printed α, β).
+pub fn delta_vm<R: Real>(
+    inertia: &Inertia<R>,
+    p: &EllipticParams<R>,
+    h: &R,
+) -> Result<R, ModelError> {
+    let (a, b) = p.alpha_beta_vm(inertia).ok_or_else(|| {
+        ModelError::Undefined("(MV alphabeta) is not given on the separatrix E/M^2 = 1/B".into())
+    })?;
+    let hn = Dual::constant(h.clone() * p.nu() / h.from_i64(2));
+    let (a, b) = (Dual::constant(a), Dual::constant(b));
+    solve_phase(p, h, "(MV master)", |sn, cn, dn| {
+        let s2 = sn.sqr();
+        sn.clone() * cn.clone() * dn.clone()
+            - hn.clone() * (sn.one() + a.clone() * s2.clone() - b.clone() * s2.sqr())
+    })
+}
+
+/// The predicted `φ̄`-independent phase step `δ(M², E, h)` of (phi indep) for γ₁, γ₂
+/// (master12) and γ_VM (MV master); γ₀ has none (it is not Poisson) → error.
+///
+/// For `h < 0` the equations are odd in `(Δφ, h)`, and `δ(−h) = −δ(h)` is returned.
+pub fn delta<R: Real>(
+    inertia: &Inertia<R>,
+    p: &EllipticParams<R>,
+    gamma: Gamma,
+    h: &R,
+) -> Result<R, ModelError> {
+    if *h < h.zero() {
+        return Ok(-delta(inertia, p, gamma, &-h.clone())?);
+    }
+    match gamma {
+        Gamma::G0 => Err(ModelError::Undefined(
+            "gamma0 has no phi-independent phase step delta".into(),
+        )),
+        Gamma::G1 => delta_master12(p, &p.alpha1(), h),
+        Gamma::G2 => delta_master12(p, &p.alpha2(inertia), h),
+        Gamma::Vm => delta_vm(inertia, p, h),
+    }
+}
