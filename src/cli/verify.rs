@@ -36,8 +36,12 @@ pub struct Args {
 /// The function table used by the command-line tools: every function registered by the
 /// model layer.
 pub fn catalogue_registry() -> Registry {
-    #[allow(unused_mut)]
     let mut reg = Registry::new();
+    // Names are fixed and distinct from the built-ins; a clash is a programming error
+    // caught by the tests, never by users.
+    if let Err(m) = crate::model::catalogue_fns::register(&mut reg) {
+        eprintln!("eulertop: internal error registering model functions: {m}");
+    }
     reg
 }
 
