@@ -437,13 +437,24 @@ where
         local_fns: ev.local_fns.clone(),
         depth: ev.depth,
     };
+    // Only bindings after `var` that the body needs (transitively) are recomputed.
+    let mut needed = std::collections::BTreeSet::new();
+    collect_names(body, &mut needed);
+    let mut recompute = vec![false; ev.scope.len()];
+    for j in (pos + 1..ev.scope.len()).rev() {
+        let b = &ev.scope[j];
+        if let (true, Some(d)) = (needed.contains(&b.name), &b.def) {
+            recompute[j] = true;
+            collect_names(d, &mut needed);
+        }
+    }
     for (j, b) in ev.scope.iter().enumerate() {
         let value = if j == pos {
             seed(&b.value, comp).map_err(|m| EvalError {
                 message: m,
                 span: None,
             })?
-        } else if j > pos && b.def.is_some() {
+        } else if recompute[j] {
             let d = b.def.as_ref().map(|d| d.as_ref().clone());
             match d {
                 Some(d) => dev.eval(&d)?,
@@ -460,6 +471,18 @@ where
     }
     let out = dev.eval(body)?;
     Ok(out.map(&mut |x: &Dual<T>| x.d.clone()))
+}
+
+fn collect_names(e: &Expr, out: &mut std::collections::BTreeSet<String>) {
+    e.walk(&mut |x| match &x.kind {
+        ExprKind::Name(n) => {
+            out.insert(n.clone());
+        }
+        ExprKind::Deriv { var, .. } | ExprKind::Grad { var, .. } => {
+            out.insert(var.clone());
+        }
+        _ => {}
+    });
 }
 
 fn seed<T: Num>(v: &Value<T>, comp: Option<i64>) -> Result<Value<Dual<T>>, String>

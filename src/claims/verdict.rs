@@ -876,7 +876,6 @@ fn run_body(
         } => {
             let mut sampler = Sampler::new(cat, claim, 0)?;
             let mut start_sampler = Sampler::new(cat, claim, 3)?;
-            let reg = &cat.registry;
             let good = collect(
                 claim,
                 bits,
@@ -886,10 +885,13 @@ fn run_body(
                     // find an f64 solution from up to `tries` starts
                     let mut last = String::from("no start converged");
                     for _ in 0..*tries {
-                        let mut ev = Evaluator::new(reg, 0.0f64);
-                        for (n, v) in &p.vars {
-                            ev.bind(n, v.clone());
-                        }
+                        let ev = match setup(cat, claim, &p, 0.0f64) {
+                            Ok(ev) => ev,
+                            Err(m) => {
+                                last = m;
+                                continue;
+                            }
+                        };
                         let st: Result<Vec<f64>, String> = start
                             .iter()
                             .map(|s| start_sampler.eval_sampling(&s.expr, &ev)?.as_real())
