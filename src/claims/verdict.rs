@@ -190,7 +190,8 @@ impl Default for Options {
 }
 
 /// Verifies the claims selected by `select`, in parallel, calling `done` as each finishes.
-/// Results are in catalogue order.
+/// Results are in catalogue order.  With the environment variable `EULERTOP_TIMING`
+/// set, per-claim wall times are printed on standard error.
 pub fn verify(
     cat: &Catalogue,
     opts: &Options,
@@ -198,10 +199,20 @@ pub fn verify(
     done: &(dyn Fn(&ClaimResult) + Sync),
 ) -> Vec<ClaimResult> {
     let chosen: Vec<&Claim> = cat.claims.iter().filter(|c| select(c)).collect();
+    // Opt-in per-claim timings on standard error (never part of the results).
+    let timing = std::env::var_os("EULERTOP_TIMING").is_some();
     chosen
         .par_iter()
         .map(|c| {
+            let t0 = std::time::Instant::now();
             let r = run_claim(cat, c, opts);
+            if timing {
+                eprintln!(
+                    "timing {:8.1} ms  {}",
+                    t0.elapsed().as_secs_f64() * 1e3,
+                    c.id
+                );
+            }
             done(&r);
             r
         })
