@@ -12,3 +12,4 @@ pub mod claims;
 pub mod cli;
 pub mod linalg;
 pub mod numbers;
+pub mod report;

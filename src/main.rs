@@ -20,6 +20,8 @@ enum Command {
     Audit(eulertop::cli::audit::Args),
     /// Evaluate an expression of the catalogue language.
     Eval(eulertop::cli::eval::Args),
+    /// Verify the catalogue and write the Markdown reports into reports/.
+    Report(eulertop::cli::report::Args),
 }
 
 fn main() -> ExitCode {
@@ -28,6 +30,7 @@ fn main() -> ExitCode {
         Command::Verify(a) => eulertop::cli::verify::run(a),
         Command::Audit(a) => eulertop::cli::audit::run(a),
         Command::Eval(a) => eulertop::cli::eval::run(a),
+        Command::Report(a) => eulertop::cli::report::run(a),
     };
     match result {
         Ok(code) => ExitCode::from(code as u8),
