@@ -22,6 +22,8 @@ enum Command {
     Eval(eulertop::cli::eval::Args),
     /// Verify the catalogue and write the Markdown reports into reports/.
     Report(eulertop::cli::report::Args),
+    /// sn, cn, dn of `u k` lines from stdin (`--complex`: `re(u) im(u) k`).
+    Jacobi(eulertop::cli::jacobi::Args),
 }
 
 fn main() -> ExitCode {
@@ -31,6 +33,7 @@ fn main() -> ExitCode {
         Command::Audit(a) => eulertop::cli::audit::run(a),
         Command::Eval(a) => eulertop::cli::eval::run(a),
         Command::Report(a) => eulertop::cli::report::run(a),
+        Command::Jacobi(a) => eulertop::cli::jacobi::run(a),
     };
     match result {
         Ok(code) => ExitCode::from(code as u8),
