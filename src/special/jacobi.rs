@@ -1,8 +1,6 @@
 //! Jacobi elliptic functions sn, cn, dn and the amplitude am of a real argument.
 
-use super::agm::complementary;
-use super::landen::Chain;
-use super::reduce::{quarter_period_triple, reduce_dd};
+use super::reduce::{chain_for, quarter_period_triple, reduce_dd};
 use super::{check_finite, check_modulus, show, SpecialError, GUARD};
 use crate::numbers::Real;
 
@@ -46,10 +44,9 @@ fn reduced_at<R: Real>(
     w: u32,
 ) -> Result<(Reduced<R>, u32), SpecialError> {
     let uw = u.with_prec(w);
-    let kw = k0.with_prec(w);
-    let kpw = complementary(&kw);
-    let (k, kp) = if comp { (kpw, kw) } else { (kw, kpw) };
-    let ch = Chain::new(&k, &kp)?;
+    let data = chain_for(k0, comp, w)?;
+    let ch = &data.chain;
+    let kp = data.kp.clone();
     let kq_f = ch.kq.to_f64();
     let ratio = uw.to_f64() / kq_f;
     if ratio.abs() >= 2f64.powi(50) {
@@ -80,7 +77,7 @@ fn reduced_at<R: Real>(
         need = jb + (kb + cb).ceil() as u32 + 8;
         t
     };
-    let (s, c, d) = ch.eval(&t);
+    let (s, c, d) = ch.eval(&t, fixed);
     Ok((Reduced { j, s, c, d, kp }, need))
 }
 
