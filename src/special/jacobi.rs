@@ -1,6 +1,6 @@
 //! Jacobi elliptic functions sn, cn, dn and the amplitude am of a real argument.
 
-use super::reduce::{chain_for, quarter_period_triple, reduce_dd};
+use super::reduce::{chain_for, reduce_dd};
 use super::{check_finite, check_modulus, show, SpecialError, GUARD};
 use crate::numbers::Real;
 
@@ -20,17 +20,15 @@ impl<R: Real> Reduced<R> {
         let (s, c, d, kp) = (&self.s, &self.c, &self.d, &self.kp);
         match self.j.rem_euclid(4) {
             0 => (s.clone(), c.clone(), d.clone()),
-            1 => (
-                c.clone() / d.clone(),
-                -(kp.clone() * s.clone() / d.clone()),
-                kp.clone() / d.clone(),
-            ),
+            1 => {
+                let kd = kp.clone() / d.clone();
+                (c.clone() / d.clone(), -(kd.clone() * s.clone()), kd)
+            }
             2 => (-s.clone(), -c.clone(), d.clone()),
-            _ => (
-                -(c.clone() / d.clone()),
-                kp.clone() * s.clone() / d.clone(),
-                kp.clone() / d.clone(),
-            ),
+            _ => {
+                let kd = kp.clone() / d.clone();
+                (-(c.clone() / d.clone()), kd.clone() * s.clone(), kd)
+            }
         }
     }
 }
@@ -62,7 +60,7 @@ fn reduced_at<R: Real>(
     let t = if j == 0 {
         uw
     } else if fixed {
-        reduce_dd(&uw, &ch.kq, j, quarter_period_triple(k0.to_f64(), comp))
+        reduce_dd(&uw, &ch.kq, j, data.triple(k0, comp))
     } else {
         let t = uw.clone() - uw.from_i64(j) * ch.kq.clone();
         // bits lost: size of j, magnitude of K, cancellation in t

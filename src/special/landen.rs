@@ -11,8 +11,8 @@ pub(crate) struct Chain<R> {
     ks: Vec<R>,
     /// `1 − k_1 … 1 − k_N`, computed without cancellation.
     omks: Vec<R>,
-    /// `Π (1 + k_n)`, n = 1..N.
-    prod: R,
+    /// `1 / Π (1 + k_n)`, n = 1..N.
+    inv_prod: R,
     /// `1 + k_1 … 1 + k_N`.
     opks: Vec<R>,
     /// `k_N²/4` and `k_N²/2`.
@@ -66,7 +66,7 @@ impl<R: Real> Chain<R> {
             k2q,
             k2h,
             half: one.mul_2si(-1),
-            prod,
+            inv_prod: prod.recip(),
             kq,
         })
     }
@@ -79,7 +79,7 @@ impl<R: Real> Chain<R> {
     /// plain quotients of DLMF 22.7.1–3 are used (fewer multi-precision operations).
     pub(crate) fn eval(&self, t: &R, fixed: bool) -> (R, R, R) {
         let one = t.one();
-        let z = t.clone() / self.prod.clone();
+        let z = t.clone() * self.inv_prod.clone();
         let (sz, cz) = z.sin_cos();
         let corr = (z - sz.clone() * cz.clone()) * self.k2q.clone();
         let mut s = sz.clone() - corr.clone() * cz.clone();

@@ -71,6 +71,17 @@ pub(crate) struct ChainData<R> {
     pub kp: R,
     /// The Landen chain (with the quarter period).
     pub chain: Chain<R>,
+    /// The exact quarter period as a triple-double (fixed-precision types only).
+    triple: std::cell::OnceCell<[f64; 3]>,
+}
+
+impl<R: Real> ChainData<R> {
+    /// [`quarter_period_triple`] for this modulus, computed once.
+    pub(crate) fn triple(&self, k0: &R, comp: bool) -> [f64; 3] {
+        *self
+            .triple
+            .get_or_init(|| quarter_period_triple(k0.to_f64(), comp))
+    }
 }
 
 struct Entry<R> {
@@ -112,7 +123,11 @@ pub(crate) fn chain_for<R: Real>(
     let kpw = super::agm::complementary(&kw);
     let (k, kp) = if comp { (kpw, kw) } else { (kw, kpw) };
     let chain = Chain::new(&k, &kp)?;
-    let data = Rc::new(ChainData { kp, chain });
+    let data = Rc::new(ChainData {
+        kp,
+        chain,
+        triple: std::cell::OnceCell::new(),
+    });
     if cacheable {
         CHAINS.with(|c| {
             let mut c = c.borrow_mut();
