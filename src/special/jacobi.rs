@@ -88,7 +88,18 @@ pub(crate) fn reduced<R: Real>(
     comp: bool,
     n: u32,
 ) -> Result<Reduced<R>, SpecialError> {
-    let mut w = n + GUARD;
+    // cn from sn at the top of the chain loses up to log2(1/k') bits (see landen.rs)
+    let kp_f = if comp {
+        k.to_f64()
+    } else {
+        ((1.0 - k.to_f64()) * (1.0 + k.to_f64())).sqrt()
+    };
+    let extra = if kp_f > 0.0 {
+        (-kp_f.log2()).ceil().max(0.0) as u32
+    } else {
+        n
+    };
+    let mut w = n + GUARD + extra;
     for _ in 0..6 {
         let (r, need) = reduced_at(u, k, comp, w)?;
         if need + 8 <= w - n || u.with_prec(w).prec() < w {

@@ -20,6 +20,9 @@ pub(crate) struct Chain<R> {
     k2h: R,
     /// One half.
     half: R,
+    /// `k²` and `k'²` of the top modulus.
+    k2: R,
+    kp2: R,
     /// The quarter period `K(k) = (π/2)·Π(1+k_n)·(1 + k_N²/4)`.
     pub kq: R,
 }
@@ -66,6 +69,8 @@ impl<R: Real> Chain<R> {
             k2q,
             k2h,
             half: one.mul_2si(-1),
+            k2: k.sqr(),
+            kp2: kp.sqr(),
             inv_prod: prod.recip(),
             kq,
         })
@@ -86,6 +91,7 @@ impl<R: Real> Chain<R> {
         let mut c = cz + corr * sz.clone();
         let mut e = self.k2h.clone() * sz.sqr();
         let mut d = one.clone() - e.clone();
+        #[allow(unused_assignments)]
         let levels = self.ks.iter().zip(self.omks.iter()).zip(self.opks.iter());
         if fixed {
             let half = self.half.clone();
@@ -110,14 +116,16 @@ impl<R: Real> Chain<R> {
                 d = d_new;
             }
         } else {
-            for ((k1, omk), opk) in levels.rev() {
-                let ss = s.sqr();
-                let inv = (one.clone() + k1.clone() * ss.clone()).recip();
-                let d_new = (c.sqr() + omk.clone() * ss) * inv.clone();
-                s = opk.clone() * s * inv.clone();
-                c = c * d * inv;
-                d = d_new;
+            // With guard bits only sn is carried up (DLMF 22.7.1); cn and dn follow at
+            // the top from cn = √((1−sn)(1+sn)), dn = √(k'² + k²cn²) (DLMF 22.6.1).
+            // For |t| ≤ K/2, cn ≥ √(k'/(1+k')), so at most log2(1/k') bits are lost; the
+            // caller adds that many guard bits.
+            for ((k1, _), opk) in levels.rev() {
+                let inv = (one.clone() + k1.clone() * s.sqr()).recip();
+                s = opk.clone() * s * inv;
             }
+            c = ((one.clone() - s.clone()) * (one + s.clone())).sqrt();
+            d = (self.kp2.clone() + self.k2.clone() * c.sqr()).sqrt();
         }
         (s, c, d)
     }
