@@ -1,13 +1,21 @@
 //! Times sn+cn+dn over the benchmark batch in-process (for scripts/bench_peers.py):
 //! `cargo run --release --example bench_batch -- BITS N REPEATS`
 //! prints the median and the minimum over REPEATS of the time per evaluation in
-//! nanoseconds (the minimum is less disturbed by other load on the machine).
+//! nanoseconds.  Time is the on-CPU time of this thread (Linux
+//! `/proc/thread-self/schedstat`; wall clock elsewhere), so that waiting for a busy
+//! CPU on a shared machine is not counted.
 //! Batch: u_i = −10 + 20·(i + 0.5)/N, modulus k = 0.8 (parameter m = 0.64).
 
 use eulertop::special::sncndn;
 use rug::Float;
 use std::hint::black_box;
 use std::time::Instant;
+
+/// On-CPU nanoseconds of the current thread, if the kernel reports them.
+fn cpu_ns() -> Option<u64> {
+    let s = std::fs::read_to_string("/proc/thread-self/schedstat").ok()?;
+    s.split_whitespace().next()?.parse().ok()
+}
 
 fn main() {
     let a: Vec<String> = std::env::args().collect();
@@ -18,6 +26,7 @@ fn main() {
         .collect();
     let mut times = Vec::new();
     for _ in 0..reps {
+        let c0 = cpu_ns();
         let t0 = Instant::now();
         if bits == 53 {
             let mut acc = 0.0;
@@ -33,7 +42,12 @@ fn main() {
                 black_box(sncndn(&u, &k).expect("in domain"));
             }
         }
-        times.push(t0.elapsed().as_nanos() as f64 / n as f64);
+        let wall = t0.elapsed().as_nanos() as f64;
+        let used = match (c0, cpu_ns()) {
+            (Some(a), Some(b)) => (b - a) as f64,
+            _ => wall,
+        };
+        times.push(used / n as f64);
     }
     times.sort_by(|a, b| a.partial_cmp(b).unwrap());
     println!("{} {}", times[times.len() / 2], times[0]);
