@@ -46,7 +46,7 @@ fn reduced_at<R: Real>(
     let ch = &data.chain;
     let kp = data.kp.clone();
     let kq_f = ch.kq.to_f64();
-    let ratio = uw.to_f64() / kq_f;
+    let ratio = uw.to_f64() * data.inv_kq;
     if ratio.abs() >= 2f64.powi(50) {
         return Err(SpecialError::ArgumentTooLarge(format!(
             "|u|/K = {:e} >= 2^50 (u = {})",
@@ -54,7 +54,12 @@ fn reduced_at<R: Real>(
             show(u)
         )));
     }
-    let j = ratio.round() as i64;
+    // round half away from zero without a libm call (|ratio| < 2^50 checked above)
+    let j = if ratio >= 0.0 {
+        (ratio + 0.5) as i64
+    } else {
+        (ratio - 0.5) as i64
+    };
     let fixed = uw.prec() < w;
     let mut need = 0u32;
     let t = if j == 0 {
@@ -88,21 +93,28 @@ pub(crate) fn reduced<R: Real>(
     comp: bool,
     n: u32,
 ) -> Result<Reduced<R>, SpecialError> {
-    // cn from sn at the top of the chain loses up to log2(1/k') bits (see landen.rs)
-    let kp_f = if comp {
-        k.to_f64()
+    // cn from sn at the top of the chain loses up to log2(1/k') bits (see landen.rs);
+    // only multi-precision types use that form and get the extra bits
+    let fixed = u.with_prec(n + GUARD).prec() < n + GUARD;
+    let extra = if fixed {
+        0
     } else {
-        ((1.0 - k.to_f64()) * (1.0 + k.to_f64())).sqrt()
-    };
-    let extra = if kp_f > 0.0 {
-        (-kp_f.log2()).ceil().max(0.0) as u32
-    } else {
-        n
+        let kf = k.to_f64();
+        let kp_f = if comp {
+            kf
+        } else {
+            ((1.0 - kf) * (1.0 + kf)).sqrt()
+        };
+        if kp_f > 0.0 {
+            (-kp_f.log2()).ceil().max(0.0) as u32
+        } else {
+            n
+        }
     };
     let mut w = n + GUARD + extra;
     for _ in 0..6 {
         let (r, need) = reduced_at(u, k, comp, w)?;
-        if need + 8 <= w - n || u.with_prec(w).prec() < w {
+        if fixed || need + 8 <= w - n {
             return Ok(r);
         }
         w = (n + need + GUARD).max(w + w / 2);

@@ -71,6 +71,8 @@ pub(crate) struct ChainData<R> {
     pub kp: R,
     /// The Landen chain (with the quarter period).
     pub chain: Chain<R>,
+    /// `1/K` rounded to f64 (for choosing the quadrant).
+    pub inv_kq: f64,
     /// The exact quarter period as a triple-double (fixed-precision types only).
     triple: std::cell::OnceCell<[f64; 3]>,
 }
@@ -123,8 +125,10 @@ pub(crate) fn chain_for<R: Real>(
     let kpw = super::agm::complementary(&kw);
     let (k, kp) = if comp { (kpw, kw) } else { (kw, kpw) };
     let chain = Chain::new(&k, &kp)?;
+    let inv_kq = 1.0 / chain.kq.to_f64();
     let data = Rc::new(ChainData {
         kp,
+        inv_kq,
         chain,
         triple: std::cell::OnceCell::new(),
     });
