@@ -88,12 +88,11 @@ impl<R: Real> Chain<R> {
         let (sz, cz) = z.sin_cos();
         let corr = (z - sz.clone() * cz.clone()) * self.k2q.clone();
         let mut s = sz.clone() - corr.clone() * cz.clone();
-        let mut c = cz + corr * sz.clone();
-        let mut e = self.k2h.clone() * sz.sqr();
-        let mut d = one.clone() - e.clone();
-        #[allow(unused_assignments)]
         let levels = self.ks.iter().zip(self.omks.iter()).zip(self.opks.iter());
         if fixed {
+            let mut c = cz + corr * sz.clone();
+            let mut e = self.k2h.clone() * sz.sqr();
+            let mut d = one.clone() - e.clone();
             let half = self.half.clone();
             for ((k1, omk), _) in levels.rev() {
                 let ss = s.sqr();
@@ -115,18 +114,18 @@ impl<R: Real> Chain<R> {
                 c = c_new;
                 d = d_new;
             }
+            (s, c, d)
         } else {
             // With guard bits only sn is carried up (DLMF 22.7.1); cn and dn follow at
             // the top from cn = √((1−sn)(1+sn)), dn = √(k'² + k²cn²) (DLMF 22.6.1).
             // For |t| ≤ K/2, cn ≥ √(k'/(1+k')), so at most log2(1/k') bits are lost; the
             // caller adds that many guard bits.
             for ((k1, _), opk) in levels.rev() {
-                let inv = (one.clone() + k1.clone() * s.sqr()).recip();
-                s = opk.clone() * s * inv;
+                s = opk.clone() * s.clone() / (one.clone() + k1.clone() * s.sqr());
             }
-            c = ((one.clone() - s.clone()) * (one + s.clone())).sqrt();
-            d = (self.kp2.clone() + self.k2.clone() * c.sqr()).sqrt();
+            let c = ((one.clone() - s.clone()) * (one + s.clone())).sqrt();
+            let d = (self.kp2.clone() + self.k2.clone() * c.sqr()).sqrt();
+            (s, c, d)
         }
-        (s, c, d)
     }
 }
