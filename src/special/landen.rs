@@ -84,6 +84,23 @@ impl<R: Real> Chain<R> {
     /// plain quotients of DLMF 22.7.1–3 are used (fewer multi-precision operations).
     pub(crate) fn eval(&self, t: &R, fixed: bool) -> (R, R, R) {
         let one = t.one();
+        if fixed && self.kp2 < t.epsilon().mul_2si(-3) {
+            // k' so small that k'⁴ terms are below the rounding (only reachable as the
+            // complementary modulus of a tiny k, e.g. the imaginary part for k = 1e-10):
+            // DLMF 22.10.7–9 directly, which keeps relative accuracy of the tiny cn, dn
+            // that the ~8 near-1 levels of the climb would erode.
+            let quarter = self.half.clone() * self.half.clone();
+            let (sh, ch) = (t.sinh(), t.cosh());
+            let se = ch.recip();
+            let th = sh.clone() * se.clone();
+            let shch = sh * ch;
+            let a = self.kp2.clone() * quarter.clone() * (shch.clone() - t.clone());
+            let b = self.kp2.clone() * quarter * (shch + t.clone());
+            let s = th.clone() + a.clone() * se.sqr();
+            let c = se.clone() - a * th.clone() * se.clone();
+            let d = se.clone() + b * th * se;
+            return (s, c, d);
+        }
         let z = t.clone() * self.inv_prod.clone();
         let (sz, cz) = z.sin_cos();
         let corr = (z - sz.clone() * cz.clone()) * self.k2q.clone();

@@ -33,6 +33,9 @@
 //!   `log2(1/k')` bits, which are added to the working precision.  One `sin_cos` per
 //!   call; every output keeps *relative* accuracy near its zeros (the shifts turn
 //!   zeros of cn into factors `k'·sn(t)`), which the complex case needs near its poles.
+//!   In `f64`, a modulus whose complement is below `√(ε/8)` (only reached as the
+//!   complementary modulus of a tiny `k` in the complex case) uses the `tanh`/`sech`
+//!   expansion DLMF 22.10.7–9 instead, exact to rounding there.
 //!   The chain depends only on `k`; the last few chains are cached per thread for
 //!   `f64` and `rug::Float` (not for `Dual`, whose derivative parts differ per call).
 //! * **Argument reduction.**  For MPFR the working precision is raised to
