@@ -18,7 +18,7 @@ fn close256(a: &Float, b: &Float, scale: f64) -> bool {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 300, rng_seed: proptest::test_runner::RngSeed::Fixed(20261121), ..ProptestConfig::default() })]
 
     #[test]
     fn pythagoras_f64(u in -1e3f64..1e3, ki in 0usize..8) {
