@@ -7,7 +7,7 @@
 //! `√((1−k)(1+k))` so that it keeps full relative accuracy as `k → 1`.
 //! The domain is `0 ≤ k < 1`; anything else (including NaN) is an error, never a panic.
 //!
-//! All functions are written once, generically over [`Real`] / [`ComplexScalar`]:
+//! All functions are written once, generically over [`Real`] / [`ComplexScalar`](crate::numbers::ComplexScalar):
 //! they run on `f64`, on `rug::Float` at any precision, on complex pairs and on
 //! [`crate::numbers::Dual`] (automatic differentiation flows through the algorithms,
 //! e.g. `d/du sn = cn·dn` comes out of the arithmetic).
