@@ -7,7 +7,10 @@
 //! numbers → special functions → model → claims → outputs.
 
 #![warn(missing_docs)]
+// `Scalar::from_i64(&self, ..)` takes `&self` on purpose: precision travels with values.
+#![allow(clippy::wrong_self_convention)]
 
 pub mod cli;
 pub mod linalg;
 pub mod numbers;
+pub mod special;

@@ -14,11 +14,14 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
+    /// sn, cn, dn of `u k` lines from stdin (`--complex`: `re(u) im(u) k`).
+    Jacobi(eulertop::cli::jacobi::Args),
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result: Result<i32, eulertop::cli::CliError> = match cli.command {
+        Command::Jacobi(a) => eulertop::cli::jacobi::run(a),
     };
     match result {
         Ok(code) => ExitCode::from(code as u8),

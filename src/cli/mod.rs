@@ -16,6 +16,8 @@ impl CliError {
     }
 }
 
+pub mod jacobi;
+
 /// Parses a comma-separated list such as `53,128,256`.
 pub fn parse_list<T: std::str::FromStr>(s: &str, what: &str) -> Result<Vec<T>, CliError> {
     s.split(',')

@@ -91,7 +91,11 @@ impl<R: Real> Scalar for Cplx<R> {
     /// Parses `a`, `a+bi`, `a-bi`, `bi` or `a,b`.
     fn parse_like(&self, s: &str) -> Result<Self, NumError> {
         let (a, b) = split_complex(s).ok_or_else(|| NumError::Parse(s.to_string()))?;
-        let re = if a.is_empty() { self.re.zero() } else { self.re.parse_like(a)? };
+        let re = if a.is_empty() {
+            self.re.zero()
+        } else {
+            self.re.parse_like(a)?
+        };
         let im = match b {
             None => self.re.zero(),
             Some(b) => self.re.parse_like(b)?,
@@ -157,7 +161,11 @@ fn split_complex(s: &str) -> Option<(&str, Option<&str>)> {
     match cut {
         Some(j) => {
             let im = &body[j..];
-            let im = if im == "+" || im == "-" { None } else { Some(im) };
+            let im = if im == "+" || im == "-" {
+                None
+            } else {
+                Some(im)
+            };
             im.map(|im| (body[..j].trim(), Some(im.trim_start_matches('+'))))
         }
         None => {
@@ -188,7 +196,11 @@ impl Scalar for Complex {
     fn parse_like(&self, s: &str) -> Result<Self, NumError> {
         let (a, b) = split_complex(s).ok_or_else(|| NumError::Parse(s.to_string()))?;
         let z = rug::Float::new(self.prec().0);
-        let re = if a.is_empty() { z.zero() } else { z.parse_like(a)? };
+        let re = if a.is_empty() {
+            z.zero()
+        } else {
+            z.parse_like(a)?
+        };
         let im = match b {
             None => z.zero(),
             Some(b) => z.parse_like(b)?,

@@ -123,7 +123,11 @@ impl<S: Scalar> Scalar for Dual<S> {
         Ok(Dual::new(r, d))
     }
     fn to_decimal(&self, digits: usize) -> String {
-        format!("{} + {}ε", self.v.to_decimal(digits), self.d.to_decimal(digits))
+        format!(
+            "{} + {}ε",
+            self.v.to_decimal(digits),
+            self.d.to_decimal(digits)
+        )
     }
 }
 

@@ -131,4 +131,3 @@ impl Real for Float {
         Float::with_val(self.prec(), self.pow(y))
     }
 }
-

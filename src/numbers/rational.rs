@@ -114,9 +114,18 @@ mod tests {
     use super::*;
     #[test]
     fn parse_exact() {
-        assert_eq!(parse_rational("3/4").unwrap(), BigRational::new(3.into(), 4.into()));
-        assert_eq!(parse_rational("-1.25e-1").unwrap(), BigRational::new((-1).into(), 8.into()));
-        assert_eq!(parse_rational("2e3").unwrap(), BigRational::from_integer(2000.into()));
+        assert_eq!(
+            parse_rational("3/4").unwrap(),
+            BigRational::new(3.into(), 4.into())
+        );
+        assert_eq!(
+            parse_rational("-1.25e-1").unwrap(),
+            BigRational::new((-1).into(), 8.into())
+        );
+        assert_eq!(
+            parse_rational("2e3").unwrap(),
+            BigRational::from_integer(2000.into())
+        );
         assert!(parse_rational("1/0").is_err());
         assert!(parse_rational("1.2.3").is_err());
         assert!(parse_rational("").is_err());

@@ -1,0 +1,179 @@
+//! Jacobi elliptic functions sn, cn, dn and the amplitude am of a real argument.
+
+use super::agm::complementary;
+use super::landen::Chain;
+use super::reduce::{quarter_period_triple, reduce_dd};
+use super::{check_finite, check_modulus, show, SpecialError, GUARD};
+use crate::numbers::Real;
+
+/// A reduced evaluation: `u = j·K + t`, `|t| ≲ K/2`, with `s, c, d = sn, cn, dn(t)`
+/// and the (top-level) complementary modulus `kp`, all at the working precision.
+pub(crate) struct Reduced<R> {
+    pub j: i64,
+    pub s: R,
+    pub c: R,
+    pub d: R,
+    pub kp: R,
+}
+
+impl<R: Real> Reduced<R> {
+    /// `(sn, cn, dn)(u)` from the quadrant `j mod 4` (DLMF 22.4.3).
+    pub(crate) fn finish(&self) -> (R, R, R) {
+        let (s, c, d, kp) = (&self.s, &self.c, &self.d, &self.kp);
+        match self.j.rem_euclid(4) {
+            0 => (s.clone(), c.clone(), d.clone()),
+            1 => (
+                c.clone() / d.clone(),
+                -(kp.clone() * s.clone() / d.clone()),
+                kp.clone() / d.clone(),
+            ),
+            2 => (-s.clone(), -c.clone(), d.clone()),
+            _ => (
+                -(c.clone() / d.clone()),
+                kp.clone() * s.clone() / d.clone(),
+                kp.clone() / d.clone(),
+            ),
+        }
+    }
+}
+
+/// One attempt at working precision `w`; returns the evaluation and the number of
+/// extra bits the reduction needed (for the adaptive retry).
+fn reduced_at<R: Real>(
+    u: &R,
+    k0: &R,
+    comp: bool,
+    w: u32,
+) -> Result<(Reduced<R>, u32), SpecialError> {
+    let uw = u.with_prec(w);
+    let kw = k0.with_prec(w);
+    let kpw = complementary(&kw);
+    let (k, kp) = if comp { (kpw, kw) } else { (kw, kpw) };
+    let ch = Chain::new(&k, &kp)?;
+    let kq_f = ch.kq.to_f64();
+    let ratio = uw.to_f64() / kq_f;
+    if ratio.abs() >= 2f64.powi(50) {
+        return Err(SpecialError::ArgumentTooLarge(format!(
+            "|u|/K = {:e} >= 2^50 (u = {})",
+            ratio.abs(),
+            show(u)
+        )));
+    }
+    let j = ratio.round() as i64;
+    let fixed = uw.prec() < w;
+    let mut need = 0u32;
+    let t = if j == 0 {
+        uw
+    } else if fixed {
+        reduce_dd(&uw, &ch.kq, j, quarter_period_triple(k0.to_f64(), comp))
+    } else {
+        let t = uw.clone() - uw.from_i64(j) * ch.kq.clone();
+        // bits lost: size of j, magnitude of K, cancellation in t
+        let jb = 64 - j.unsigned_abs().leading_zeros();
+        let kb = kq_f.log2().max(0.0);
+        let tf = t.to_f64().abs();
+        let cb = if tf > 0.0 {
+            (kq_f / tf).log2().max(0.0)
+        } else {
+            w as f64
+        };
+        need = jb + (kb + cb).ceil() as u32 + 8;
+        t
+    };
+    let (s, c, d) = ch.eval(&t);
+    Ok((Reduced { j, s, c, d, kp }, need))
+}
+
+/// Reduced evaluation with adaptive working precision: starts at `n + 40` bits and
+/// retries with more bits when the reduction `t = u − jK` lost too many.
+/// `comp` evaluates for the complementary modulus `k'` (with complement `k`).
+pub(crate) fn reduced<R: Real>(
+    u: &R,
+    k: &R,
+    comp: bool,
+    n: u32,
+) -> Result<Reduced<R>, SpecialError> {
+    let mut w = n + GUARD;
+    for _ in 0..6 {
+        let (r, need) = reduced_at(u, k, comp, w)?;
+        if need + 8 <= w - n || u.with_prec(w).prec() < w {
+            return Ok(r);
+        }
+        w = (n + need + GUARD).max(w + w / 2);
+    }
+    Err(SpecialError::NoConvergence(format!(
+        "argument reduction of u = {} kept cancelling",
+        show(u)
+    )))
+}
+
+/// Jacobi elliptic functions `(sn(u,k), cn(u,k), dn(u,k))` of a real argument `u`,
+/// **modulus** `k` (DLMF 22.2; mpmath's `ellipfun(·, u, m=k²)`), `0 ≤ k < 1`.
+///
+/// Algorithm: reduction `u = jK + t`, `|t| ≤ K/2`, at `N + 40 + log2|j|` bits
+/// (adaptive; `f64` uses a triple-double `K`), descending Landen chain
+/// (DLMF 22.7.1–3) down to a modulus with `k_N⁴ < ε`, `sin`/`cos` with the
+/// correction DLMF 22.10.4–6, climbing back, quadrant shift DLMF 22.4.3.  See the
+/// [module docs](crate::special) for why.  Result rounded once to the precision of
+/// the inputs; absolute error `≤ 2^(4−N)` at `N` bits (a few ulp of 1 in `f64`).
+///
+/// Errors: [`SpecialError::ModulusOutOfRange`] unless `0 ≤ k < 1`,
+/// [`SpecialError::NotFinite`] for a NaN/infinite `u`,
+/// [`SpecialError::ArgumentTooLarge`] if `|u|/K ≥ 2⁵⁰`.
+///
+/// ```
+/// use eulertop::special::sncndn;
+/// // mpmath: ellipfun('sn', 0.7, m=0.25) = 0.634293276335112372021362809680
+/// //         ellipfun('cn', 0.7, m=0.25) = 0.773092516841334311031368435940
+/// let (sn, cn, dn) = sncndn(&0.7_f64, &0.5).unwrap();
+/// assert!((cn - 0.7730925168413343).abs() < 1e-15);
+/// assert!((sn - 0.6342932763351124).abs() < 1e-15);
+/// assert!((sn * sn + cn * cn - 1.0).abs() < 1e-15);
+/// assert!((dn * dn + 0.25 * sn * sn - 1.0).abs() < 1e-15);
+/// // 256 bits: same call with rug::Float
+/// let u = rug::Float::with_val(256, 0.7);
+/// let k = rug::Float::with_val(256, 0.5);
+/// let (sn256, _, _) = sncndn(&u, &k).unwrap();
+/// assert!((sn256 - sn).abs() < 1e-15);
+/// assert!(sncndn(&0.7_f64, &1.0).is_err());
+/// ```
+pub fn sncndn<R: Real>(u: &R, k: &R) -> Result<(R, R, R), SpecialError> {
+    check_modulus(k)?;
+    check_finite(u, "u")?;
+    let n = u.prec().max(k.prec());
+    let r = reduced(u, k, false, n)?;
+    let (s, c, d) = r.finish();
+    Ok((s.with_prec(n), c.with_prec(n), d.with_prec(n)))
+}
+
+/// The Jacobi amplitude `am(u,k)`: the continuous, increasing function with
+/// `sin am = sn`, `cos am = cn`, `am(0) = 0` (DLMF 22.16.1), modulus `k`.
+///
+/// Algorithm: with `u = jK + t` as in [`sncndn`], `am(u) = jπ/2 + ψ` where
+/// `ψ = atan2(sn t, cn t)` for even `j` and `ψ = atan2(k' sn t, cn t)` for odd `j`
+/// (from DLMF 22.4.3 and `am(u+2K) = am(u)+π`, DLMF 22.16.2).  Error: a few ulp of
+/// `max(1,|am|)`.
+///
+/// Errors: as [`sncndn`].
+///
+/// ```
+/// use eulertop::special::{am, ellipk};
+/// // mpmath: ellipf(am, m) inverts am; am(K, k) = π/2
+/// let k = 0.9_f64;
+/// let kk = ellipk(&k).unwrap();
+/// assert!((am(&kk, &k).unwrap() - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+/// assert!((am(&(3.0 * kk), &k).unwrap() - 1.5 * std::f64::consts::PI).abs() < 1e-14);
+/// ```
+pub fn am<R: Real>(u: &R, k: &R) -> Result<R, SpecialError> {
+    check_modulus(k)?;
+    check_finite(u, "u")?;
+    let n = u.prec().max(k.prec());
+    let r = reduced(u, k, false, n)?;
+    let psi = if r.j.rem_euclid(2) == 0 {
+        r.s.atan2(&r.c)
+    } else {
+        (r.kp.clone() * r.s.clone()).atan2(&r.c)
+    };
+    let base = r.s.pi().mul_2si(-1) * r.s.from_i64(r.j);
+    Ok((base + psi).with_prec(n))
+}
