@@ -10,6 +10,7 @@
 // `Scalar::from_i64(&self, ..)` takes `&self` on purpose: precision travels with values.
 #![allow(clippy::wrong_self_convention)]
 
+pub mod claims;
 pub mod cli;
 pub mod linalg;
 pub mod numbers;

@@ -14,6 +14,12 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
+    /// Verify the claim catalogue on a precision ladder.
+    Verify(eulertop::cli::verify::Args),
+    /// Residual of one claim against precision, up to thousands of bits.
+    Audit(eulertop::cli::audit::Args),
+    /// Evaluate an expression of the catalogue language.
+    Eval(eulertop::cli::eval::Args),
     /// sn, cn, dn of `u k` lines from stdin (`--complex`: `re(u) im(u) k`).
     Jacobi(eulertop::cli::jacobi::Args),
 }
@@ -21,6 +27,9 @@ enum Command {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result: Result<i32, eulertop::cli::CliError> = match cli.command {
+        Command::Verify(a) => eulertop::cli::verify::run(a),
+        Command::Audit(a) => eulertop::cli::audit::run(a),
+        Command::Eval(a) => eulertop::cli::eval::run(a),
         Command::Jacobi(a) => eulertop::cli::jacobi::run(a),
     };
     match result {

@@ -28,3 +28,7 @@ pub fn parse_list<T: std::str::FromStr>(s: &str, what: &str) -> Result<Vec<T>, C
         })
         .collect()
 }
+
+pub mod audit;
+pub mod eval;
+pub mod verify;

@@ -1,0 +1,197 @@
+//! Renders parsed expressions back to LaTeX, so reports can show the formula "as
+//! evaluated" next to the paper's "as printed".
+
+use super::ast::{BinOp, Binding, Expr, ExprKind, UnOp};
+
+fn name_tex(n: &str) -> String {
+    const GREEK: &[&str] = &[
+        "alpha", "beta", "gamma", "delta", "epsilon", "kappa", "lambda", "mu", "nu", "rho",
+        "sigma", "tau", "phi", "psi", "omega", "Omega", "Gamma", "Delta", "Phi", "Psi", "theta",
+        "pi",
+    ];
+    let (base, sub) = match n.split_once('_') {
+        Some((b, s)) if !b.is_empty() && !s.is_empty() => (b, Some(s)),
+        _ => (n, None),
+    };
+    let b = if GREEK.contains(&base) {
+        format!("\\{base}")
+    } else if base.len() > 1 {
+        format!("\\mathrm{{{}}}", base.replace('_', "\\_"))
+    } else {
+        base.to_string()
+    };
+    match sub {
+        Some(s) => format!("{b}_{{\\mathrm{{{}}}}}", s.replace('_', "\\_")),
+        None => b,
+    }
+}
+
+fn prec(e: &Expr) -> u8 {
+    match &e.kind {
+        ExprKind::If(..) => 0,
+        ExprKind::Binary(op, ..) => match op {
+            BinOp::Or => 1,
+            BinOp::And => 2,
+            BinOp::Lt | BinOp::Gt | BinOp::Le | BinOp::Ge | BinOp::Eq | BinOp::Ne => 4,
+            BinOp::Add | BinOp::Sub => 5,
+            BinOp::Mul | BinOp::Div => 6,
+            BinOp::Pow => 8,
+        },
+        ExprKind::Unary(UnOp::Not, _) => 3,
+        ExprKind::Unary(UnOp::Neg, _) => 7,
+        _ => 9,
+    }
+}
+
+fn wrap(e: &Expr, min: u8) -> String {
+    let s = to_latex(e);
+    if prec(e) < min {
+        format!("\\left({s}\\right)")
+    } else {
+        s
+    }
+}
+
+fn args(a: &[Expr]) -> String {
+    a.iter().map(to_latex).collect::<Vec<_>>().join(", ")
+}
+
+/// LaTeX for an expression.
+pub fn to_latex(e: &Expr) -> String {
+    match &e.kind {
+        ExprKind::Num(s) => {
+            if let Some((m, x)) = s.split_once(['e', 'E']) {
+                format!("{m}\\cdot 10^{{{}}}", x.trim_start_matches('+'))
+            } else {
+                s.clone()
+            }
+        }
+        ExprKind::Name(n) => match n.as_str() {
+            "i" => "\\mathrm{i}".into(),
+            _ => name_tex(n),
+        },
+        ExprKind::Unary(UnOp::Neg, a) => format!("-{}", wrap(a, 7)),
+        ExprKind::Unary(UnOp::Not, a) => format!("\\neg {}", wrap(a, 3)),
+        ExprKind::Binary(op, a, b) => {
+            let p = prec(e);
+            match op {
+                BinOp::Div => format!("\\frac{{{}}}{{{}}}", to_latex(a), to_latex(b)),
+                BinOp::Pow => format!("{}^{{{}}}", wrap(a, 9), to_latex(b)),
+                BinOp::Mul => format!("{}\\,{}", wrap(a, p), wrap(b, p + 1)),
+                BinOp::Sub => format!("{} - {}", wrap(a, p), wrap(b, p + 1)),
+                _ => {
+                    let sym = match op {
+                        BinOp::Add => "+",
+                        BinOp::Lt => "<",
+                        BinOp::Gt => ">",
+                        BinOp::Le => "\\le",
+                        BinOp::Ge => "\\ge",
+                        BinOp::Eq => "=",
+                        BinOp::Ne => "\\ne",
+                        BinOp::And => "\\wedge",
+                        _ => "\\vee",
+                    };
+                    format!("{} {sym} {}", wrap(a, p), wrap(b, p + 1))
+                }
+            }
+        }
+        ExprKind::If(c, a, b) => format!(
+            "\\begin{{cases}} {} & \\text{{if }} {} \\\\ {} & \\text{{otherwise}} \\end{{cases}}",
+            to_latex(a),
+            to_latex(c),
+            to_latex(b)
+        ),
+        ExprKind::Index(a, ix) => format!("{}_{{{}}}", wrap(a, 9), args(ix)),
+        ExprKind::List(items) => {
+            if items.iter().all(|x| matches!(x.kind, ExprKind::List(_))) && !items.is_empty() {
+                let rows: Vec<String> = items
+                    .iter()
+                    .map(|r| match &r.kind {
+                        ExprKind::List(c) => c.iter().map(to_latex).collect::<Vec<_>>().join(" & "),
+                        _ => String::new(),
+                    })
+                    .collect();
+                format!(
+                    "\\begin{{pmatrix}} {} \\end{{pmatrix}}",
+                    rows.join(" \\\\ ")
+                )
+            } else {
+                format!("\\left({}\\right)^{{\\mathsf T}}", args(items))
+            }
+        }
+        ExprKind::Call(f, a) => match (f.as_str(), a.len()) {
+            ("sqrt", 1) => format!("\\sqrt{{{}}}", to_latex(&a[0])),
+            ("abs", 1) => format!("\\left|{}\\right|", to_latex(&a[0])),
+            ("norm", 1) => format!("\\left\\|{}\\right\\|", to_latex(&a[0])),
+            ("norm2", 1) => format!("\\left\\|{}\\right\\|^2", to_latex(&a[0])),
+            ("dot", 2) => format!("\\langle {}, {}\\rangle", to_latex(&a[0]), to_latex(&a[1])),
+            ("cross", 2) => format!("{}\\times {}", wrap(&a[0], 7), wrap(&a[1], 7)),
+            ("comm", 2) => format!("\\left[{}, {}\\right]", to_latex(&a[0]), to_latex(&a[1])),
+            ("transpose", 1) => format!("{}^{{\\mathsf T}}", wrap(&a[0], 9)),
+            ("inv", 1) => format!("{}^{{-1}}", wrap(&a[0], 9)),
+            ("exp", 1) => format!("e^{{{}}}", to_latex(&a[0])),
+            ("conj", 1) => format!("\\overline{{{}}}", to_latex(&a[0])),
+            ("pauli", 1) => format!("\\sigma_{{{}}}", to_latex(&a[0])),
+            ("I3" | "I2", 0) => "I".into(),
+            ("sn" | "cn" | "dn" | "am", 2) => {
+                format!("\\mathrm{{{f}}}({}, {})", to_latex(&a[0]), to_latex(&a[1]))
+            }
+            (
+                "sin" | "cos" | "tan" | "ln" | "sinh" | "cosh" | "tanh" | "det" | "arg" | "min"
+                | "max",
+                _,
+            ) => format!("\\{f}\\left({}\\right)", args(a)),
+            _ => format!("{}\\left({}\\right)", name_tex(f), args(a)),
+        },
+        ExprKind::Sum {
+            var,
+            from,
+            to,
+            body,
+            product,
+        } => format!(
+            "\\{}_{{{}={}}}^{{{}}} {}",
+            if *product { "prod" } else { "sum" },
+            name_tex(var),
+            to_latex(from),
+            to_latex(to),
+            wrap(body, 6)
+        ),
+        ExprKind::Deriv {
+            body,
+            var,
+            component,
+        } => match component {
+            None => format!(
+                "\\frac{{\\partial}}{{\\partial {}}}{}",
+                name_tex(var),
+                wrap(body, 9)
+            ),
+            Some(c) => format!(
+                "\\frac{{\\partial}}{{\\partial {}_{{{}}}}}{}",
+                name_tex(var),
+                to_latex(c),
+                wrap(body, 9)
+            ),
+        },
+        ExprKind::Grad { body, var } => {
+            format!("\\nabla_{{{}}}{}", name_tex(var), wrap(body, 9))
+        }
+    }
+}
+
+/// LaTeX for a binding `name = expr` (or `name(p) = expr`).
+pub fn binding_to_latex(b: &Binding) -> String {
+    let head = match &b.params {
+        Some(ps) => format!(
+            "{}({})",
+            name_tex(&b.name),
+            ps.iter()
+                .map(|p| name_tex(p))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+        None => name_tex(&b.name),
+    };
+    format!("{head} = {}", to_latex(&b.body))
+}

@@ -1,0 +1,310 @@
+//! Seeded, domain-aware sampling.  Variables are drawn in f64 by evaluating their sampler
+//! expressions, in which the random primitives `uniform`, `normal`, `randint`, `sign` and
+//! `choice` are replaced by draws from a ChaCha20 generator seeded from the claim's seed
+//! and id (FNV-1a, stable across platforms and versions).  Constraints (`where`) are
+//! enforced by rejection with a cap; a too-thin domain is an error naming the constraint.
+
+use super::ast::{Expr, ExprKind};
+use super::catalogue::{Catalogue, Claim, PExpr};
+use super::eval::Evaluator;
+use super::registry::Registry;
+use super::value::Value;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha20Rng;
+
+/// Rejection cap: draws per accepted point.
+pub const MAX_DRAWS: usize = 2000;
+/// Grid size of `uniform`: a + (b−a)·j/2^24, j ∈ 0..=2^24.
+pub const UNIFORM_GRID: u64 = 1 << 24;
+
+/// A sampled point: variable values in f64 (dyadic rationals, used exactly everywhere).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Point {
+    /// Variables in draw order.
+    pub vars: Vec<(String, Value<f64>)>,
+}
+
+impl Point {
+    /// Largest modulus of any scalar component (the default residual scale), at least
+    /// the smallest positive normal f64.
+    pub fn size(&self) -> f64 {
+        self.vars
+            .iter()
+            .map(|(_, v)| v.magnitude())
+            .fold(0.0, f64::max)
+            .max(f64::MIN_POSITIVE)
+    }
+    /// Value of a variable.
+    pub fn get(&self, name: &str) -> Option<&Value<f64>> {
+        self.vars
+            .iter()
+            .rev()
+            .find(|(n, _)| n == name)
+            .map(|(_, v)| v)
+    }
+    /// Human rendering `name = value, ...` with round-trip f64 digits.
+    pub fn render(&self) -> Vec<(String, String)> {
+        self.vars
+            .iter()
+            .map(|(n, v)| (n.clone(), render_f64_value(v)))
+            .collect()
+    }
+}
+
+/// Renders an f64 value with round-trip digits.
+pub fn render_f64_value(v: &Value<f64>) -> String {
+    match v {
+        Value::Real(x) => format!("{x:e}"),
+        Value::Bool(b) => b.to_string(),
+        Value::Complex(z) => format!("{:e} + {:e}i", z.re, z.im),
+        Value::Vec3(a) => format!("({:e}, {:e}, {:e})", a[0], a[1], a[2]),
+        v => format!("{:?}", v.components()),
+    }
+}
+
+/// Statistics of the primitives used, for Schwartz–Zippel bounds.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct DrawStats {
+    /// Candidate points drawn.
+    pub draws: usize,
+    /// Points accepted by the constraints.
+    pub accepted: usize,
+    /// Smallest finite set size among the primitives used.
+    pub min_set: Option<u64>,
+    /// Was a non-uniform primitive (normal) used?
+    pub nonuniform: bool,
+}
+
+/// FNV-1a 64-bit hash (stable).
+pub fn fnv1a(s: &str) -> u64 {
+    let mut h: u64 = 0xcbf29ce484222325;
+    for b in s.bytes() {
+        h ^= u64::from(b);
+        h = h.wrapping_mul(0x100000001b3);
+    }
+    h
+}
+
+/// Samples points of one claim's domain.
+pub struct Sampler<'c> {
+    rng: ChaCha20Rng,
+    reg: &'c Registry,
+    vars: Vec<(String, &'c PExpr)>,
+    wheres: Vec<&'c PExpr>,
+    /// Primitive statistics.
+    pub stats: DrawStats,
+}
+
+impl<'c> Sampler<'c> {
+    /// A sampler for `claim` (domain variables then the claim's own), on stream `stream`
+    /// (different purposes — float samples, exact samples, redraws — use different
+    /// streams so they never share draws).
+    pub fn new(cat: &'c Catalogue, claim: &'c Claim, stream: u64) -> Result<Self, String> {
+        let mut vars = Vec::new();
+        let mut wheres = Vec::new();
+        if let Some(d) = &claim.domain {
+            let dom = cat
+                .domains
+                .get(d)
+                .ok_or_else(|| format!("unknown domain '{d}'"))?;
+            vars.extend(dom.vars.iter().map(|(n, p)| (n.clone(), p)));
+            wheres.extend(dom.wheres.iter());
+        }
+        vars.extend(claim.vars.iter().map(|(n, p)| (n.clone(), p)));
+        wheres.extend(claim.wheres.iter());
+        let seed = fnv1a(&claim.id) ^ claim.seed.wrapping_mul(0x9e3779b97f4a7c15);
+        let mut rng = ChaCha20Rng::seed_from_u64(seed);
+        rng.set_stream(stream);
+        Ok(Sampler {
+            rng,
+            reg: &cat.registry,
+            vars,
+            wheres,
+            stats: DrawStats::default(),
+        })
+    }
+
+    /// Draws one point satisfying every constraint.
+    pub fn draw(&mut self) -> Result<Point, String> {
+        let mut last_fail = String::new();
+        for _ in 0..MAX_DRAWS {
+            self.stats.draws += 1;
+            let p = self.candidate()?;
+            match self.accepts(&p) {
+                Ok(true) => {
+                    self.stats.accepted += 1;
+                    return Ok(p);
+                }
+                Ok(false) => {}
+                Err(m) => last_fail = m,
+            }
+            if last_fail.is_empty() {
+                last_fail = "constraints".into();
+            }
+        }
+        Err(format!(
+            "domain too thin: no point satisfied the constraints in {MAX_DRAWS} draws (last rejection: {last_fail})"
+        ))
+    }
+
+    /// Does the point satisfy every `where` constraint?  `Err` names the failing one.
+    pub fn accepts(&self, p: &Point) -> Result<bool, String> {
+        let mut ev = Evaluator::new(self.reg, 0.0f64);
+        for (n, v) in &p.vars {
+            ev.bind(n, v.clone());
+        }
+        for w in &self.wheres {
+            match ev.eval(&w.expr).and_then(|v| {
+                v.as_bool().map_err(|m| super::eval::EvalError {
+                    message: m,
+                    span: None,
+                })
+            }) {
+                Ok(true) => {}
+                Ok(false) => return Err(format!("'{}' is false", w.text)),
+                Err(e) => return Err(format!("'{}' cannot be evaluated: {}", w.text, e.message)),
+            }
+        }
+        Ok(true)
+    }
+
+    fn candidate(&mut self) -> Result<Point, String> {
+        let mut ev = Evaluator::new(self.reg, 0.0f64);
+        let mut vars = Vec::new();
+        let list = self.vars.clone();
+        for (n, p) in list {
+            let v = self
+                .eval_sampling(&p.expr, &ev)
+                .map_err(|m| format!("sampling '{n}' = '{}': {m}", p.text))?;
+            ev.bind(&n, v.clone());
+            vars.push((n, v));
+        }
+        Ok(Point { vars })
+    }
+
+    /// Evaluates a sampler expression in f64 with the random primitives drawn and the
+    /// given evaluator's bindings.
+    pub fn eval_sampling(
+        &mut self,
+        e: &Expr,
+        ev: &Evaluator<'_, f64>,
+    ) -> Result<Value<f64>, String> {
+        let sub = self.substitute(e, ev)?;
+        ev.eval(&sub).map_err(|e| e.message)
+    }
+
+    fn set_size(&mut self, n: u64) {
+        self.stats.min_set = Some(self.stats.min_set.map_or(n, |m| m.min(n)));
+    }
+
+    fn substitute(&mut self, e: &Expr, ev: &Evaluator<'_, f64>) -> Result<Expr, String> {
+        let mut out = e.clone();
+        self.subst_in(&mut out, ev)?;
+        Ok(out)
+    }
+
+    fn subst_in(&mut self, e: &mut Expr, ev: &Evaluator<'_, f64>) -> Result<(), String> {
+        // children first
+        match &mut e.kind {
+            ExprKind::Call(_, args) | ExprKind::List(args) => {
+                for a in args.iter_mut() {
+                    self.subst_in(a, ev)?;
+                }
+            }
+            ExprKind::Unary(_, a) => self.subst_in(a, ev)?,
+            ExprKind::Binary(_, a, b) => {
+                self.subst_in(a, ev)?;
+                self.subst_in(b, ev)?;
+            }
+            ExprKind::If(a, b, c) => {
+                self.subst_in(a, ev)?;
+                self.subst_in(b, ev)?;
+                self.subst_in(c, ev)?;
+            }
+            ExprKind::Index(a, ix) => {
+                self.subst_in(a, ev)?;
+                for i in ix.iter_mut() {
+                    self.subst_in(i, ev)?;
+                }
+            }
+            _ => {}
+        }
+        let ExprKind::Call(name, args) = &e.kind else {
+            return Ok(());
+        };
+        let reals = |args: &[Expr]| -> Result<Vec<f64>, String> {
+            args.iter()
+                .map(|a| ev.eval(a).map_err(|e| e.message)?.as_real())
+                .collect()
+        };
+        let x: f64 = match name.as_str() {
+            "uniform" => {
+                let a = reals(args)?;
+                if a.len() != 2 || a[0] >= a[1] || !a[0].is_finite() || !a[1].is_finite() {
+                    return Err("uniform(a, b) needs a < b".into());
+                }
+                let j = self.rng.gen_range(0..=UNIFORM_GRID);
+                self.set_size(UNIFORM_GRID + 1);
+                a[0] + (a[1] - a[0]) * (j as f64 / UNIFORM_GRID as f64)
+            }
+            "normal" => {
+                if !args.is_empty() {
+                    return Err("normal() takes no arguments".into());
+                }
+                self.stats.nonuniform = true;
+                // Box–Muller
+                let u1: f64 = 1.0 - self.rng.gen::<f64>();
+                let u2: f64 = self.rng.gen::<f64>();
+                (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+            }
+            "randint" => {
+                let a = reals(args)?;
+                if a.len() != 2
+                    || a[0].fract() != 0.0
+                    || a[1].fract() != 0.0
+                    || a[0] > a[1]
+                    || (a[1] - a[0]) > 1e12
+                {
+                    return Err("randint(a, b) needs integers a <= b".into());
+                }
+                self.set_size((a[1] - a[0]) as u64 + 1);
+                self.rng.gen_range(a[0] as i64..=a[1] as i64) as f64
+            }
+            "sign" => {
+                if !args.is_empty() {
+                    return Err("sign() takes no arguments in a sampler".into());
+                }
+                self.set_size(2);
+                if self.rng.gen::<bool>() {
+                    1.0
+                } else {
+                    -1.0
+                }
+            }
+            "choice" => {
+                let a = reals(args)?;
+                if a.is_empty() {
+                    return Err("choice(...) needs at least one value".into());
+                }
+                self.set_size(a.len() as u64);
+                a[self.rng.gen_range(0..a.len())]
+            }
+            _ => return Ok(()),
+        };
+        e.kind = ExprKind::Num(format!("{x:e}"));
+        Ok(())
+    }
+}
+
+/// Checks that every claim's domain can be sampled (used by `--check`); returns the
+/// first error.
+pub fn check_domains(cat: &Catalogue) -> Result<(), String> {
+    for c in &cat.claims {
+        if matches!(c.body, super::catalogue::Body::Definition(_)) {
+            continue;
+        }
+        let mut s = Sampler::new(cat, c, 0).map_err(|m| format!("{}: {m}", c.id))?;
+        s.draw().map_err(|m| format!("{}: {m}", c.id))?;
+    }
+    Ok(())
+}

@@ -1,0 +1,109 @@
+//! `eulertop eval EXPR`: evaluates an expression of the catalogue language.
+
+use super::verify::catalogue_registry;
+use super::CliError;
+use crate::claims::backend::Num;
+use crate::claims::eval::Evaluator;
+use crate::claims::parser::parse_expr;
+use crate::claims::value::Value;
+use clap::Parser;
+
+/// Arguments of `eulertop eval`.
+#[derive(Parser, Debug)]
+pub struct Args {
+    /// The expression, e.g. `sn(0.5, 0.8)^2 + cn(0.5, 0.8)^2`.
+    pub expr: String,
+    /// Precision in bits (53 = IEEE double; else MPFR).
+    #[arg(long, default_value_t = 53)]
+    pub bits: u32,
+    /// Variable bindings `name=expression`, evaluated in order.
+    #[arg(long = "set")]
+    pub set: Vec<String>,
+}
+
+fn show<T: Num>(v: &Value<T>, digits: usize) -> String {
+    let d = |x: &T| x.to_decimal(digits);
+    match v {
+        Value::Real(x) => d(x),
+        Value::Bool(b) => b.to_string(),
+        Value::Complex(z) => format!("{} + {}i", d(&z.re), d(&z.im)),
+        Value::Vec3(a) => format!("[{}, {}, {}]", d(&a[0]), d(&a[1]), d(&a[2])),
+        Value::Mat3(m) => m
+            .iter()
+            .map(|r| format!("[{}, {}, {}]", d(&r[0]), d(&r[1]), d(&r[2])))
+            .collect::<Vec<_>>()
+            .join("\n"),
+        Value::CMat2(m) => m
+            .iter()
+            .map(|r| {
+                format!(
+                    "[{} + {}i, {} + {}i]",
+                    d(&r[0].re),
+                    d(&r[0].im),
+                    d(&r[1].re),
+                    d(&r[1].im)
+                )
+            })
+            .collect::<Vec<_>>()
+            .join("\n"),
+    }
+}
+
+fn go<T: Num>(args: &Args, like: T) -> Result<String, CliError> {
+    let reg = catalogue_registry();
+    let mut ev = Evaluator::new(&reg, like);
+    for s in &args.set {
+        let (n, e) = s
+            .split_once('=')
+            .ok_or_else(|| CliError(format!("--set '{s}': expected name=value")))?;
+        let n = n.trim();
+        if !matches!(
+            parse_expr(n).map(|e| e.kind),
+            Ok(crate::claims::ast::ExprKind::Name(_))
+        ) {
+            return Err(CliError(format!(
+                "--set '{s}': '{n}' is not a variable name"
+            )));
+        }
+        let ex = parse_expr(e).map_err(|err| {
+            CliError(format!(
+                "--set '{s}': syntax error at column {}: {}",
+                err.span.start + 1,
+                err.message
+            ))
+        })?;
+        let v = ev
+            .eval(&ex)
+            .map_err(|err| CliError(format!("--set '{s}': {}", err.message)))?;
+        ev.bind(n, v);
+    }
+    let ex = parse_expr(&args.expr).map_err(|err| {
+        CliError(format!(
+            "syntax error at column {}: {}\n    {}\n    {}{}",
+            err.span.start + 1,
+            err.message,
+            args.expr,
+            " ".repeat(err.span.start),
+            "^".repeat((err.span.end - err.span.start).max(1))
+        ))
+    })?;
+    let v = ev.eval(&ex).map_err(|err| CliError(err.message))?;
+    let digits = ((f64::from(args.bits) * std::f64::consts::LOG10_2).floor() as usize).max(2);
+    Ok(show(&v, digits))
+}
+
+/// Runs `eulertop eval`.
+pub fn run(args: Args) -> Result<i32, CliError> {
+    let out = if args.bits == 53 {
+        go(&args, 0.0f64)?
+    } else if (54..=1 << 20).contains(&args.bits) {
+        go(&args, rug::Float::new(args.bits))?
+    } else {
+        return Err(CliError(format!(
+            "precision {} bits out of range (53 = f64, or 54..1048576)",
+            args.bits
+        )));
+    };
+    println!("{out}");
+    Ok(0)
+}

@@ -1,0 +1,305 @@
+//! `eulertop verify`: runs the claim catalogue on the precision ladder and prints a table
+//! (or JSON); exit 0 iff every verdict equals its `expect`.
+
+use super::CliError;
+use crate::claims::catalogue::{latex_labels, load_dir, Catalogue};
+use crate::claims::registry::Registry;
+use crate::claims::verdict::{coverage_table, verify, ClaimResult, Options, Verdict};
+use clap::Parser;
+use serde::Serialize;
+use std::io::IsTerminal;
+use std::path::Path;
+
+/// Arguments of `eulertop verify`.
+#[derive(Parser, Debug)]
+pub struct Args {
+    /// Precision ladder in bits (53 = IEEE double, others MPFR).
+    #[arg(long, default_value = "53,128,256,512,1024")]
+    pub bits: String,
+    /// Only claims whose id contains this text (`*` matches any run of characters).
+    #[arg(long)]
+    pub only: Option<String>,
+    /// Output format: text or json.
+    #[arg(long, default_value = "text")]
+    pub format: String,
+    /// Number of worker threads (default: all cores).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+    /// Catalogue directory.
+    #[arg(long, default_value = "identities")]
+    pub catalogue: String,
+    /// Print the coverage table (paper label → claim ids → verdicts).
+    #[arg(long)]
+    pub coverage: bool,
+}
+
+/// The function table used by the command-line tools: every function registered by the
+/// model layer.
+pub fn catalogue_registry() -> Registry {
+    #[allow(unused_mut)]
+    let mut reg = Registry::new();
+    reg
+}
+
+/// Loads the catalogue with the model's functions; load errors become [`CliError`].
+pub fn load(dir: &str) -> Result<Catalogue, CliError> {
+    load_dir(Path::new(dir), catalogue_registry()).map_err(|e| CliError(e.to_string()))
+}
+
+/// Simple pattern match: substring, with `*` as a wildcard.
+pub fn matches_pattern(id: &str, pat: &str) -> bool {
+    if !pat.contains('*') {
+        return id.contains(pat);
+    }
+    let parts: Vec<&str> = pat.split('*').collect();
+    let mut rest = id;
+    for (j, p) in parts.iter().enumerate() {
+        if p.is_empty() {
+            continue;
+        }
+        match rest.find(p) {
+            Some(k) if j > 0 || k == 0 => rest = &rest[k + p.len()..],
+            _ => return false,
+        }
+    }
+    parts.last().is_none_or(|l| l.is_empty() || id.ends_with(l))
+}
+
+/// Parses and checks a precision ladder.
+pub fn parse_bits(s: &str) -> Result<Vec<u32>, CliError> {
+    let bits: Vec<u32> = super::parse_list(s, "precision")?;
+    for &b in &bits {
+        if b != 53 && !(54..=1 << 20).contains(&b) {
+            return Err(CliError(format!(
+                "precision {b} bits out of range (53 = f64, or 54..1048576 for MPFR)"
+            )));
+        }
+    }
+    if bits.is_empty() {
+        return Err(CliError("empty precision list".into()));
+    }
+    Ok(bits)
+}
+
+/// Formats a residual compactly: `2^-140.2`, `0` (exactly zero).
+pub fn fmt_log2(l: Option<f64>) -> String {
+    match l {
+        None => "0".to_string(),
+        Some(x) => format!("2^{x:.1}"),
+    }
+}
+
+#[derive(Serialize)]
+struct Summary {
+    claims: usize,
+    holds: usize,
+    refuted: usize,
+    proved: usize,
+    inconclusive: usize,
+    defined: usize,
+    unexpected: Vec<String>,
+    bits: Vec<u32>,
+}
+
+#[derive(Serialize)]
+struct Report<'a> {
+    claims: &'a [ClaimResult],
+    summary: Summary,
+}
+
+fn summary(results: &[ClaimResult], bits: &[u32]) -> Summary {
+    let n = |v: Verdict| results.iter().filter(|r| r.verdict == v).count();
+    Summary {
+        claims: results.len(),
+        holds: n(Verdict::Holds),
+        refuted: n(Verdict::Refuted),
+        proved: n(Verdict::Proved),
+        inconclusive: n(Verdict::Inconclusive),
+        defined: n(Verdict::Defined),
+        unexpected: results
+            .iter()
+            .filter(|r| !r.as_expected)
+            .map(|r| r.id.clone())
+            .collect(),
+        bits: bits.to_vec(),
+    }
+}
+
+/// Paper labels: from the LaTeX source next to the repository if present, else the
+/// checked-in list.
+pub fn paper_labels() -> Vec<String> {
+    for p in [
+        "../shared/paper/bobenko-lorbeer-suris-euler-top.tex",
+        "../../shared/paper/bobenko-lorbeer-suris-euler-top.tex",
+    ] {
+        if let Ok(t) = std::fs::read_to_string(p) {
+            let l = latex_labels(&t);
+            if !l.is_empty() {
+                return l;
+            }
+        }
+    }
+    include_str!("../../tests/data/paper_labels.txt")
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+        .map(|l| l.to_string())
+        .collect()
+}
+
+/// Runs `eulertop verify`.
+pub fn run(args: Args) -> Result<i32, CliError> {
+    let bits = parse_bits(&args.bits)?;
+    if args.format != "text" && args.format != "json" {
+        return Err(CliError(format!(
+            "unknown format '{}' (text or json)",
+            args.format
+        )));
+    }
+    let cat = load(&args.catalogue)?;
+    let opts = Options {
+        bits: bits.clone(),
+        exact: true,
+    };
+    let only = args.only.clone();
+    let select = move |c: &crate::claims::catalogue::Claim| {
+        only.as_deref().is_none_or(|p| matches_pattern(&c.id, p))
+    };
+    let total = cat.claims.iter().filter(|c| select(c)).count();
+    if total == 0 {
+        return Err(CliError(format!(
+            "no claim matches '{}'",
+            args.only.unwrap_or_default()
+        )));
+    }
+    let bar = if std::io::stderr().is_terminal() {
+        let b = indicatif::ProgressBar::new(total as u64);
+        b.set_style(
+            indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} claims {elapsed}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        Some(b)
+    } else {
+        None
+    };
+    let done = |_: &ClaimResult| {
+        if let Some(b) = &bar {
+            b.inc(1);
+        }
+    };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(args.jobs.unwrap_or(0))
+        .build()
+        .map_err(|e| CliError(format!("cannot start worker threads: {e}")))?;
+    let results = pool.install(|| verify(&cat, &opts, &select, &done));
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    let sum = summary(&results, &bits);
+    let code = i32::from(!sum.unexpected.is_empty());
+    if args.format == "json" {
+        let rep = Report {
+            claims: &results,
+            summary: sum,
+        };
+        let s = serde_json::to_string_pretty(&rep).map_err(|e| CliError(e.to_string()))?;
+        println!("{s}");
+    } else {
+        print_text(&results, &bits, &sum);
+    }
+    if args.coverage {
+        print_coverage(&results);
+    }
+    Ok(code)
+}
+
+fn print_text(results: &[ClaimResult], bits: &[u32], sum: &Summary) {
+    let idw = results.iter().map(|r| r.id.len()).max().unwrap_or(2).max(2);
+    let locw = results
+        .iter()
+        .map(|r| r.location.chars().count().min(40))
+        .max()
+        .unwrap_or(8)
+        .max(8);
+    let mut head = format!(
+        "{:idw$}  {:locw$}  {:9}  {:12}  {:12}  {:>5}",
+        "id", "location", "form", "verdict", "expect", "g"
+    );
+    for b in bits {
+        head.push_str(&format!("  {:>10}", format!("{b} bits")));
+    }
+    println!("{head}");
+    for r in results {
+        let loc: String = r.location.chars().take(40).collect();
+        let mark = if r.as_expected { "" } else { " !" };
+        let g = r.loss_bits.map_or("-".to_string(), |g| format!("{g:.1}"));
+        let mut line = format!(
+            "{:idw$}  {:locw$}  {:9}  {:12}  {:12}  {:>5}",
+            r.id,
+            loc,
+            r.form,
+            format!("{}{mark}", r.verdict.name()),
+            r.expect.clone().unwrap_or_else(|| "-".into()),
+            g
+        );
+        for (j, _) in bits.iter().enumerate() {
+            let cell = match r.residuals.get(j) {
+                None => "-".to_string(),
+                Some(x) if r.kind == "asymptotic" => format!("slope {:.2}", x.residual),
+                Some(x) => fmt_log2(x.log2),
+            };
+            line.push_str(&format!("  {cell:>10}"));
+        }
+        println!("{line}");
+        if !r.as_expected {
+            println!("    reason: {}", r.reason);
+            if let Some(c) = &r.counterexample {
+                let pt: Vec<String> = c
+                    .point
+                    .iter()
+                    .map(|n| format!("{} = {}", n.name, n.value))
+                    .collect();
+                println!("    counterexample: {}", pt.join(", "));
+                println!("      lhs = {}\n      rhs = {}", c.lhs, c.rhs);
+            }
+            for f in r.failures.iter().take(2) {
+                println!("    failed sample ({} bits): {}", f.bits, f.message);
+            }
+        }
+    }
+    println!(
+        "\n{} claims: {} holds, {} proved, {} refuted, {} inconclusive, {} definitions; {} not as expected{}",
+        sum.claims,
+        sum.holds,
+        sum.proved,
+        sum.refuted,
+        sum.inconclusive,
+        sum.defined,
+        sum.unexpected.len(),
+        if sum.unexpected.is_empty() {
+            String::new()
+        } else {
+            format!(": {}", sum.unexpected.join(", "))
+        }
+    );
+}
+
+fn print_coverage(results: &[ClaimResult]) {
+    let labels = paper_labels();
+    let table = coverage_table(&labels, results);
+    let covered = table.iter().filter(|(_, ids)| !ids.is_empty()).count();
+    println!(
+        "\nCoverage: {covered} of {} paper labels have claims",
+        labels.len()
+    );
+    for (l, ids) in &table {
+        if ids.is_empty() {
+            println!("  {l:24}  (no claim)");
+        } else {
+            let s: Vec<String> = ids
+                .iter()
+                .map(|(i, v)| format!("{i} [{}]", v.name()))
+                .collect();
+            println!("  {l:24}  {}", s.join(", "));
+        }
+    }
+}
