@@ -13,9 +13,11 @@ Landen/AGM code under test), with modulus k passed as parameter m = k^2; K, K', 
 python-flint (Arb: acb.elliptic_k / acb.elliptic_f), cross-checked against mpmath.
 All inputs are doubles, written as their EXACT decimal expansion, so every precision on
 the Rust side reads the same number.  Each row has a `digits` column: the number of
-significant digits given (30 for every row, 330 or 1250 for the subsets used by the
-1024- and 4096-bit tests).  Values are computed with 4400 bits (1250-digit rows) or more
-than 3.4 digits/bit margins otherwise.
+significant digits given (30 for most rows, 330 or 1250 for the subsets used by the
+1024- and 4096-bit tests).  Values are computed at 200 / 1200 / 4400 bits for the three
+tiers (complex: +200 bits) and each row is recomputed with 256 more bits; the script
+stops unless both agree to the digits written (relative to max(1, |value|)).
+The random arguments use a fixed seed, so re-running reproduces the files.
 """
 import csv, random, sys, os
 from decimal import Decimal

@@ -15,4 +15,5 @@ pub mod cli;
 pub mod linalg;
 pub mod model;
 pub mod numbers;
+pub mod report;
 pub mod special;

@@ -26,6 +26,8 @@ enum Command {
     Step(eulertop::cli::step::Args),
     /// Iterates and compares with the continuous solution; writes CSV and SVG.
     Orbit(eulertop::cli::orbit::Args),
+    /// Verify the catalogue and write the Markdown reports into reports/.
+    Report(eulertop::cli::report::Args),
 }
 
 fn main() -> ExitCode {
@@ -37,6 +39,7 @@ fn main() -> ExitCode {
         Command::Jacobi(a) => eulertop::cli::jacobi::run(a),
         Command::Step(a) => eulertop::cli::step::run(a),
         Command::Orbit(a) => eulertop::cli::orbit::run(a),
+        Command::Report(a) => eulertop::cli::report::run(a),
     };
     match result {
         Ok(code) => ExitCode::from(code as u8),

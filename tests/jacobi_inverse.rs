@@ -5,7 +5,7 @@ use proptest::prelude::*;
 use rug::Float;
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 400, rng_seed: proptest::test_runner::RngSeed::Fixed(20261121), ..ProptestConfig::default() })]
     /// f64: the recovered u reproduces sn, cn, dn (to a few ulp) and lies in (−2K, 2K].
     #[test]
     fn round_trip_f64(x in -0.999f64..1.0, ki in 0usize..6) {

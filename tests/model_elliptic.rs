@@ -205,3 +205,45 @@ fn delta_odd_in_h() {
         assert!((d - dm).abs() < 1e-13);
     }
 }
+
+/// Jacobian of Φ (proof of Proposition 3) and the bracket (PB in ell), by AD.
+/// Finding: det ∂(M₁,M₂,M₃)/∂(M²,E,φ) = −1/(4ν), independent of φ — the printed
+/// value is −dn²φ/(4ν); −1/(4ν) is what (PB in ell) {E,φ} = −2ν implies, since
+/// det ∂(M²,E,φ)/∂M = ⟨∇M², ∇E × ∇φ⟩ = 2{E,φ}.
+#[test]
+fn jacobian_of_phi_and_bracket_e_phi() {
+    use eulertop::linalg::Mat3;
+    use eulertop::model::EllipticParams;
+    let i = Inertia::new(3.0, 2.0, 1.0).unwrap();
+    let id = i.to_dual();
+    for m in [
+        Vec3::new(0.3, -0.7, 1.1),
+        Vec3::new(1.1, -0.7, 0.3),
+        Vec3::new(-0.5, 0.2, -0.9),
+    ] {
+        let c = m_to_phi(&i, &m).unwrap();
+        let mut jac = Mat3::zeros(&0.0);
+        for col in 0..3 {
+            let s = |k: usize, v: f64| Dual::new(v, if k == col { 1.0 } else { 0.0 });
+            let p = EllipticParams::new(&id, &s(0, c.params.m2), &s(1, c.params.e)).unwrap();
+            let x = phi_to_m(&p, c.sector, &s(2, c.phi)).unwrap();
+            for r in 0..3 {
+                jac.0[r][col] = x.0[r].d;
+            }
+        }
+        let nu = c.params.nu();
+        assert!((jac.det() + 1.0 / (4.0 * nu)).abs() < 1e-13);
+        let (_, _, dn) = eulertop::special::sncndn(&c.phi, &c.params.k()).unwrap();
+        assert!(
+            (jac.det() + dn * dn / (4.0 * nu)).abs() > 1e-3,
+            "printed dn² factor"
+        );
+        // {E, φ} = −2ν with φ = Φ⁻¹(M) differentiated by AD
+        let b = i.poisson_bracket(
+            &m,
+            |x: &Vec3<Dual<f64>>| id.energy(x),
+            |x: &Vec3<Dual<f64>>| m_to_phi(&id, x).unwrap().phi,
+        );
+        assert!((b + 2.0 * nu).abs() < 1e-12, "{b} vs {}", -2.0 * nu);
+    }
+}

@@ -33,4 +33,5 @@ pub fn parse_list<T: std::str::FromStr>(s: &str, what: &str) -> Result<Vec<T>, C
 
 pub mod audit;
 pub mod eval;
+pub mod report;
 pub mod verify;

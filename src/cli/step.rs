@@ -40,7 +40,7 @@ pub struct Args {
     #[arg(long, default_value_t = 53)]
     pub bits: u32,
     /// Start point M1 M2 M3.
-    #[arg(num_args = 3, required = true, allow_hyphen_values = true)]
+    #[arg(num_args = 3, required = true, allow_hyphen_values = true, value_names = ["M1", "M2", "M3"])]
     pub m: Vec<String>,
 }
 

@@ -230,6 +230,23 @@ pub struct StepReport<R> {
     pub residual: f64,
 }
 
+/// Solves `a·x = b` by Cramer's rule with a single division; `None` if `det a = 0`.
+fn solve3<R: Real>(a: &Mat3<R>, b: &Vec3<R>) -> Option<Vec3<R>> {
+    let det = a.det();
+    if det.is_zero() || !det.is_finite() {
+        return None;
+    }
+    let inv = det.recip();
+    let col = |j: usize| {
+        let mut m = a.clone();
+        for i in 0..3 {
+            m.0[i][j] = b.0[i].clone();
+        }
+        m.det() * inv.clone()
+    };
+    Some(Vec3::new(col(0), col(1), col(2)))
+}
+
 /// `‖v‖∞` in the scalar type.
 pub fn inf_norm<R: Real>(v: &Vec3<R>) -> R {
     let [a, b, c] = &v.0;
@@ -269,8 +286,7 @@ pub fn step_report<R: Real>(
             return Err(fail(iterations, inf_norm(&r).to_f64()));
         }
         let (res, jac) = residual_jacobian(inertia, gamma, m, &x, h)?;
-        let inv = jac.inverse().ok_or_else(|| fail(iterations, f64::NAN))?;
-        let dx = inv.mul_vec(&res);
+        let dx = solve3(&jac, &res).ok_or_else(|| fail(iterations, f64::NAN))?;
         x = x - dx.clone();
         iterations += 1;
         let dn = inf_norm(&dx);

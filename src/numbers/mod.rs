@@ -17,8 +17,8 @@
 //! ```
 //! use eulertop::numbers::{Real, Scalar};
 //! let x = rug::Float::with_val(256, 2);
-//! let r = x.sqrt();                // 256-bit square root of 2
-//! assert_eq!(r.prec(), 256);
+//! let r = Real::sqrt(&x);          // 256-bit square root of 2
+//! assert_eq!(Real::prec(&r), 256);
 //! let back = r.clone() * r - x.from_i64(2);
 //! assert!(back.magnitude() < 1e-75);
 //! ```

@@ -1,8 +1,6 @@
 //! Jacobi elliptic functions sn, cn, dn and the amplitude am of a real argument.
 
-use super::agm::complementary;
-use super::landen::Chain;
-use super::reduce::{quarter_period_triple, reduce_dd};
+use super::reduce::{chain_for, reduce_dd};
 use super::{check_finite, check_modulus, show, SpecialError, GUARD};
 use crate::numbers::Real;
 
@@ -22,17 +20,15 @@ impl<R: Real> Reduced<R> {
         let (s, c, d, kp) = (&self.s, &self.c, &self.d, &self.kp);
         match self.j.rem_euclid(4) {
             0 => (s.clone(), c.clone(), d.clone()),
-            1 => (
-                c.clone() / d.clone(),
-                -(kp.clone() * s.clone() / d.clone()),
-                kp.clone() / d.clone(),
-            ),
+            1 => {
+                let kd = kp.clone() / d.clone();
+                (c.clone() / d.clone(), -(kd.clone() * s.clone()), kd)
+            }
             2 => (-s.clone(), -c.clone(), d.clone()),
-            _ => (
-                -(c.clone() / d.clone()),
-                kp.clone() * s.clone() / d.clone(),
-                kp.clone() / d.clone(),
-            ),
+            _ => {
+                let kd = kp.clone() / d.clone();
+                (-(c.clone() / d.clone()), kd.clone() * s.clone(), kd)
+            }
         }
     }
 }
@@ -46,12 +42,11 @@ fn reduced_at<R: Real>(
     w: u32,
 ) -> Result<(Reduced<R>, u32), SpecialError> {
     let uw = u.with_prec(w);
-    let kw = k0.with_prec(w);
-    let kpw = complementary(&kw);
-    let (k, kp) = if comp { (kpw, kw) } else { (kw, kpw) };
-    let ch = Chain::new(&k, &kp)?;
+    let data = chain_for(k0, comp, w)?;
+    let ch = &data.chain;
+    let kp = data.kp.clone();
     let kq_f = ch.kq.to_f64();
-    let ratio = uw.to_f64() / kq_f;
+    let ratio = uw.to_f64() * data.inv_kq;
     if ratio.abs() >= 2f64.powi(50) {
         return Err(SpecialError::ArgumentTooLarge(format!(
             "|u|/K = {:e} >= 2^50 (u = {})",
@@ -59,13 +54,18 @@ fn reduced_at<R: Real>(
             show(u)
         )));
     }
-    let j = ratio.round() as i64;
+    // round half away from zero without a libm call (|ratio| < 2^50 checked above)
+    let j = if ratio >= 0.0 {
+        (ratio + 0.5) as i64
+    } else {
+        (ratio - 0.5) as i64
+    };
     let fixed = uw.prec() < w;
     let mut need = 0u32;
     let t = if j == 0 {
         uw
     } else if fixed {
-        reduce_dd(&uw, &ch.kq, j, quarter_period_triple(k0.to_f64(), comp))
+        reduce_dd(&uw, &ch.kq, j, data.triple(k0, comp))
     } else {
         let t = uw.clone() - uw.from_i64(j) * ch.kq.clone();
         // bits lost: size of j, magnitude of K, cancellation in t
@@ -80,7 +80,7 @@ fn reduced_at<R: Real>(
         need = jb + (kb + cb).ceil() as u32 + 8;
         t
     };
-    let (s, c, d) = ch.eval(&t);
+    let (s, c, d) = ch.eval(&t, fixed);
     Ok((Reduced { j, s, c, d, kp }, need))
 }
 
@@ -93,10 +93,28 @@ pub(crate) fn reduced<R: Real>(
     comp: bool,
     n: u32,
 ) -> Result<Reduced<R>, SpecialError> {
-    let mut w = n + GUARD;
+    // cn from sn at the top of the chain loses up to log2(1/k') bits (see landen.rs);
+    // only multi-precision types use that form and get the extra bits
+    let fixed = u.with_prec(n + GUARD).prec() < n + GUARD;
+    let extra = if fixed {
+        0
+    } else {
+        let kf = k.to_f64();
+        let kp_f = if comp {
+            kf
+        } else {
+            ((1.0 - kf) * (1.0 + kf)).sqrt()
+        };
+        if kp_f > 0.0 {
+            (-kp_f.log2()).ceil().max(0.0) as u32
+        } else {
+            n
+        }
+    };
+    let mut w = n + GUARD + extra;
     for _ in 0..6 {
         let (r, need) = reduced_at(u, k, comp, w)?;
-        if need + 8 <= w - n || u.with_prec(w).prec() < w {
+        if fixed || need + 8 <= w - n {
             return Ok(r);
         }
         w = (n + need + GUARD).max(w + w / 2);

@@ -7,7 +7,7 @@
 //! `√((1−k)(1+k))` so that it keeps full relative accuracy as `k → 1`.
 //! The domain is `0 ≤ k < 1`; anything else (including NaN) is an error, never a panic.
 //!
-//! All functions are written once, generically over [`Real`] / [`ComplexScalar`]:
+//! All functions are written once, generically over [`Real`] / [`ComplexScalar`](crate::numbers::ComplexScalar):
 //! they run on `f64`, on `rug::Float` at any precision, on complex pairs and on
 //! [`crate::numbers::Dual`] (automatic differentiation flows through the algorithms,
 //! e.g. `d/du sn = cn·dn` comes out of the arithmetic).
@@ -17,20 +17,29 @@
 //! * **Moduli chain** (module `landen`): the descending Landen / Gauss transformation
 //!   `k₁ = k²/(1+k')²`, `k₁' = 2√k'/(1+k')`, `1−k₁ = 2k'/(1+k')` (DLMF 22.7.1–3,
 //!   19.8.12), iterated until `k_N⁴` is below the working epsilon (quadratic
-//!   convergence: 3 steps for k = 0.5 in double, ~10 at 4096 bits).  The quarter period
+//!   convergence: 3 steps for k = 0.8 in double, ~10 at 4096 bits).  The quarter period
 //!   follows as `K = (π/2)·Π(1+k_n)·(1+k_N²/4)`.
 //! * **sn, cn, dn of a real argument** (module `jacobi`): the argument is reduced to
 //!   `u = jK + t`, `|t| ≤ K/2`; at the bottom of the chain `sn, cn, dn(t/Π(1+k_n), k_N)`
 //!   come from `sin`/`cos` with the first-order correction DLMF 22.10.4–6, then the
-//!   chain is climbed back with DLMF 22.7.1–3 written without cancellation
-//!   (`dn = (cn₁² + (1−k₁)sn₁²)/(1+k₁sn₁²)`), and the quadrant `j mod 4` is applied with
-//!   the quarter-period shifts DLMF 22.4.3 (`sn(t+K) = cd t`, `cn(t+K) = −k' sd t`,
-//!   `dn(t+K) = k' nd t`).  This uses one `sin_cos` and a few divisions per level (fast
-//!   in double), and every output keeps *relative* accuracy near its zeros, which the
-//!   complex case needs near its poles.  Only products, quotients and sums of
-//!   non-negative terms occur after the reduction.
+//!   chain is climbed back with DLMF 22.7.1–3, and the quadrant `j mod 4` is applied
+//!   with the quarter-period shifts DLMF 22.4.3 (`sn(t+K) = cd t`, `cn(t+K) = −k' sd t`,
+//!   `dn(t+K) = k' nd t`).  In `f64` (no guard bits) all three are carried up, written
+//!   as "value + small correction" with `1 − dn` tracked next to `dn`
+//!   (`dn = (cn₁² + (1−k₁)sn₁²)/(1+k₁sn₁²)`), so roundings scale with the correction.
+//!   With guard bits only `sn` is carried up (one reciprocal and three products per
+//!   level) and `cn = √((1−sn)(1+sn))`, `dn = √(k'² + k²cn²)` (DLMF 22.6.1) at the
+//!   top; since `cn(t) ≥ √(k'/(1+k'))` for `|t| ≤ K/2` this loses at most
+//!   `log2(1/k')` bits, which are added to the working precision.  One `sin_cos` per
+//!   call; every output keeps *relative* accuracy near its zeros (the shifts turn
+//!   zeros of cn into factors `k'·sn(t)`), which the complex case needs near its poles.
+//!   In `f64`, a modulus whose complement is below `√(ε/8)` (only reached as the
+//!   complementary modulus of a tiny `k` in the complex case) uses the `tanh`/`sech`
+//!   expansion DLMF 22.10.7–9 instead, exact to rounding there.
+//!   The chain depends only on `k`; the last few chains are cached per thread for
+//!   `f64` and `rug::Float` (not for `Dual`, whose derivative parts differ per call).
 //! * **Argument reduction.**  For MPFR the working precision is raised to
-//!   `N + 40 + log2|j| + (cancellation bits of t)`, adaptively: if `t = u − jK`
+//!   `N + 40 + log2(1/k') + log2|j| + (cancellation bits of t)`, adaptively: if `t = u − jK`
 //!   cancels, the reduction is repeated with more bits.  For fixed-precision types
 //!   (`f64`, `Dual<f64>`) `K` is taken as a triple-double from a 200-bit MPFR AGM
 //!   (cached per modulus) and `t` is formed with error-free transformations (FMA),

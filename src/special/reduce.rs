@@ -1,10 +1,14 @@
 //! Argument reduction helpers for fixed-precision types (`f64`, `Dual<f64>`): a quarter
 //! period known to ~150 bits as a triple-double, and an error-free `u − j·P`.
 
+use super::landen::Chain;
+use super::SpecialError;
 use crate::numbers::Real;
 use rug::float::Constant;
 use rug::Float;
+use std::any::{Any, TypeId};
 use std::cell::RefCell;
+use std::rc::Rc;
 
 /// Cache entries: ((bits of k, complementary?), triple-double quarter period).
 type Entries = Vec<((u64, bool), [f64; 3])>;
@@ -59,4 +63,88 @@ pub(crate) fn reduce_dd<R: Real>(u: &R, p: &R, j: i64, tri: [f64; 3]) -> R {
     let lo = (e0 + p1) + (e1 + p2);
     let dp = p.clone() - u.from_f64(p.to_f64());
     (u.clone() - u.from_f64(p0)) - u.from_f64(lo) - u.from_i64(j) * dp
+}
+
+/// The moduli chain for one modulus at one working precision.
+pub(crate) struct ChainData<R> {
+    /// Complementary modulus at the working precision (`k` itself for `comp`).
+    pub kp: R,
+    /// The Landen chain (with the quarter period).
+    pub chain: Chain<R>,
+    /// `1/K` rounded to f64 (for choosing the quadrant).
+    pub inv_kq: f64,
+    /// The exact quarter period as a triple-double (fixed-precision types only).
+    triple: std::cell::OnceCell<[f64; 3]>,
+}
+
+impl<R: Real> ChainData<R> {
+    /// [`quarter_period_triple`] for this modulus, computed once.
+    pub(crate) fn triple(&self, k0: &R, comp: bool) -> [f64; 3] {
+        *self
+            .triple
+            .get_or_init(|| quarter_period_triple(k0.to_f64(), comp))
+    }
+}
+
+struct Entry<R> {
+    k0: R,
+    comp: bool,
+    w: u32,
+    data: Rc<ChainData<R>>,
+}
+
+thread_local! {
+    static CHAINS: RefCell<Vec<Box<dyn Any>>> = const { RefCell::new(Vec::new()) };
+}
+
+/// The chain for modulus `k0` (its complement when `comp`) at `w` bits.  For `f64` and
+/// `rug::Float` the last few chains are cached per thread (keyed by the exact value of
+/// `k0`, `comp` and `w`), since callers typically evaluate many arguments for one
+/// modulus; other types (e.g. `Dual`, whose derivative parts must not be shared) are
+/// always computed afresh.
+pub(crate) fn chain_for<R: Real>(
+    k0: &R,
+    comp: bool,
+    w: u32,
+) -> Result<Rc<ChainData<R>>, SpecialError> {
+    let cacheable =
+        TypeId::of::<R>() == TypeId::of::<f64>() || TypeId::of::<R>() == TypeId::of::<Float>();
+    if cacheable {
+        let hit = CHAINS.with(|c| {
+            c.borrow().iter().find_map(|e| {
+                e.downcast_ref::<Entry<R>>()
+                    .filter(|e| e.comp == comp && e.w == w && e.k0 == *k0)
+                    .map(|e| e.data.clone())
+            })
+        });
+        if let Some(d) = hit {
+            return Ok(d);
+        }
+    }
+    let kw = k0.with_prec(w);
+    let kpw = super::agm::complementary(&kw);
+    let (k, kp) = if comp { (kpw, kw) } else { (kw, kpw) };
+    let chain = Chain::new(&k, &kp)?;
+    let inv_kq = 1.0 / chain.kq.to_f64();
+    let data = Rc::new(ChainData {
+        kp,
+        inv_kq,
+        chain,
+        triple: std::cell::OnceCell::new(),
+    });
+    if cacheable {
+        CHAINS.with(|c| {
+            let mut c = c.borrow_mut();
+            if c.len() >= 8 {
+                c.remove(0);
+            }
+            c.push(Box::new(Entry {
+                k0: k0.clone(),
+                comp,
+                w,
+                data: data.clone(),
+            }));
+        });
+    }
+    Ok(data)
 }

@@ -1,0 +1,60 @@
+//! Criterion benchmarks of sn+cn+dn (one call returns all three): f64 and 1024-bit
+//! MPFR, real argument, plus complex f64.  `cargo bench --bench jacobi`.
+
+use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
+use eulertop::numbers::C64;
+use eulertop::special::{sncndn, sncndn_complex};
+use rug::Float;
+
+/// The batch used everywhere (also by examples/bench_batch.rs and scripts/bench_peers.py):
+/// u_i = −10 + 20·(i + 0.5)/n, modulus k = 0.8.
+fn batch(n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| -10.0 + 20.0 * (i as f64 + 0.5) / n as f64)
+        .collect()
+}
+
+fn bench(c: &mut Criterion) {
+    let us = batch(1000);
+    let mut g = c.benchmark_group("jacobi");
+    g.throughput(Throughput::Elements(us.len() as u64));
+    g.bench_function("f64 sncndn x1000", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for u in &us {
+                let (s, c, d) = sncndn(black_box(u), black_box(&0.8)).unwrap();
+                acc += s + c + d;
+            }
+            acc
+        })
+    });
+    g.bench_function("f64 complex sncndn x1000", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for u in &us {
+                let z = C64::new(*u, 0.37 * u);
+                let (s, _, _) = sncndn_complex(black_box(&z), black_box(&0.8)).unwrap();
+                acc += s.re;
+            }
+            acc
+        })
+    });
+    let us1024: Vec<Float> = batch(50)
+        .iter()
+        .map(|u| Float::with_val(1024, *u))
+        .collect();
+    let k = Float::with_val(1024, 0.8);
+    g.throughput(Throughput::Elements(us1024.len() as u64));
+    g.sample_size(10);
+    g.bench_function("1024-bit sncndn x50", |b| {
+        b.iter(|| {
+            for u in &us1024 {
+                black_box(sncndn(black_box(u), &k).unwrap());
+            }
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

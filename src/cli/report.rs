@@ -1,0 +1,184 @@
+//! `eulertop report`: verifies the catalogue and writes the Markdown reports, figures,
+//! errata and conventions into `reports/` (deterministic output).
+
+use super::verify::{load, parse_bits};
+use super::CliError;
+use crate::claims::verdict::{verify, ClaimResult, Options};
+use crate::report::{write_reports, Convention, ReportInput, Section};
+use clap::Parser;
+use std::collections::BTreeMap;
+use std::io::IsTerminal;
+use std::path::Path;
+
+/// Arguments of `eulertop report`.
+#[derive(Parser, Debug)]
+pub struct Args {
+    /// Output directory.
+    #[arg(long, default_value = "reports")]
+    pub out: String,
+    /// Precision ladder in bits.
+    #[arg(long, default_value = "53,128,256,512,1024")]
+    pub bits: String,
+    /// Catalogue directory.
+    #[arg(long, default_value = "identities")]
+    pub catalogue: String,
+    /// Number of worker threads (default: all cores).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+    /// A README whose verdict-count block (between `<!-- verdicts -->` and
+    /// `<!-- /verdicts -->`) is rewritten; empty to skip.
+    #[arg(long, default_value = "README.md")]
+    pub readme: String,
+}
+
+/// Reads `\newcommand{\name}{body}` lines from a LaTeX preamble.
+pub fn parse_newcommands(tex: &str) -> BTreeMap<String, String> {
+    let mut m = BTreeMap::new();
+    for line in tex.lines() {
+        let t = line.trim();
+        let Some(rest) = t.strip_prefix("\\newcommand{\\") else {
+            continue;
+        };
+        let Some(close) = rest.find('}') else {
+            continue;
+        };
+        let name = &rest[..close];
+        let body = rest[close + 1..].trim();
+        if let Some(b) = body.strip_prefix('{').and_then(|b| b.strip_suffix('}')) {
+            m.insert(name.to_string(), b.to_string());
+        }
+    }
+    m
+}
+
+fn read_conventions(dir: &Path) -> Result<Vec<Convention>, CliError> {
+    let p = dir.join("conventions.toml");
+    let Ok(text) = std::fs::read_to_string(&p) else {
+        return Ok(Vec::new());
+    };
+    let v: toml::Value =
+        toml::from_str(&text).map_err(|e| CliError(format!("{}: {}", p.display(), e.message())))?;
+    let list = v
+        .get("convention")
+        .and_then(|c| c.as_array())
+        .cloned()
+        .unwrap_or_default();
+    let field =
+        |c: &toml::Value, k: &str| c.get(k).and_then(|x| x.as_str()).unwrap_or("").to_string();
+    Ok(list
+        .iter()
+        .map(|c| Convention {
+            name: field(c, "name"),
+            choice: field(c, "choice"),
+            why: field(c, "why"),
+        })
+        .collect())
+}
+
+/// Rewrites the verdict block of a README.
+pub fn update_readme(path: &Path, results: &[ClaimResult]) -> Result<(), CliError> {
+    let text =
+        std::fs::read_to_string(path).map_err(|e| CliError(format!("{}: {e}", path.display())))?;
+    let (open, close) = ("<!-- verdicts -->", "<!-- /verdicts -->");
+    let (Some(a), Some(b)) = (text.find(open), text.find(close)) else {
+        return Err(CliError(format!(
+            "{}: no '{open}' … '{close}' block to update",
+            path.display()
+        )));
+    };
+    if b < a {
+        return Err(CliError(format!(
+            "{}: verdict block markers out of order",
+            path.display()
+        )));
+    }
+    let block = format!(
+        "{open}\n{}.\n{close}",
+        crate::report::markdown::counts_line(results)
+    );
+    let new = format!("{}{}{}", &text[..a], block, &text[b + close.len()..]);
+    if new != text {
+        std::fs::write(path, new).map_err(|e| CliError(format!("{}: {e}", path.display())))?;
+    }
+    Ok(())
+}
+
+/// Runs `eulertop report`.
+pub fn run(args: Args) -> Result<i32, CliError> {
+    let bits = parse_bits(&args.bits)?;
+    let cat = load(&args.catalogue)?;
+    let dir = Path::new(&args.catalogue);
+    let macros = match std::fs::read_to_string(dir.join("paper-macros.tex")) {
+        Ok(t) => parse_newcommands(&t),
+        Err(_) => BTreeMap::new(),
+    };
+    let conventions = read_conventions(dir)?;
+    let opts = Options {
+        bits: bits.clone(),
+        exact: true,
+    };
+    let bar = if std::io::stderr().is_terminal() {
+        let b = indicatif::ProgressBar::new(cat.claims.len() as u64);
+        b.set_style(
+            indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} claims {elapsed}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        Some(b)
+    } else {
+        None
+    };
+    let done = |_: &ClaimResult| {
+        if let Some(b) = &bar {
+            b.inc(1);
+        }
+    };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(args.jobs.unwrap_or(0))
+        .build()
+        .map_err(|e| CliError(format!("cannot start worker threads: {e}")))?;
+    let results = pool.install(|| verify(&cat, &opts, &|_| true, &done));
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    let sections = cat
+        .sections
+        .iter()
+        .map(|(file, number, title)| Section {
+            stem: Path::new(file)
+                .file_stem()
+                .and_then(|s| s.to_str())
+                .unwrap_or(file)
+                .to_string(),
+            number: number.clone(),
+            title: title.clone(),
+        })
+        .collect();
+    let command = if args.bits == "53,128,256,512,1024" {
+        "eulertop report".to_string()
+    } else {
+        format!("eulertop report --bits {}", args.bits)
+    };
+    let input = ReportInput {
+        sections,
+        results: &results,
+        conventions,
+        macros,
+        bits,
+        command,
+    };
+    let out = Path::new(&args.out);
+    let written = write_reports(&input, out)
+        .map_err(|e| CliError(format!("cannot write reports to {}: {e}", out.display())))?;
+    crate::report::model_figures::write_all(&out.join("figures"))
+        .map_err(|e| CliError(format!("cannot write figures: {e}")))?;
+    if !args.readme.is_empty() {
+        update_readme(Path::new(&args.readme), &results)?;
+    }
+    eprintln!(
+        "wrote {} files to {}; {}",
+        written.len(),
+        out.display(),
+        crate::report::markdown::counts_line(&results)
+    );
+    Ok(0)
+}
