@@ -713,7 +713,27 @@ fn counterexample<P>(
 pub fn run_claim(cat: &Catalogue, claim: &Claim, opts: &Options) -> ClaimResult {
     let mut res = base_result(claim);
     let bits: Vec<u32> = opts.bits.clone();
-    let outcome = run_body(cat, claim, opts, &bits, &mut res);
+    // A panic in another layer (a bug there) must not take the whole run down: it makes
+    // this claim inconclusive with the panic message as the reason.
+    let mut scratch = res.clone();
+    let caught = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        let o = run_body(cat, claim, opts, &bits, &mut scratch);
+        (o, scratch)
+    }));
+    let outcome = match caught {
+        Ok((o, r)) => {
+            res = r;
+            o
+        }
+        Err(p) => {
+            let msg = p
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| p.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown panic".into());
+            Err(format!("internal error (panic) while evaluating: {msg}"))
+        }
+    };
     if let Err(m) = outcome {
         res.verdict = Verdict::Inconclusive;
         res.reason = m;
