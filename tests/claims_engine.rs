@@ -341,3 +341,30 @@ fn model_functions_register_without_clashes() {
         .unwrap();
     assert!(v.magnitude() < 1e-15);
 }
+
+struct Boom;
+impl eulertop::claims::registry::GenericFunction for Boom {
+    fn call<R: eulertop::numbers::Real + eulertop::claims::backend::Num>(
+        &self,
+        _a: &[Value<R>],
+    ) -> Result<Value<R>, String> {
+        panic!("boom from another layer")
+    }
+}
+
+#[test]
+fn a_panicking_registered_function_gives_inconclusive_not_a_crash() {
+    let mut reg = Registry::new();
+    reg.register("boom", 1, "panics", Boom).unwrap();
+    assert!(reg.register("sin", 1, "clash", Boom).is_err());
+    let src = claim("kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(0, 1)\"]]\nlhs = \"boom(x)\"\nrhs = \"x\"");
+    let cat = load_sources(&[("t.toml".into(), src)], reg).unwrap();
+    let r = run_claim(&cat, &cat.claims[0], &Options::default());
+    assert_eq!(r.verdict, Verdict::Inconclusive);
+    assert!(
+        r.reason.contains("panic") && r.reason.contains("boom from another layer"),
+        "{}",
+        r.reason
+    );
+    assert!(!r.as_expected);
+}
