@@ -187,3 +187,28 @@ fn eval_and_audit() {
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
 }
+
+#[test]
+fn coverage_lists_all_96_paper_labels() {
+    let dir = temp_catalogue("cov", TWO);
+    let out = bin()
+        .args([
+            "verify",
+            "--format",
+            "json",
+            "--coverage",
+            "--bits",
+            "53",
+            "--catalogue",
+        ])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let rows = v["coverage"].as_array().unwrap();
+    assert_eq!(rows.len(), 96);
+    assert_eq!(rows[0]["label"], "ET");
+    assert!(rows
+        .iter()
+        .all(|r| r["claims"].as_array().unwrap().is_empty()));
+}

@@ -109,6 +109,20 @@ struct Summary {
 struct Report<'a> {
     claims: &'a [ClaimResult],
     summary: Summary,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    coverage: Option<Vec<CoverageRow>>,
+}
+
+#[derive(Serialize)]
+struct CoverageRow {
+    label: String,
+    claims: Vec<CoverageEntry>,
+}
+
+#[derive(Serialize)]
+struct CoverageEntry {
+    id: String,
+    verdict: Verdict,
 }
 
 fn summary(results: &[ClaimResult], bits: &[u32]) -> Summary {
@@ -201,17 +215,30 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     let sum = summary(&results, &bits);
     let code = i32::from(!sum.unexpected.is_empty());
     if args.format == "json" {
+        let coverage = args.coverage.then(|| {
+            coverage_table(&paper_labels(), &results)
+                .into_iter()
+                .map(|(label, ids)| CoverageRow {
+                    label,
+                    claims: ids
+                        .into_iter()
+                        .map(|(id, verdict)| CoverageEntry { id, verdict })
+                        .collect(),
+                })
+                .collect()
+        });
         let rep = Report {
             claims: &results,
             summary: sum,
+            coverage,
         };
         let s = serde_json::to_string_pretty(&rep).map_err(|e| CliError(e.to_string()))?;
         println!("{s}");
     } else {
         print_text(&results, &bits, &sum);
-    }
-    if args.coverage {
-        print_coverage(&results);
+        if args.coverage {
+            print_coverage(&results);
+        }
     }
     Ok(code)
 }
