@@ -54,6 +54,12 @@ pub trait Num: Scalar + PartialOrd {
     /// Converts a literal as written (`0.1` is exactly 1/10 for rationals, correctly
     /// rounded at the working precision otherwise).
     fn lit(&self, s: &str) -> Result<Self, String> {
+        // integers (the common case) exactly, without a string conversion
+        if s.len() <= 15 && s.bytes().all(|b| b.is_ascii_digit()) {
+            if let Ok(n) = s.parse::<i64>() {
+                return Ok(self.from_i64(n));
+            }
+        }
         self.parse_like(s).map_err(|e| e.to_string())
     }
     /// An elementary function.

@@ -280,7 +280,7 @@ pub struct Claim {
 }
 
 /// The whole catalogue.
-#[derive(Clone)]
+#[derive(Clone, Debug)]
 pub struct Catalogue {
     /// Claims in file order (files sorted by name).
     pub claims: Vec<Claim>,

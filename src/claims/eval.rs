@@ -10,6 +10,9 @@ use super::builtins;
 use super::registry::{Registry, UserFn};
 use super::value::{Cx, Value};
 use crate::numbers::Dual;
+use std::any::Any;
+use std::cell::RefCell;
+use std::collections::HashMap;
 use std::rc::Rc;
 use std::sync::Arc;
 
@@ -39,6 +42,17 @@ struct Bind<T> {
     def: Option<Rc<Expr>>,
 }
 
+/// Cache of lifted dual scopes for `d()`, keyed by (variable position, component,
+/// recomputed bindings); cleared whenever the scope changes, empty in clones.
+#[derive(Default)]
+struct DCache(RefCell<HashMap<String, Rc<dyn Any>>>);
+
+impl Clone for DCache {
+    fn clone(&self) -> Self {
+        DCache::default()
+    }
+}
+
 /// Evaluates expressions over the backend `T`.
 #[derive(Clone)]
 pub struct Evaluator<'r, T> {
@@ -47,6 +61,7 @@ pub struct Evaluator<'r, T> {
     scope: Vec<Bind<T>>,
     local_fns: Vec<Arc<UserFn>>,
     depth: usize,
+    dcache: DCache,
 }
 
 const MAX_CALL_DEPTH: usize = 64;
@@ -60,6 +75,7 @@ impl<'r, T: Num> Evaluator<'r, T> {
             scope: Vec::new(),
             local_fns: Vec::new(),
             depth: 0,
+            dcache: DCache::default(),
         }
     }
     /// A scalar with the working precision.
@@ -72,6 +88,7 @@ impl<'r, T: Num> Evaluator<'r, T> {
     }
     /// Binds a variable (e.g. a sampled input).
     pub fn bind(&mut self, name: &str, value: Value<T>) {
+        self.dcache.0.borrow_mut().clear();
         self.scope.push(Bind {
             name: name.to_string(),
             value,
@@ -91,6 +108,7 @@ impl<'r, T: Num> Evaluator<'r, T> {
             message: format!("in '{}': {}", b.name, e.message),
             span: e.span,
         })?;
+        self.dcache.0.borrow_mut().clear();
         self.scope.push(Bind {
             name: b.name.clone(),
             value: v,
@@ -204,6 +222,7 @@ impl<'r, T: Num> Evaluator<'r, T> {
                         value: Value::Real(self.like.from_i64(k)),
                         def: None,
                     });
+                    inner.dcache.0.borrow_mut().clear();
                     let t = inner.eval(body)?;
                     inner.scope.pop();
                     acc = wrap(if *product { acc.mul(&t) } else { acc.add(&t) })?;
@@ -348,6 +367,7 @@ impl<'r, T: Num> Evaluator<'r, T> {
             scope: Vec::new(),
             local_fns: Vec::new(),
             depth: self.depth + 1,
+            dcache: DCache::default(),
         };
         for (p, v) in f.params.iter().zip(vals) {
             inner.bind(p, v.clone());
@@ -436,30 +456,73 @@ where
         scope: Vec::new(),
         local_fns: ev.local_fns.clone(),
         depth: ev.depth,
+        dcache: DCache::default(),
     };
-    for (j, b) in ev.scope.iter().enumerate() {
-        let value = if j == pos {
-            seed(&b.value, comp).map_err(|m| EvalError {
-                message: m,
-                span: None,
-            })?
-        } else if j > pos && b.def.is_some() {
-            let d = b.def.as_ref().map(|d| d.as_ref().clone());
-            match d {
-                Some(d) => dev.eval(&d)?,
-                None => lift(&b.value),
-            }
-        } else {
-            lift(&b.value)
-        };
-        dev.scope.push(Bind {
-            name: b.name.clone(),
-            value,
-            def: b.def.clone(),
-        });
+    // Only bindings after `var` that the body needs (transitively) are recomputed.
+    let mut needed = std::collections::BTreeSet::new();
+    collect_names(body, &mut needed);
+    let mut recompute = vec![false; ev.scope.len()];
+    for j in (pos + 1..ev.scope.len()).rev() {
+        let b = &ev.scope[j];
+        if let (true, Some(d)) = (needed.contains(&b.name), &b.def) {
+            recompute[j] = true;
+            collect_names(d, &mut needed);
+        }
+    }
+    let key = format!(
+        "{pos}|{comp:?}|{}",
+        recompute
+            .iter()
+            .map(|&r| if r { '1' } else { '0' })
+            .collect::<String>()
+    );
+    let cached = ev
+        .dcache
+        .0
+        .borrow()
+        .get(&key)
+        .and_then(|c| c.clone().downcast::<Vec<Bind<Dual<T>>>>().ok());
+    if let Some(scope) = cached {
+        dev.scope = (*scope).clone();
+    } else {
+        for (j, b) in ev.scope.iter().enumerate() {
+            let value = if j == pos {
+                seed(&b.value, comp).map_err(|m| EvalError {
+                    message: m,
+                    span: None,
+                })?
+            } else if recompute[j] {
+                let d = b.def.as_ref().map(|d| d.as_ref().clone());
+                match d {
+                    Some(d) => dev.eval(&d)?,
+                    None => lift(&b.value),
+                }
+            } else {
+                lift(&b.value)
+            };
+            dev.scope.push(Bind {
+                name: b.name.clone(),
+                value,
+                def: b.def.clone(),
+            });
+        }
+        let stored: Rc<dyn Any> = Rc::new(dev.scope.clone());
+        ev.dcache.0.borrow_mut().insert(key, stored);
     }
     let out = dev.eval(body)?;
     Ok(out.map(&mut |x: &Dual<T>| x.d.clone()))
+}
+
+fn collect_names(e: &Expr, out: &mut std::collections::BTreeSet<String>) {
+    e.walk(&mut |x| match &x.kind {
+        ExprKind::Name(n) => {
+            out.insert(n.clone());
+        }
+        ExprKind::Deriv { var, .. } | ExprKind::Grad { var, .. } => {
+            out.insert(var.clone());
+        }
+        _ => {}
+    });
 }
 
 fn seed<T: Num>(v: &Value<T>, comp: Option<i64>) -> Result<Value<Dual<T>>, String>

@@ -81,6 +81,15 @@ pub struct Registry {
     user: BTreeMap<String, Arc<UserFn>>,
 }
 
+impl std::fmt::Debug for Registry {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Registry")
+            .field("registered", &self.ext.keys().collect::<Vec<_>>())
+            .field("defined", &self.user.keys().collect::<Vec<_>>())
+            .finish()
+    }
+}
+
 impl Registry {
     /// An empty table (built-ins are always available; they are not stored here).
     pub fn new() -> Self {

@@ -190,7 +190,8 @@ impl Default for Options {
 }
 
 /// Verifies the claims selected by `select`, in parallel, calling `done` as each finishes.
-/// Results are in catalogue order.
+/// Results are in catalogue order.  With the environment variable `EULERTOP_TIMING`
+/// set, per-claim wall times are printed on standard error.
 pub fn verify(
     cat: &Catalogue,
     opts: &Options,
@@ -198,10 +199,20 @@ pub fn verify(
     done: &(dyn Fn(&ClaimResult) + Sync),
 ) -> Vec<ClaimResult> {
     let chosen: Vec<&Claim> = cat.claims.iter().filter(|c| select(c)).collect();
+    // Opt-in per-claim timings on standard error (never part of the results).
+    let timing = std::env::var_os("EULERTOP_TIMING").is_some();
     chosen
         .par_iter()
         .map(|c| {
+            let t0 = std::time::Instant::now();
             let r = run_claim(cat, c, opts);
+            if timing {
+                eprintln!(
+                    "timing {:8.1} ms  {}",
+                    t0.elapsed().as_secs_f64() * 1e3,
+                    c.id
+                );
+            }
             done(&r);
             r
         })
@@ -702,7 +713,27 @@ fn counterexample<P>(
 pub fn run_claim(cat: &Catalogue, claim: &Claim, opts: &Options) -> ClaimResult {
     let mut res = base_result(claim);
     let bits: Vec<u32> = opts.bits.clone();
-    let outcome = run_body(cat, claim, opts, &bits, &mut res);
+    // A panic in another layer (a bug there) must not take the whole run down: it makes
+    // this claim inconclusive with the panic message as the reason.
+    let mut scratch = res.clone();
+    let caught = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        let o = run_body(cat, claim, opts, &bits, &mut scratch);
+        (o, scratch)
+    }));
+    let outcome = match caught {
+        Ok((o, r)) => {
+            res = r;
+            o
+        }
+        Err(p) => {
+            let msg = p
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| p.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown panic".into());
+            Err(format!("internal error (panic) while evaluating: {msg}"))
+        }
+    };
     if let Err(m) = outcome {
         res.verdict = Verdict::Inconclusive;
         res.reason = m;
@@ -876,7 +907,6 @@ fn run_body(
         } => {
             let mut sampler = Sampler::new(cat, claim, 0)?;
             let mut start_sampler = Sampler::new(cat, claim, 3)?;
-            let reg = &cat.registry;
             let good = collect(
                 claim,
                 bits,
@@ -886,10 +916,13 @@ fn run_body(
                     // find an f64 solution from up to `tries` starts
                     let mut last = String::from("no start converged");
                     for _ in 0..*tries {
-                        let mut ev = Evaluator::new(reg, 0.0f64);
-                        for (n, v) in &p.vars {
-                            ev.bind(n, v.clone());
-                        }
+                        let ev = match setup(cat, claim, &p, 0.0f64) {
+                            Ok(ev) => ev,
+                            Err(m) => {
+                                last = m;
+                                continue;
+                            }
+                        };
                         let st: Result<Vec<f64>, String> = start
                             .iter()
                             .map(|s| start_sampler.eval_sampling(&s.expr, &ev)?.as_real())

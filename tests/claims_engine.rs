@@ -1,0 +1,370 @@
+//! Tests of the claim engine: parser errors with positions, no panics on arbitrary
+//! input, evaluator properties, and the verdict engine on identities whose truth is
+//! known mathematically.
+
+use eulertop::claims::catalogue::{load_sources, Catalogue};
+use eulertop::claims::eval::Evaluator;
+use eulertop::claims::parser::{parse_bindings, parse_expr};
+use eulertop::claims::registry::Registry;
+use eulertop::claims::value::Value;
+use eulertop::claims::verdict::{run_claim, Options, Verdict};
+use eulertop::numbers::Rational;
+use proptest::prelude::*;
+
+fn load(src: &str) -> Result<Catalogue, String> {
+    load_sources(&[("t.toml".to_string(), src.to_string())], Registry::new())
+        .map_err(|e| e.to_string())
+}
+
+fn claim(body: &str) -> String {
+    format!("[[claim]]\nid = \"c\"\nlocation = \"test\"\nprinted = 'x'\n{body}\n")
+}
+
+fn verdict_of(src: &str, bits: &[u32]) -> eulertop::claims::verdict::ClaimResult {
+    let cat = load(src).unwrap_or_else(|e| panic!("load failed: {e}"));
+    let opts = Options {
+        bits: bits.to_vec(),
+        exact: true,
+    };
+    run_claim(&cat, &cat.claims[0], &opts)
+}
+
+const LADDER: [u32; 4] = [53, 128, 256, 512];
+
+// ---------- parser and loader errors ----------
+
+#[test]
+fn syntax_error_has_file_line_column_and_underline() {
+    let src = claim("kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(0, 1)\"]]\nlhs = \"x + * 2\"\nrhs = \"x\"");
+    let err = load(&src).unwrap_err();
+    // line 8 is `lhs = "x + * 2"`; the '*' is at column 12
+    assert!(err.starts_with("t.toml:8:12: syntax error"), "{err}");
+    let lines: Vec<&str> = err.lines().collect();
+    assert_eq!(lines[1].trim(), "lhs = \"x + * 2\"");
+    let caret = lines[2].find('^').unwrap();
+    let star = lines[1].find('*').unwrap();
+    assert_eq!(caret, star, "{err}");
+}
+
+#[test]
+fn multiline_let_error_points_into_the_block() {
+    let src = claim("kind = \"identity\"\nexpect = \"holds\"\nlet = '''\na = 1\nb = 2 + * 3\n'''\nlhs = \"a\"\nrhs = \"a\"");
+    let err = load(&src).unwrap_err();
+    assert!(err.starts_with("t.toml:9:9: syntax error"), "{err}");
+}
+
+#[test]
+fn unknown_field_function_kind_and_duplicates_are_errors() {
+    let e = load(&claim(
+        "kind = \"identity\"\nexpect = \"holds\"\nlhs = \"1\"\nrhs = \"1\"\nsampels = 3",
+    ))
+    .unwrap_err();
+    assert!(e.starts_with("t.toml:") && e.contains("sampels"), "{e}");
+    let e = load(&claim(
+        "kind = \"identity\"\nexpect = \"holds\"\nlhs = \"frob(1)\"\nrhs = \"1\"",
+    ))
+    .unwrap_err();
+    assert!(
+        e.contains("unknown function 'frob'") && e.starts_with("t.toml:7:8"),
+        "{e}"
+    );
+    let e = load(&claim("kind = \"identiy\"\nexpect = \"holds\"")).unwrap_err();
+    assert!(
+        e.contains("unknown kind 'identiy'") && e.starts_with("t.toml:5:"),
+        "{e}"
+    );
+    let twice = format!(
+        "{}{}",
+        claim("kind = \"identity\"\nexpect = \"holds\"\nlhs = \"1\"\nrhs = \"1\""),
+        claim("kind = \"identity\"\nexpect = \"holds\"\nlhs = \"1\"\nrhs = \"1\"")
+    );
+    let e = load(&twice).unwrap_err();
+    assert!(e.contains("duplicate claim id 'c'"), "{e}");
+    let e = load("[[claim]]\nid = \"x\"\nkind = \"identity\"").unwrap_err();
+    assert!(e.contains("missing required field"), "{e}");
+    let e = load("this is not toml").unwrap_err();
+    assert!(e.starts_with("t.toml:1:"), "{e}");
+}
+
+#[test]
+fn parser_basics() {
+    assert!(parse_expr("if a < b then [1, 2, 3] else vec(1, 2, 3)").is_ok());
+    assert!(parse_expr("sum(k, 1, 3, k^2)").is_ok());
+    assert!(parse_expr("sum(1, 1, 3, k)").is_err());
+    assert!(parse_expr("d(x^2)").is_err());
+    assert!(parse_expr("1.2.3").is_err());
+    assert!(parse_expr("2x").is_err());
+    assert!(parse_expr("(((1").is_err());
+    assert!(parse_bindings("f(x, y) = x*y\n# comment\ng = f(1,\n 2)\n").map(|b| b.len()) == Ok(2));
+}
+
+proptest! {
+    #[test]
+    fn parser_never_panics(s in "\\PC{0,60}") {
+        let _ = parse_expr(&s);
+        let _ = parse_bindings(&s);
+    }
+
+    #[test]
+    fn parser_never_panics_on_language_soup(parts in proptest::collection::vec(
+        prop_oneof![Just("("), Just(")"), Just("["), Just("]"), Just(","), Just("+"), Just("-"),
+                    Just("*"), Just("^"), Just("x"), Just("1.5"), Just("sin"), Just("if"),
+                    Just("then"), Just("else"), Just("sum"), Just("d"), Just("\n"), Just("#"),
+                    Just("<="), Just("and"), Just("not"), Just("e"), Just("3e")], 0..40)) {
+        let s: String = parts.concat();
+        let _ = parse_expr(&s);
+        let _ = parse_bindings(&s);
+    }
+
+    #[test]
+    fn loader_never_panics(s in "\\PC{0,200}") {
+        let _ = load(&s);
+        let _ = load(&format!("{}{s}", claim("kind = \"identity\"\nexpect = \"holds\"\nlhs = ")));
+    }
+
+    #[test]
+    fn evaluator_is_consistent_across_backends(x in -10.0f64..10.0, y in -10.0f64..10.0) {
+        let reg = Registry::new();
+        // exact: a polynomial identity is exactly zero over the rationals
+        let q = Rational::from_float(x).unwrap();
+        let mut ev = Evaluator::new(&reg, q.clone());
+        ev.bind("x", Value::Real(q));
+        ev.bind("y", Value::Real(Rational::from_float(y).unwrap()));
+        let e = parse_expr("(x + y)^3 - x^3 - 3*x^2*y - 3*x*y^2 - y^3").unwrap();
+        prop_assert_eq!(ev.eval(&e).unwrap(), Value::Real(Rational::from_integer(0.into())));
+        // f64 and 256-bit MPFR agree on a smooth expression to f64 accuracy
+        let f = parse_expr("sin(x) * exp(y / 10) + atan2(y, x)").unwrap();
+        let mut e64 = Evaluator::new(&reg, 0.0f64);
+        e64.bind("x", Value::Real(x));
+        e64.bind("y", Value::Real(y));
+        let v64 = e64.eval(&f).unwrap().as_real().unwrap();
+        let like = rug::Float::new(256);
+        let mut emp = Evaluator::new(&reg, like.clone());
+        emp.bind("x", Value::Real(rug::Float::with_val(256, x)));
+        emp.bind("y", Value::Real(rug::Float::with_val(256, y)));
+        let vmp = emp.eval(&f).unwrap().as_real().unwrap().to_f64();
+        prop_assert!((v64 - vmp).abs() <= 1e-14 * (1.0 + vmp.abs()));
+        // derivatives by duals: d(x^3 sin x, x) = 3x^2 sin x + x^3 cos x
+        let d = parse_expr("d(x^3 * sin(x), x)").unwrap();
+        let dv = e64.eval(&d).unwrap().as_real().unwrap();
+        let want = 3.0 * x * x * x.sin() + x * x * x * x.cos();
+        prop_assert!((dv - want).abs() <= 1e-12 * (1.0 + want.abs()));
+    }
+}
+
+#[test]
+fn evaluator_types_and_errors() {
+    let reg = Registry::new();
+    let ev = Evaluator::new(&reg, 0.0f64);
+    let ok = |s: &str| ev.eval(&parse_expr(s).unwrap()).unwrap();
+    let err = |s: &str| ev.eval(&parse_expr(s).unwrap()).unwrap_err().message;
+    assert_eq!(
+        ok("cross(vec(1,0,0), vec(0,1,0))"),
+        Value::Vec3([0.0, 0.0, 1.0])
+    );
+    assert_eq!(ok("det([[2,0,0],[0,3,0],[0,0,4]])"), Value::Real(24.0));
+    // σ1 σ2 = i σ3
+    let z = ok("pauli(1) * pauli(2) - i * pauli(3)");
+    assert!(z.magnitude() == 0.0);
+    assert_eq!(ok("sum(k, 1, 4, k^2)"), Value::Real(30.0));
+    assert_eq!(ok("[1,2,3][2]"), Value::Real(2.0));
+    assert!(err("sqrt(-1)").contains("negative"));
+    assert!(err("1/0").contains("division by zero"));
+    assert!(err("vec(1,2,3) * vec(1,2,3)").contains("dot/cross"));
+    assert!(err("[1,2,3][4]").contains("out of range"));
+    assert!(err("nosuch").contains("unknown variable"));
+    assert!(err("sn(1, 1.5)").contains("modulus"));
+    // complex sqrt is principal
+    assert_eq!(ok("sqrt(cplx(-4, 0))"), ok("2*i"));
+}
+
+// ---------- verdicts on identities of known truth ----------
+
+#[test]
+fn true_identity_holds_with_small_loss() {
+    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(-3, 3)\"]]\nlhs = \"sin(x)^2 + cos(x)^2\"\nrhs = \"1\""), &LADDER);
+    assert_eq!(r.verdict, Verdict::Holds, "{}", r.reason);
+    assert!(r.loss_bits.unwrap() <= 8.0);
+    assert_eq!(r.residuals.len(), 4);
+    assert_eq!(r.samples, 8);
+    assert!(r.as_expected);
+}
+
+#[test]
+fn false_identity_is_refuted_with_counterexample() {
+    // sin² + cos² = 1 + x²/1000 is false for every x ≠ 0 (x ≥ 1/2 here)
+    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"refuted\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\nlhs = \"sin(x)^2 + cos(x)^2\"\nrhs = \"1 + x^2/1000\""), &LADDER);
+    assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
+    let c = r.counterexample.expect("counterexample");
+    assert_eq!(c.point[0].name, "x");
+    let x: f64 = c.point[0].value.parse().unwrap();
+    assert!((0.5..=1.0).contains(&x));
+    let rhs: f64 = c.rhs.parse().unwrap();
+    assert!((rhs - (1.0 + x * x / 1000.0)).abs() < 1e-15);
+}
+
+#[test]
+fn tiny_discrepancy_is_inconclusive_not_holds() {
+    // a constant 2^-80 discrepancy: invisible at 53 bits, visible from 128 bits on, but
+    // below the refutation floor 2^-30: honestly inconclusive
+    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"inconclusive\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\nlhs = \"x\"\nrhs = \"x + 2^-80\""), &LADDER);
+    assert_eq!(r.verdict, Verdict::Inconclusive, "{}", r.reason);
+    assert!(r.loss_bits.unwrap() > 24.0);
+}
+
+#[test]
+fn exact_proof_reports_schwartz_zippel() {
+    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"uniform(-2, 2)\"], [\"b\", \"uniform(-2, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + 2*a*b + b^2\"\nexact = true\ndegree = 2\nexact_samples = 3"), &LADDER);
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+    let ex = r.exact.unwrap();
+    assert_eq!(ex.points, 3);
+    assert_eq!(ex.set_size, Some((1 << 24) + 1));
+    let want = 2.0 / ((1u64 << 24) + 1) as f64;
+    assert!((ex.per_point_bound.unwrap() - want).abs() < 1e-20);
+    assert!((ex.overall_bound.unwrap() - want.powi(3)).abs() < 1e-30);
+}
+
+#[test]
+fn exact_false_identity_refuted_exactly() {
+    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"refuted\"\nvars = [[\"a\", \"uniform(1, 2)\"], [\"b\", \"uniform(1, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + b^2\"\nexact = true\ndegree = 2"), &LADDER);
+    assert_eq!(r.verdict, Verdict::Refuted);
+    assert_eq!(r.counterexample.unwrap().bits, 0, "exact counterexample");
+    // normal() gives no Schwartz–Zippel bound: not proved, only holds
+    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"a\", \"normal()\"]]\nlhs = \"(a + 1)^2\"\nrhs = \"a^2 + 2*a + 1\"\nexact = true\ndegree = 2"), &LADDER);
+    assert_eq!(r.verdict, Verdict::Holds);
+    assert_eq!(r.exact.unwrap().set_size, None);
+}
+
+#[test]
+fn unevaluable_samples_are_reported_not_counted() {
+    // sqrt(x) fails for x < 0 (about half the draws): failures are listed and replaced
+    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"holds\"\nsamples = 20\nvars = [[\"x\", \"uniform(-1, 3)\"]]\nlhs = \"sqrt(x)^2\"\nrhs = \"x\""), &[53, 128]);
+    assert_eq!(r.verdict, Verdict::Holds);
+    assert_eq!(r.samples, 20);
+    assert!(!r.failures.is_empty() && r.failures.len() < 20);
+    assert!(r
+        .failures
+        .iter()
+        .all(|f| f.message.contains("sqrt of negative")));
+    // when every sample fails the claim is inconclusive
+    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"inconclusive\"\nvars = [[\"x\", \"uniform(-3, -1)\"]]\nlhs = \"sqrt(x)\"\nrhs = \"x\""), &[53]);
+    assert_eq!(r.verdict, Verdict::Inconclusive);
+    assert!(r.reason.contains("could not be evaluated"));
+}
+
+#[test]
+fn thin_domain_is_a_clear_inconclusive() {
+    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"inconclusive\"\nvars = [[\"x\", \"uniform(0, 1)\"]]\nwhere = [\"x > 2\"]\nlhs = \"x\"\nrhs = \"x\""), &[53]);
+    assert_eq!(r.verdict, Verdict::Inconclusive);
+    assert!(
+        r.reason.contains("domain too thin") && r.reason.contains("x > 2"),
+        "{}",
+        r.reason
+    );
+}
+
+#[test]
+fn asymptotic_slopes() {
+    // sin h − h = −h³/6 + O(h⁵): order 3 holds, order 4 is refuted
+    let base = "kind = \"asymptotic\"\nvars = [[\"x\", \"uniform(1, 2)\"]]\nexpr = \"x * (sin(h) - h)\"\nvar = \"h\"\nh0 = 0.05\nsteps = 5\n";
+    let r = verdict_of(
+        &claim(&format!("{base}expect = \"holds\"\norder = 3")),
+        &LADDER,
+    );
+    assert_eq!(r.verdict, Verdict::Holds, "{}", r.reason);
+    assert!((r.residuals[3].residual - 3.0).abs() < 0.01);
+    let r = verdict_of(
+        &claim(&format!("{base}expect = \"refuted\"\norder = 4")),
+        &LADDER,
+    );
+    assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
+}
+
+#[test]
+fn independence_existence_negation() {
+    let dom = "vars = [[\"k\", \"uniform(0.1, 0.9)\"], [\"u\", \"uniform(-2, 2)\"]]\n";
+    let r = verdict_of(&claim(&format!("kind = \"independence\"\nexpect = \"holds\"\n{dom}expr = \"sn(u, k)^2 + cn(u, k)^2\"\nwrt = \"u\"")), &LADDER);
+    assert_eq!(r.verdict, Verdict::Holds, "{}", r.reason);
+    let r = verdict_of(
+        &claim(&format!(
+            "kind = \"independence\"\nexpect = \"refuted\"\n{dom}expr = \"dn(u, k)\"\nwrt = \"u\""
+        )),
+        &LADDER,
+    );
+    assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
+    // x² = a has a positive root for a in [1, 4]
+    let r = verdict_of(&claim("kind = \"existence\"\nexpect = \"holds\"\nvars = [[\"a\", \"uniform(1, 4)\"]]\nunknowns = [\"x\"]\nequations = [\"x^2 - a\"]\nstart = [\"uniform(0.5, 3)\"]\nin = \"x > 0\""), &LADDER);
+    assert_eq!(r.verdict, Verdict::Holds, "{}", r.reason);
+    // x² = −a has no real root: Newton fails, inconclusive (never refuted)
+    let r = verdict_of(&claim("kind = \"existence\"\nexpect = \"inconclusive\"\nvars = [[\"a\", \"uniform(1, 4)\"]]\nunknowns = [\"x\"]\nequations = [\"x^2 + a\"]\nstart = [\"uniform(0.5, 3)\"]"), &[53, 128]);
+    assert_eq!(r.verdict, Verdict::Inconclusive);
+    // negation of a false identity holds, with the inner counterexample as evidence
+    let r = verdict_of(&claim("kind = \"negation\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\n[claim.inner]\nkind = \"identity\"\nlhs = \"sin(2*x)\"\nrhs = \"2*sin(x)\""), &LADDER);
+    assert_eq!(r.verdict, Verdict::Holds, "{}", r.reason);
+    assert!(r.counterexample.is_some());
+}
+
+#[test]
+fn definitions_are_global_and_deterministic() {
+    let src = format!(
+        "{}[[claim]]\nid = \"d\"\nlocation = \"l\"\nprinted = 'p'\nkind = \"definition\"\ndefine = '''\nsq(x) = x * x\n'''\n",
+        claim("kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(-1, 1)\"]]\nlhs = \"sq(x + 1)\"\nrhs = \"x^2 + 2*x + 1\"")
+    );
+    let a = verdict_of(&src, &LADDER);
+    let b = verdict_of(&src, &LADDER);
+    assert_eq!(a.verdict, Verdict::Holds, "{}", a.reason);
+    assert_eq!(
+        serde_json::to_string(&a).unwrap(),
+        serde_json::to_string(&b).unwrap()
+    );
+}
+
+#[test]
+fn model_functions_register_without_clashes() {
+    let reg = eulertop::cli::verify::catalogue_registry();
+    let names: Vec<String> = reg.registered().into_iter().map(|(n, _, _)| n).collect();
+    for n in [
+        "Omega",
+        "step_gamma1",
+        "step_vm",
+        "ell_coords",
+        "ell_inverse",
+        "delta_vm",
+        "w",
+    ] {
+        assert!(names.iter().any(|m| m == n), "{n} not registered");
+    }
+    // E(M) from the registry equals the definition
+    let ev = Evaluator::new(&reg, 0.0f64);
+    let v = ev
+        .eval(&parse_expr("energy(vec(1, 2, 3), 3, 2, 1) - (1/3 + 4/2 + 9/1)").unwrap())
+        .unwrap();
+    assert!(v.magnitude() < 1e-15);
+}
+
+struct Boom;
+impl eulertop::claims::registry::GenericFunction for Boom {
+    fn call<R: eulertop::numbers::Real + eulertop::claims::backend::Num>(
+        &self,
+        _a: &[Value<R>],
+    ) -> Result<Value<R>, String> {
+        panic!("boom from another layer")
+    }
+}
+
+#[test]
+fn a_panicking_registered_function_gives_inconclusive_not_a_crash() {
+    let mut reg = Registry::new();
+    reg.register("boom", 1, "panics", Boom).unwrap();
+    assert!(reg.register("sin", 1, "clash", Boom).is_err());
+    let src = claim("kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(0, 1)\"]]\nlhs = \"boom(x)\"\nrhs = \"x\"");
+    let cat = load_sources(&[("t.toml".into(), src)], reg).unwrap();
+    let r = run_claim(&cat, &cat.claims[0], &Options::default());
+    assert_eq!(r.verdict, Verdict::Inconclusive);
+    assert!(
+        r.reason.contains("panic") && r.reason.contains("boom from another layer"),
+        "{}",
+        r.reason
+    );
+    assert!(!r.as_expected);
+}

@@ -1,0 +1,189 @@
+//! Command-line tests of `eulertop verify`, `audit` and `eval`: exit statuses, JSON
+//! shape, error positions, determinism.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_eulertop"))
+}
+
+fn temp_catalogue(name: &str, text: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("eulertop-claims-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("t.toml"), text).unwrap();
+    dir
+}
+
+const TWO: &str = r#"
+[[claim]]
+id = "true.one"
+location = "test"
+printed = 'x'
+kind = "identity"
+expect = "holds"
+vars = [["x", "uniform(-1, 1)"]]
+lhs = "cosh(x)^2 - sinh(x)^2"
+rhs = "1"
+
+[[claim]]
+id = "false.one"
+location = "test"
+printed = 'x'
+kind = "identity"
+expect = "holds"
+vars = [["x", "uniform(0.5, 1)"]]
+lhs = "exp(2*x)"
+rhs = "2*exp(x)"
+"#;
+
+#[test]
+fn verify_exit_status_and_json() {
+    let dir = temp_catalogue("two", TWO);
+    let out = bin()
+        .args([
+            "verify",
+            "--format",
+            "json",
+            "--bits",
+            "53,128",
+            "--catalogue",
+        ])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1), "a verdict differs from expect");
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let claims = v["claims"].as_array().unwrap();
+    assert_eq!(claims.len(), 2);
+    for f in [
+        "id",
+        "labels",
+        "location",
+        "kind",
+        "form",
+        "expect",
+        "verdict",
+        "residuals",
+        "samples",
+        "loss_bits",
+    ] {
+        assert!(claims[0].get(f).is_some(), "field {f}");
+    }
+    assert_eq!(claims[0]["verdict"], "holds");
+    assert_eq!(claims[1]["verdict"], "refuted");
+    assert_eq!(claims[0]["residuals"][1]["bits"], 128);
+    assert!(claims[1]["counterexample"]["point"][0]["name"] == "x");
+    assert_eq!(v["summary"]["unexpected"][0], "false.one");
+    // only the true claim: exit 0
+    let out = bin()
+        .args([
+            "verify",
+            "--only",
+            "true.*",
+            "--bits",
+            "53,128",
+            "--catalogue",
+        ])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("true.one") && !text.contains("false.one"));
+}
+
+#[test]
+fn verify_output_is_deterministic_across_thread_counts() {
+    let dir = temp_catalogue("det", TWO);
+    let run = |jobs: &str| {
+        bin()
+            .args([
+                "verify",
+                "--format",
+                "json",
+                "--bits",
+                "53,256",
+                "--jobs",
+                jobs,
+                "--catalogue",
+            ])
+            .arg(&dir)
+            .output()
+            .unwrap()
+            .stdout
+    };
+    let a = run("1");
+    assert!(!a.is_empty());
+    assert_eq!(a, run("2"));
+    assert_eq!(a, run("2"));
+}
+
+#[test]
+fn bad_input_exits_2_with_position() {
+    let dir = temp_catalogue(
+        "bad",
+        &TWO.replace("lhs = \"exp(2*x)\"", "lhs = \"exp(2*x))\""),
+    );
+    let out = bin()
+        .args(["verify", "--catalogue"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.contains("t.toml:19:16: syntax error") && err.contains('^'),
+        "{err}"
+    );
+    let out = bin().args(["verify", "--bits", "53,abc"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let out = bin()
+        .args(["verify", "--catalogue", "/nonexistent/dir"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let out = bin().args(["eval", "1 +"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let out = bin().args(["eval", "x", "--set", "x"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn eval_and_audit() {
+    let out = bin().args(["eval", "K(0) * 2 / pi"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let v: f64 = String::from_utf8(out.stdout)
+        .unwrap()
+        .trim()
+        .parse()
+        .unwrap();
+    assert!((v - 1.0).abs() < 1e-15);
+    let out = bin()
+        .args(["eval", "sqrt(x) - 2", "--set", "x=4", "--bits", "300"])
+        .output()
+        .unwrap();
+    let s = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(s.trim(), "0");
+    let dir = temp_catalogue("audit", TWO);
+    let out = bin()
+        .args(["audit", "true.one", "--bits", "64,256,1024", "--catalogue"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let s = String::from_utf8(out.stdout).unwrap();
+    let slope: f64 = s
+        .lines()
+        .find_map(|l| l.strip_prefix("fitted slope: "))
+        .and_then(|l| l.split_whitespace().next())
+        .and_then(|x| x.parse().ok())
+        .unwrap();
+    assert!((slope - 1.0).abs() < 0.05, "{s}");
+    let out = bin()
+        .args(["audit", "nope", "--catalogue"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+}
