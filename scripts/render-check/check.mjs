@@ -27,7 +27,7 @@ for (const page of pages) {
     };
   });
   const bad = r.imgs.filter(i => !i.ok);
-  const ok = r.rawDisplay === 0 && r.rawInline === 0 && r.katexErrors.length === 0 && bad.length === 0 && r.katex > 0;
+  const ok = r.rawDisplay === 0 && r.rawInline === 0 && r.katexErrors.length === 0 && bad.length === 0;
   console.log(`${ok ? 'ok  ' : 'FAIL'} ${page}: ${r.katex} formulas typeset, ${r.katexErrors.length} KaTeX errors, ` +
               `${r.rawDisplay} raw $$, ${r.imgs.length - bad.length}/${r.imgs.length} images loaded`);
   for (const e of r.katexErrors) console.log(`     KaTeX error: ${e}`);

@@ -308,7 +308,7 @@ pub fn section_file(input: &ReportInput, sec: &Section, claims: &[&ClaimResult])
         "![Residual against precision](figures/residuals-{}.svg)\n",
         sec.stem
     );
-    let _ = writeln!(s, "*Residual against working precision, one line per claim: true identities follow the dashed line 2^−p; refuted ones level off. Exact zeros are drawn at the bottom edge.*\n");
+    let _ = writeln!(s, "*Residual against working precision, one line per claim: true identities (blue) follow the black line 2^−p; refuted ones (red) level off. Exact zeros are drawn at the bottom edge.*\n");
     for r in claims {
         s.push_str(&claim_block(input, r));
         s.push_str("---\n\n");

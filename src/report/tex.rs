@@ -146,7 +146,12 @@ pub fn display_math(src: &str, macros: &BTreeMap<String, String>) -> String {
     while joined.contains("\\\\\n\\\\") {
         joined = joined.replace("\\\\\n\\\\", "\\\\");
     }
-    joined.trim().trim_end_matches('.').to_string()
+    let body = joined.trim().trim_end_matches('.').to_string();
+    // rows of an eqnarray printed without their environment: give them one
+    if body.contains('&') && !body.contains("\\begin{") {
+        return format!("\\begin{{array}}{{rcl}}\n{body}\n\\end{{array}}");
+    }
+    body
 }
 
 /// Is this printed text prose (a statement with inline `$…$`) rather than a formula?
@@ -235,6 +240,11 @@ mod tests {
         );
         assert!(d.starts_with("\\begin{array}{rcl}"));
         assert!(!d.contains("label") && !d.contains("nonumber"));
+    }
+    #[test]
+    fn bare_alignment_rows_get_an_array() {
+        let d = display_math("a & = & b", &m());
+        assert_eq!(d, "\\begin{array}{rcl}\na & = & b\n\\end{array}");
     }
     #[test]
     fn raisebox_is_stripped() {

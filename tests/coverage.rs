@@ -1,0 +1,94 @@
+//! Coverage: every `\label` of the paper, every numbered environment and the Corollary
+//! has at least one claim in the catalogue.  Labels are read from the paper when
+//! `../shared/paper/…tex` is present; the checked-in list `tests/data/paper_labels.txt`
+//! keeps the test meaningful without it (and is itself checked against the paper).
+
+use eulertop::claims::catalogue::{coverage, latex_labels, load_dir};
+use eulertop::cli::verify::catalogue_registry;
+use std::path::Path;
+
+const PAPER: &str = "../shared/paper/bobenko-lorbeer-suris-euler-top.tex";
+
+fn checked_in_labels() -> Vec<String> {
+    include_str!("data/paper_labels.txt")
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+        .map(str::to_string)
+        .collect()
+}
+
+/// The numbered environments, in order, with the Corollary.
+const ENVIRONMENTS: [&str; 13] = [
+    "Definition 1",
+    "Proposition 1",
+    "Proposition 2",
+    "Proposition 3",
+    "Proposition 4",
+    "Proposition 5",
+    "Proposition 6",
+    "Lemma 1",
+    "Lemma 2",
+    "Theorem 1",
+    "Theorem 2",
+    "Theorem 3",
+    "Corollary",
+];
+
+#[test]
+fn checked_in_label_list_matches_the_paper() {
+    let list = checked_in_labels();
+    assert_eq!(list.len(), 96, "the paper has 96 labels");
+    if let Ok(tex) = std::fs::read_to_string(PAPER) {
+        assert_eq!(
+            latex_labels(&tex),
+            list,
+            "tests/data/paper_labels.txt is stale"
+        );
+        // 12 numbered environments and one Corollary
+        for (env, n) in [
+            ("definition", 1),
+            ("proposition", 6),
+            ("lemma", 2),
+            ("theorem", 3),
+        ] {
+            assert_eq!(
+                tex.matches(&format!("\\begin{{{env}}}")).count(),
+                n,
+                "{env}"
+            );
+        }
+        assert_eq!(tex.matches("{\\bf Corollary.}").count(), 1);
+    }
+}
+
+#[test]
+fn every_label_and_environment_has_a_claim() {
+    let cat = match load_dir(Path::new("identities"), catalogue_registry()) {
+        Ok(c) => c,
+        Err(e) => panic!("catalogue does not load:\n{e}"),
+    };
+    let labels = match std::fs::read_to_string(PAPER) {
+        Ok(tex) => latex_labels(&tex),
+        Err(_) => checked_in_labels(),
+    };
+    let cov = coverage(&cat);
+    let missing: Vec<&String> = labels.iter().filter(|l| !cov.contains_key(*l)).collect();
+    assert!(missing.is_empty(), "labels without a claim: {missing:?}");
+    // no claim names a label the paper does not have (catches typos in `labels`)
+    let unknown: Vec<&String> = cov.keys().filter(|l| !labels.contains(l)).collect();
+    assert!(
+        unknown.is_empty(),
+        "claims name labels not in the paper: {unknown:?}"
+    );
+    for env in ENVIRONMENTS {
+        let found = cat.claims.iter().any(|c| {
+            c.location.match_indices(env).any(|(j, _)| {
+                !c.location[j + env.len()..]
+                    .chars()
+                    .next()
+                    .is_some_and(|ch| ch.is_ascii_digit())
+            })
+        });
+        assert!(found, "no claim for {env}");
+    }
+}
