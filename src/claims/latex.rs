@@ -195,3 +195,26 @@ pub fn binding_to_latex(b: &Binding) -> String {
     };
     format!("{head} = {}", to_latex(&b.body))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::claims::parser::parse_expr;
+    fn tex(s: &str) -> String {
+        to_latex(&parse_expr(s).unwrap())
+    }
+    #[test]
+    fn renders_common_forms() {
+        assert_eq!(tex("a/b + sqrt(x)^2"), "\\frac{a}{b} + \\sqrt{x}^{2}");
+        assert_eq!(tex("(a + b)*c"), "\\left(a + b\\right)\\,c");
+        assert_eq!(tex("a - (b - c)"), "a - \\left(b - c\\right)");
+        assert_eq!(tex("-x^2"), "-x^{2}");
+        assert_eq!(tex("sn(u, k)"), "\\mathrm{sn}(u, k)");
+        assert_eq!(tex("dot(M, cross(a, b))"), "\\langle M, a\\times b\\rangle");
+        assert_eq!(tex("nu_E"), "\\nu_{\\mathrm{E}}");
+        assert_eq!(
+            tex("d(f(x), x)"),
+            "\\frac{\\partial}{\\partial x}f\\left(x\\right)"
+        );
+    }
+}
