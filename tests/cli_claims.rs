@@ -212,3 +212,25 @@ fn coverage_lists_all_96_paper_labels() {
         .iter()
         .all(|r| r["claims"].as_array().unwrap().is_empty()));
 }
+
+#[test]
+fn eval_sees_catalogue_definitions() {
+    let dir = temp_catalogue(
+        "defs",
+        "[[claim]]\nid = \"d\"\nlocation = \"l\"\nprinted = 'p'\nkind = \"definition\"\ndefine = '''\ncube(x) = x^3\n'''\n",
+    );
+    let out = bin()
+        .args(["eval", "cube(3) - 27", "--catalogue"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let v: f64 = String::from_utf8(out.stdout)
+        .unwrap()
+        .trim()
+        .parse()
+        .unwrap();
+    assert_eq!(v, 0.0);
+    let out = bin().args(["eval", "cube(3)"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2), "unknown without the catalogue");
+}

@@ -19,6 +19,10 @@ pub struct Args {
     /// Variable bindings `name=expression`, evaluated in order.
     #[arg(long = "set")]
     pub set: Vec<String>,
+    /// Also load this catalogue directory, so that its `definition` functions are
+    /// available.
+    #[arg(long)]
+    pub catalogue: Option<String>,
 }
 
 fn show<T: Num>(v: &Value<T>, digits: usize) -> String {
@@ -50,7 +54,10 @@ fn show<T: Num>(v: &Value<T>, digits: usize) -> String {
 }
 
 fn go<T: Num>(args: &Args, like: T) -> Result<String, CliError> {
-    let reg = catalogue_registry();
+    let reg = match &args.catalogue {
+        Some(dir) => super::verify::load(dir)?.registry,
+        None => catalogue_registry(),
+    };
     let mut ev = Evaluator::new(&reg, like);
     for s in &args.set {
         let (n, e) = s
