@@ -102,6 +102,7 @@ struct Summary {
     inconclusive: usize,
     defined: usize,
     unexpected: Vec<String>,
+    failed_samples: usize,
     bits: Vec<u32>,
 }
 
@@ -139,6 +140,7 @@ fn summary(results: &[ClaimResult], bits: &[u32]) -> Summary {
             .filter(|r| !r.as_expected)
             .map(|r| r.id.clone())
             .collect(),
+        failed_samples: results.iter().map(|r| r.failures.len()).sum(),
         bits: bits.to_vec(),
     }
 }
@@ -295,6 +297,17 @@ fn print_text(results: &[ClaimResult], bits: &[u32], sum: &Summary) {
             for f in r.failures.iter().take(2) {
                 println!("    failed sample ({} bits): {}", f.bits, f.message);
             }
+        }
+    }
+    if sum.failed_samples > 0 {
+        println!("\nsamples that could not be evaluated (reported, replaced, never counted):");
+        for r in results.iter().filter(|r| !r.failures.is_empty()) {
+            println!(
+                "  {}: {} (first: {})",
+                r.id,
+                r.failures.len(),
+                r.failures[0].message
+            );
         }
     }
     println!(
