@@ -22,6 +22,7 @@ use std::io::Write;
 /// Arguments of `eulertop orbit`.
 #[derive(clap::Args, Debug, Clone)]
 #[command(allow_negative_numbers = true)]
+#[group(id = "orbit_options")]
 pub struct Args {
     /// The options of `eulertop step`.
     #[command(flatten)]

@@ -77,7 +77,11 @@ fn reduced_at<R: Real>(
         } else {
             w as f64
         };
-        need = jb + (kb + cb).ceil() as u32 + 8;
+        // Cancellation is capped at half the working precision: when t is that small
+        // (t = 0 included) its relative accuracy w/2 still exceeds the n bits asked
+        // for once the retry loop has grown w past 2(n + jb + 16).
+        let lost = (kb + cb).ceil().min(w as f64 / 2.0) as u32;
+        need = jb.saturating_add(lost).saturating_add(8);
         t
     };
     let (s, c, d) = ch.eval(&t, fixed);
