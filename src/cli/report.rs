@@ -1,13 +1,12 @@
 //! `eulertop report`: verifies the catalogue and writes the Markdown reports, figures,
 //! errata and conventions into `reports/` (deterministic output).
 
-use super::verify::{load, parse_bits};
+use super::verify::{load, parse_bits, run_with_progress};
 use super::CliError;
-use crate::claims::verdict::{verify, ClaimResult, Options};
+use crate::claims::verdict::{ClaimResult, Options};
 use crate::report::{write_reports, Convention, ReportInput, Section};
 use clap::Parser;
 use std::collections::BTreeMap;
-use std::io::IsTerminal;
 use std::path::Path;
 
 /// Arguments of `eulertop report`.
@@ -117,29 +116,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         bits: bits.clone(),
         exact: true,
     };
-    let bar = if std::io::stderr().is_terminal() {
-        let b = indicatif::ProgressBar::new(cat.claims.len() as u64);
-        b.set_style(
-            indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} claims {elapsed}")
-                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-        );
-        Some(b)
-    } else {
-        None
-    };
-    let done = |_: &ClaimResult| {
-        if let Some(b) = &bar {
-            b.inc(1);
-        }
-    };
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(args.jobs.unwrap_or(0))
-        .build()
-        .map_err(|e| CliError(format!("cannot start worker threads: {e}")))?;
-    let results = pool.install(|| verify(&cat, &opts, &|_| true, &done));
-    if let Some(b) = &bar {
-        b.finish_and_clear();
-    }
+    let results = run_with_progress(&cat, &opts, &|_| true, cat.claims.len(), args.jobs)?;
     let sections = cat
         .sections
         .iter()

@@ -166,6 +166,41 @@ pub fn paper_labels() -> Vec<String> {
         .collect()
 }
 
+/// Verifies the selected claims on `jobs` worker threads (default: all cores), with a
+/// progress bar on standard error when it is a terminal.  Shared by `verify` and `report`.
+pub fn run_with_progress(
+    cat: &Catalogue,
+    opts: &Options,
+    select: &(dyn Fn(&crate::claims::catalogue::Claim) -> bool + Sync),
+    total: usize,
+    jobs: Option<usize>,
+) -> Result<Vec<ClaimResult>, CliError> {
+    let bar = if std::io::stderr().is_terminal() {
+        let b = indicatif::ProgressBar::new(total as u64);
+        b.set_style(
+            indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} claims {elapsed}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        Some(b)
+    } else {
+        None
+    };
+    let done = |_: &ClaimResult| {
+        if let Some(b) = &bar {
+            b.inc(1);
+        }
+    };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(jobs.unwrap_or(0))
+        .build()
+        .map_err(|e| CliError(format!("cannot start worker threads: {e}")))?;
+    let results = pool.install(|| verify(cat, opts, select, &done));
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    Ok(results)
+}
+
 /// Runs `eulertop verify`.
 pub fn run(args: Args) -> Result<i32, CliError> {
     let bits = parse_bits(&args.bits)?;
@@ -191,29 +226,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             args.only.unwrap_or_default()
         )));
     }
-    let bar = if std::io::stderr().is_terminal() {
-        let b = indicatif::ProgressBar::new(total as u64);
-        b.set_style(
-            indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} claims {elapsed}")
-                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-        );
-        Some(b)
-    } else {
-        None
-    };
-    let done = |_: &ClaimResult| {
-        if let Some(b) = &bar {
-            b.inc(1);
-        }
-    };
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(args.jobs.unwrap_or(0))
-        .build()
-        .map_err(|e| CliError(format!("cannot start worker threads: {e}")))?;
-    let results = pool.install(|| verify(&cat, &opts, &select, &done));
-    if let Some(b) = &bar {
-        b.finish_and_clear();
-    }
+    let results = run_with_progress(&cat, &opts, &select, total, args.jobs)?;
     let sum = summary(&results, &bits);
     let code = i32::from(!sum.unexpected.is_empty());
     if args.format == "json" {
