@@ -142,6 +142,10 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         macros,
         bits,
         command,
+        extra_figures: crate::report::model_figures::FIGURES
+            .iter()
+            .map(|(f, c)| (f.to_string(), c.to_string()))
+            .collect(),
     };
     let out = Path::new(&args.out);
     let written = write_reports(&input, out)

@@ -128,6 +128,12 @@ pub fn readme(input: &ReportInput) -> String {
             );
         }
     }
+    if !input.extra_figures.is_empty() {
+        let _ = writeln!(s, "\n## Figures\n");
+        for (file, caption) in &input.extra_figures {
+            let _ = writeln!(s, "![{caption}](figures/{file})\n\n*{caption}*\n");
+        }
+    }
     let _ = writeln!(s, "\n## Every claim\n");
     let _ = writeln!(s, "| claim | location | form | verdict | best residual |");
     let _ = writeln!(s, "|---|---|---|---|---|");

@@ -52,6 +52,8 @@ pub struct ReportInput<'a> {
     pub bits: Vec<u32>,
     /// The command line that regenerates the reports (shown in them).
     pub command: String,
+    /// Further figures in `figures/` to show in the index: (file, caption).
+    pub extra_figures: Vec<(String, String)>,
 }
 
 /// Section stem of a claim, from its `file:line` position.
