@@ -140,7 +140,48 @@ impl<T> Value<T> {
     }
 }
 
+/// How [`Value::render`] lays out vectors and matrices.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Layout {
+    /// One line: vectors as `(a, b, c)`, matrices as `[[…], […]]` (evidence in reports).
+    Inline,
+    /// Vectors as `[a, b, c]`, matrices one row per line (the `eval` command).
+    Rows,
+}
+
 impl<T: Num> Value<T> {
+    /// Decimal rendering with `digits` significant digits in the given layout.
+    pub fn render(&self, digits: usize, layout: Layout) -> String {
+        let d = |x: &T| x.to_decimal(digits);
+        let c = |z: &Cx<T>| format!("{} + {}i", d(&z.re), d(&z.im));
+        let rows = |rs: Vec<String>| match layout {
+            Layout::Inline => format!("[{}]", rs.join(", ")),
+            Layout::Rows => rs.join("\n"),
+        };
+        match self {
+            Value::Real(x) => d(x),
+            Value::Bool(b) => b.to_string(),
+            Value::Complex(z) => c(z),
+            Value::Vec3(a) => {
+                let (open, close) = match layout {
+                    Layout::Inline => ("(", ")"),
+                    Layout::Rows => ("[", "]"),
+                };
+                format!("{open}{}, {}, {}{close}", d(&a[0]), d(&a[1]), d(&a[2]))
+            }
+            Value::Mat3(m) => rows(
+                m.iter()
+                    .map(|r| format!("[{}, {}, {}]", d(&r[0]), d(&r[1]), d(&r[2])))
+                    .collect(),
+            ),
+            Value::CMat2(m) => rows(
+                m.iter()
+                    .map(|r| format!("[{}, {}]", c(&r[0]), c(&r[1])))
+                    .collect(),
+            ),
+        }
+    }
+
     /// The real number, or a type error.
     pub fn as_real(&self) -> Result<T, String> {
         match self {

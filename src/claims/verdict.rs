@@ -18,7 +18,7 @@ use super::catalogue::{Body, Catalogue, Claim, Kind, PExpr};
 use super::eval::Evaluator;
 use super::latex::{binding_to_latex, to_latex};
 use super::sampler::{Point, Sampler};
-use super::value::Value;
+use super::value::{Layout, Value};
 use crate::numbers::{Rational, Scalar};
 use rayon::prelude::*;
 use rug::Float;
@@ -220,33 +220,7 @@ pub fn verify(
 }
 
 fn render_value<T: Num>(v: &Value<T>) -> String {
-    let d = |x: &T| x.to_decimal(20);
-    match v {
-        Value::Real(x) => d(x),
-        Value::Bool(b) => b.to_string(),
-        Value::Complex(z) => format!("{} + {}i", d(&z.re), d(&z.im)),
-        Value::Vec3(a) => format!("({}, {}, {})", d(&a[0]), d(&a[1]), d(&a[2])),
-        Value::Mat3(m) => format!(
-            "[{}]",
-            m.iter()
-                .map(|r| format!("[{}, {}, {}]", d(&r[0]), d(&r[1]), d(&r[2])))
-                .collect::<Vec<_>>()
-                .join(", ")
-        ),
-        Value::CMat2(m) => format!(
-            "[{}]",
-            m.iter()
-                .map(|r| format!(
-                    "[{} + {}i, {} + {}i]",
-                    d(&r[0].re),
-                    d(&r[0].im),
-                    d(&r[1].re),
-                    d(&r[1].im)
-                ))
-                .collect::<Vec<_>>()
-                .join(", ")
-        ),
-    }
+    v.render(20, Layout::Inline)
 }
 
 fn log2_mag<T: Num>(v: &Value<T>) -> f64 {

@@ -5,7 +5,7 @@ use super::CliError;
 use crate::claims::backend::Num;
 use crate::claims::eval::Evaluator;
 use crate::claims::parser::parse_expr;
-use crate::claims::value::Value;
+use crate::claims::value::Layout;
 use clap::Parser;
 
 /// Arguments of `eulertop eval`.
@@ -23,34 +23,6 @@ pub struct Args {
     /// available.
     #[arg(long)]
     pub catalogue: Option<String>,
-}
-
-fn show<T: Num>(v: &Value<T>, digits: usize) -> String {
-    let d = |x: &T| x.to_decimal(digits);
-    match v {
-        Value::Real(x) => d(x),
-        Value::Bool(b) => b.to_string(),
-        Value::Complex(z) => format!("{} + {}i", d(&z.re), d(&z.im)),
-        Value::Vec3(a) => format!("[{}, {}, {}]", d(&a[0]), d(&a[1]), d(&a[2])),
-        Value::Mat3(m) => m
-            .iter()
-            .map(|r| format!("[{}, {}, {}]", d(&r[0]), d(&r[1]), d(&r[2])))
-            .collect::<Vec<_>>()
-            .join("\n"),
-        Value::CMat2(m) => m
-            .iter()
-            .map(|r| {
-                format!(
-                    "[{} + {}i, {} + {}i]",
-                    d(&r[0].re),
-                    d(&r[0].im),
-                    d(&r[1].re),
-                    d(&r[1].im)
-                )
-            })
-            .collect::<Vec<_>>()
-            .join("\n"),
-    }
 }
 
 fn go<T: Num>(args: &Args, like: T) -> Result<String, CliError> {
@@ -96,7 +68,7 @@ fn go<T: Num>(args: &Args, like: T) -> Result<String, CliError> {
     })?;
     let v = ev.eval(&ex).map_err(|err| CliError(err.message))?;
     let digits = ((f64::from(args.bits) * std::f64::consts::LOG10_2).floor() as usize).max(2);
-    Ok(show(&v, digits))
+    Ok(v.render(digits, Layout::Rows))
 }
 
 /// Runs `eulertop eval`.
