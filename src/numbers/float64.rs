@@ -83,6 +83,10 @@ impl Real for f64 {
     fn sin_cos(&self) -> (Self, Self) {
         f64::sin_cos(*self)
     }
+    #[inline]
+    fn sin_cos_kernel(&self) -> (Self, Self) {
+        kernel_sin_cos(*self)
+    }
     fn tan(&self) -> Self {
         f64::tan(*self)
     }
@@ -122,4 +126,45 @@ impl Real for f64 {
     fn powf(&self, y: &Self) -> Self {
         f64::powf(*self, *y)
     }
+}
+
+/// Coefficients of the fdlibm kernel `__kernel_sin` (Sun Microsystems 1993, k_sin.c):
+/// `sin x ≈ x + x³(S1 + x²(S2 + … + x²·S6))` on `[−π/4, π/4]`, polynomial error below
+/// `2^−58` relative.
+const S: [f64; 6] = [
+    f64::from_bits(0xBFC5_5555_5555_5549), // -1.66666666666666324348e-01
+    f64::from_bits(0x3F81_1111_1110_F8A6), //  8.33333333332248946124e-03
+    f64::from_bits(0xBF2A_01A0_19C1_61D5), // -1.98412698298579493134e-04
+    f64::from_bits(0x3EC7_1DE3_57B1_FE7D), //  2.75573137070700676789e-06
+    f64::from_bits(0xBE5A_E5E6_8A2B_9CEB), // -2.50507602534068634195e-08
+    f64::from_bits(0x3DE5_D93A_5ACF_D57C), //  1.58969099521155010221e-10
+];
+
+/// Coefficients of the fdlibm kernel `__kernel_cos` (k_cos.c):
+/// `cos x ≈ 1 − x²/2 + x⁴(C1 + x²(C2 + … + x²·C6))` on `[−π/4, π/4]`, polynomial error
+/// below `2^−58`.
+const C: [f64; 6] = [
+    f64::from_bits(0x3FA5_5555_5555_554C), //  4.16666666666666019037e-02
+    f64::from_bits(0xBF56_C16C_16C1_5177), // -1.38888888888741095749e-03
+    f64::from_bits(0x3EFA_01A0_19CB_1590), //  2.48015872894767294178e-05
+    f64::from_bits(0xBE92_7E4F_809C_52AD), // -2.75573143513906633035e-07
+    f64::from_bits(0x3E21_EE9E_BDB4_B1C4), //  2.08757232129817482790e-09
+    f64::from_bits(0xBDA8_FAE9_BE88_38D4), // -1.13596475577881948265e-11
+];
+
+/// `(sin x, cos x)` for `|x| ≤ π/4` without argument reduction: the fdlibm kernels
+/// (as in FreeBSD msun and musl `__sin`/`__cos`), each below 1 ulp.  The cosine is
+/// formed as `w + ((1 − w) − x²/2 + x⁴·r)` with `w = 1 − x²/2`, so that the rounding
+/// of `1 − x²/2` is recovered exactly.
+#[inline]
+fn kernel_sin_cos(x: f64) -> (f64, f64) {
+    let z = x * x;
+    let w = z * z;
+    let rs = S[1] + z * (S[2] + z * S[3]) + z * w * (S[4] + z * S[5]);
+    let sin = x + z * x * (S[0] + z * rs);
+    let rc = z * (C[0] + z * (C[1] + z * C[2])) + w * w * (C[3] + z * (C[4] + z * C[5]));
+    let hz = 0.5 * z;
+    let one_m = 1.0 - hz;
+    let cos = one_m + (((1.0 - one_m) - hz) + z * rc);
+    (sin, cos)
 }

@@ -159,6 +159,23 @@ pub trait Real: Scalar + PartialOrd {
     fn sin_cos(&self) -> (Self, Self) {
         (self.sin(), self.cos())
     }
+    /// Sine and cosine of an argument already reduced to `|x| ≤ π/4·(1 + 2⁻²⁰)`.
+    ///
+    /// Callers that know their argument is small (e.g. the bottom of the Landen chain in
+    /// [`crate::special`]) use this to let fixed-precision types skip the argument
+    /// reduction of a general `sin_cos`.  The default is [`Real::sin_cos`]; `f64` uses
+    /// the fdlibm kernel polynomials (error below 1 ulp on `[−π/4, π/4]`).  Outside the
+    /// stated range the result is unspecified (but never a panic).
+    ///
+    /// ```
+    /// use eulertop::numbers::Real;
+    /// let (s, c) = 0.5_f64.sin_cos_kernel();
+    /// assert!((s - 0.5_f64.sin()).abs() <= f64::EPSILON / 2.0);
+    /// assert!((c - 0.5_f64.cos()).abs() <= f64::EPSILON / 2.0);
+    /// ```
+    fn sin_cos_kernel(&self) -> (Self, Self) {
+        self.sin_cos()
+    }
     /// Tangent.
     fn tan(&self) -> Self {
         let (s, c) = self.sin_cos();

@@ -1,6 +1,6 @@
 //! sn, cn, dn of a complex argument with a real modulus.
 
-use super::jacobi::reduced;
+use super::jacobi::sncndn_at;
 use super::{check_finite, check_modulus, show, SpecialError, GUARD};
 use crate::numbers::{ComplexScalar, Real, Scalar};
 
@@ -64,8 +64,8 @@ pub fn sncndn_complex<C: ComplexScalar>(u: &C, k: &C::R) -> Result<(C, C, C), Sp
         let dn = out(xw.one(), xw.zero())?;
         return Ok((sn, cn, dn));
     }
-    let (s, c, d) = reduced(&x, k, false, n)?.finish();
-    let (s1, c1, d1) = reduced(&y, k, true, n)?.finish();
+    let (s, c, d) = sncndn_at(&x, k, false, n)?;
+    let (s1, c1, d1) = sncndn_at(&y, k, true, n)?;
     let p = |v: C::R| v.with_prec(w);
     let (s, c, d, s1, c1, d1) = (p(s), p(c), p(d), p(s1), p(c1), p(d1));
     let k2 = k.with_prec(w).sqr();

@@ -1,6 +1,6 @@
 //! Jacobi elliptic functions sn, cn, dn and the amplitude am of a real argument.
 
-use super::reduce::{chain_for, reduce_dd};
+use super::reduce::{reduce_dd, with_chain, ChainData};
 use super::{check_finite, check_modulus, show, SpecialError, GUARD};
 use crate::numbers::Real;
 
@@ -33,40 +33,114 @@ impl<R: Real> Reduced<R> {
     }
 }
 
-/// One attempt at working precision `w`; returns the evaluation and the number of
-/// extra bits the reduction needed (for the adaptive retry).
-fn reduced_at<R: Real>(
-    u: &R,
-    k0: &R,
-    comp: bool,
-    w: u32,
-) -> Result<(Reduced<R>, u32), SpecialError> {
-    let uw = u.with_prec(w);
-    let data = chain_for(k0, comp, w)?;
-    let ch = &data.chain;
-    let kp = data.kp.clone();
-    let kq_f = ch.kq.to_f64();
-    let ratio = uw.to_f64() * data.inv_kq;
+/// The quadrant `j = round(u/K)` (half away from zero), from `f64` values (exact
+/// enough: a wrong `j` at a tie only moves `|t|` a rounding beyond `K/2`).
+#[inline]
+fn quadrant<R: Real>(u: &R, data: &ChainData<R>) -> Result<i64, SpecialError> {
+    let ratio = u.to_f64() * data.inv_kq;
     if ratio.abs() >= 2f64.powi(50) {
-        return Err(SpecialError::ArgumentTooLarge(format!(
-            "|u|/K = {:e} >= 2^50 (u = {})",
-            ratio.abs(),
-            show(u)
-        )));
+        return Err(too_large(ratio, u));
     }
     // round half away from zero without a libm call (|ratio| < 2^50 checked above)
-    let j = if ratio >= 0.0 {
+    Ok(if ratio >= 0.0 {
         (ratio + 0.5) as i64
     } else {
         (ratio - 0.5) as i64
+    })
+}
+
+#[cold]
+fn too_large<R: Real>(ratio: f64, u: &R) -> SpecialError {
+    SpecialError::ArgumentTooLarge(format!(
+        "|u|/K = {:e} >= 2^50 (u = {})",
+        ratio.abs(),
+        show(u)
+    ))
+}
+
+/// Fixed-precision types (`f64`, `Dual<f64>`) whose chain ends in the nome series:
+/// `(sn, cn, dn)(u)` in one flat pass.  With `j = round(u/K)` the remainder
+/// `r = u − jK`, `|r| ≤ K/2`, is formed exactly ([`reduce_dd`], triple-double `K`) and
+/// `v = πt/(2K)` for `t = u − 2hK`, `2h = j − (j mod 2)`: for even `j`, `v = πr/(2K)`;
+/// for odd `j`, `t = K + r`, so `sin v = cos v_r` and `cos v = −sin v_r` (every output
+/// keeps its relative accuracy, e.g. cn next to its zeros at odd multiples of `K`).  The
+/// nome series holds for any `v`, so no quotients are needed at the end; `sn`, `cn`
+/// change sign with `h` (DLMF 22.4.3).
+#[inline]
+fn sncndn_series<R: Real>(
+    u: &R,
+    data: &ChainData<R>,
+    tri: [f64; 3],
+    scale: &R,
+) -> Result<(R, R, R), SpecialError> {
+    let (h, s, c, d) = series_reduced(u, data, tri, scale)?;
+    Ok(if h % 2 == 0 { (s, c, d) } else { (-s, -c, d) })
+}
+
+/// The reduction of [`sncndn_series`]: `h` and `(sn, cn, dn)(t)` for `u = 2hK + t`,
+/// `|t| ≤ 3K/2`.
+#[inline]
+fn series_reduced<R: Real>(
+    u: &R,
+    data: &ChainData<R>,
+    tri: [f64; 3],
+    scale: &R,
+) -> Result<(i64, R, R, R), SpecialError> {
+    let j = quadrant(u, data)?;
+    let r = if j == 0 {
+        u.clone()
+    } else {
+        reduce_dd(u, &data.chain.kq, j, tri)
     };
-    let fixed = uw.prec() < w;
+    let (sr, cr) = (r * scale.clone()).sin_cos_kernel();
+    let odd = j.rem_euclid(2);
+    let (sv, cv) = if odd == 0 { (sr, cr) } else { (cr, -sr) };
+    let (s, c, d) = data.chain.eval_series(&sv, &cv).ok_or_else(no_series)?;
+    Ok(((j - odd) / 2, s, c, d))
+}
+
+#[cold]
+fn no_series() -> SpecialError {
+    SpecialError::NoConvergence("internal: chain without a series bottom".into())
+}
+
+/// Fixed-precision types (`f64`, `Dual<f64>`): one pass, `t = u − jK` formed with the
+/// triple-double `K` ([`reduce_dd`]), for chains without the nome series (tiny `k`,
+/// where DLMF 22.10.4–6 needs no Landen level) and for [`am`].
+#[inline]
+fn reduce_fixed<R: Real>(u: &R, data: &ChainData<R>) -> Result<Reduced<R>, SpecialError> {
+    let kq = &data.chain.kq;
+    let j = quadrant(u, data)?;
+    let t = match (j, data.tri) {
+        (0, _) => u.clone(),
+        (_, Some(tri)) => reduce_dd(u, kq, j, tri),
+        (_, None) => u.clone() - u.from_i64(j) * kq.clone(),
+    };
+    let (s, c, d) = data.chain.eval(&t, true);
+    Ok(Reduced {
+        j,
+        s,
+        c,
+        d,
+        kp: data.kp.clone(),
+    })
+}
+
+/// One multi-precision attempt at working precision `w`; returns the evaluation and
+/// the number of extra bits the reduction needed (for the adaptive retry).
+fn reduce_mp<R: Real>(
+    u: &R,
+    w: u32,
+    data: &ChainData<R>,
+) -> Result<(Reduced<R>, u32), SpecialError> {
+    let uw = u.with_prec(w);
+    let ch = &data.chain;
+    let j = quadrant(&uw, data)?;
     let mut need = 0u32;
     let t = if j == 0 {
         uw
-    } else if fixed {
-        reduce_dd(&uw, &ch.kq, j, data.triple(k0, comp))
     } else {
+        let kq_f = ch.kq.to_f64();
         let t = uw.clone() - uw.from_i64(j) * ch.kq.clone();
         // bits lost: size of j, magnitude of K, cancellation in t
         let jb = 64 - j.unsigned_abs().leading_zeros();
@@ -84,41 +158,63 @@ fn reduced_at<R: Real>(
         need = jb.saturating_add(lost).saturating_add(8);
         t
     };
-    let (s, c, d) = ch.eval(&t, fixed);
+    let (s, c, d) = ch.eval(&t, false);
+    let kp = data.kp.clone();
     Ok((Reduced { j, s, c, d, kp }, need))
 }
 
-/// Reduced evaluation with adaptive working precision: starts at `n + 40` bits and
-/// retries with more bits when the reduction `t = u − jK` lost too many.
+/// `(sn, cn, dn)(u)` at working precision (modulus `k`, or `k'` when `comp`): the
+/// reduced evaluation with its quadrant applied.  In fixed precision everything runs
+/// inside the cached chain's closure, so only the three values travel back.
+#[inline]
+pub(crate) fn sncndn_at<R: Real>(
+    u: &R,
+    k: &R,
+    comp: bool,
+    n: u32,
+) -> Result<(R, R, R), SpecialError> {
+    if u.with_prec(n + GUARD).prec() < n + GUARD {
+        return with_chain(k, comp, n + GUARD, |data| {
+            match (data.tri, data.chain.series_scale()) {
+                (Some(tri), Some(scale)) => sncndn_series(u, data, tri, scale),
+                _ => reduce_fixed(u, data).map(|r| r.finish()),
+            }
+        })?;
+    }
+    reduced(u, k, comp, n).map(|r| r.finish())
+}
+
+/// Reduced evaluation `u = jK + t`.  Fixed-precision types take one pass
+/// ([`reduce_fixed`]); multi-precision ones start at `n + 40` bits and retry with more
+/// bits when the reduction `t = u − jK` lost too many.
 /// `comp` evaluates for the complementary modulus `k'` (with complement `k`).
+#[inline]
 pub(crate) fn reduced<R: Real>(
     u: &R,
     k: &R,
     comp: bool,
     n: u32,
 ) -> Result<Reduced<R>, SpecialError> {
+    if u.with_prec(n + GUARD).prec() < n + GUARD {
+        return with_chain(k, comp, n + GUARD, |data| reduce_fixed(u, data))?;
+    }
     // cn from sn at the top of the chain loses up to log2(1/k') bits (see landen.rs);
     // only multi-precision types use that form and get the extra bits
-    let fixed = u.with_prec(n + GUARD).prec() < n + GUARD;
-    let extra = if fixed {
-        0
+    let kf = k.to_f64();
+    let kp_f = if comp {
+        kf
     } else {
-        let kf = k.to_f64();
-        let kp_f = if comp {
-            kf
-        } else {
-            ((1.0 - kf) * (1.0 + kf)).sqrt()
-        };
-        if kp_f > 0.0 {
-            (-kp_f.log2()).ceil().max(0.0) as u32
-        } else {
-            n
-        }
+        ((1.0 - kf) * (1.0 + kf)).sqrt()
+    };
+    let extra = if kp_f > 0.0 {
+        (-kp_f.log2()).ceil().max(0.0) as u32
+    } else {
+        n
     };
     let mut w = n + GUARD + extra;
     for _ in 0..6 {
-        let (r, need) = reduced_at(u, k, comp, w)?;
-        if fixed || need + 8 <= w - n {
+        let (r, need) = with_chain(k, comp, w, |data| reduce_mp(u, w, data))??;
+        if need + 8 <= w - n {
             return Ok(r);
         }
         w = (n + need + GUARD).max(w + w / 2);
@@ -163,8 +259,7 @@ pub fn sncndn<R: Real>(u: &R, k: &R) -> Result<(R, R, R), SpecialError> {
     check_modulus(k)?;
     check_finite(u, "u")?;
     let n = u.prec().max(k.prec());
-    let r = reduced(u, k, false, n)?;
-    let (s, c, d) = r.finish();
+    let (s, c, d) = sncndn_at(u, k, false, n)?;
     Ok((s.with_prec(n), c.with_prec(n), d.with_prec(n)))
 }
 

@@ -1,20 +1,20 @@
 //! The descending Landen (Gauss) chain of moduli and the evaluation of sn, cn, dn of a
 //! reduced argument by climbing it (DLMF 22.7.1–3, 22.10.4–6, 19.8.12).
 
+use super::agm::agm;
+use super::fourier::{nome, Fourier, Q_MAX, Q_MAX_DEEP};
 use super::SpecialError;
 use crate::numbers::Real;
+use rug::Float;
 
 /// The chain `k = k₀ > k₁ > … > k_N` with `k_{n+1} = k_n²/(1+k_n')²`,
 /// `k'_{n+1} = 2√k'_n/(1+k'_n)`, `1 − k_{n+1} = 2k'_n/(1+k'_n)`.
 pub(crate) struct Chain<R> {
-    /// `k_1 … k_N`.
-    ks: Vec<R>,
-    /// `1 − k_1 … 1 − k_N`, computed without cancellation.
-    omks: Vec<R>,
+    /// One entry per level n = 1..N: `(k_n, 1 − k_n, 1 + k_n)`, `1 − k_n` computed
+    /// without cancellation.
+    levels: Vec<[R; 3]>,
     /// `1 / Π (1 + k_n)`, n = 1..N.
     inv_prod: R,
-    /// `1 + k_1 … 1 + k_N`.
-    opks: Vec<R>,
     /// `k_N²/4` and `k_N²/2`.
     k2q: R,
     k2h: R,
@@ -23,6 +23,11 @@ pub(crate) struct Chain<R> {
     /// `k²` and `k'²` of the top modulus.
     k2: R,
     kp2: R,
+    /// `k'² < ε/8`: the `tanh`/`sech` form applies (fixed precision only).
+    tiny_kp: bool,
+    /// Fixed precision: the nome series at the bottom (see [`Fourier`]) and
+    /// `π/(2K) = AGM(1, k')` of the top modulus, which maps `t` to `v`.
+    fourier: Option<(Fourier<R>, R)>,
     /// The quarter period `K(k) = (π/2)·Π(1+k_n)·(1 + k_N²/4)`.
     pub kq: R,
 }
@@ -30,48 +35,82 @@ pub(crate) struct Chain<R> {
 impl<R: Real> Chain<R> {
     /// Builds the chain for modulus `k` with complementary modulus `kp` (both given,
     /// so that the caller can pass an exactly known pair, e.g. `(k', k)`).
-    pub(crate) fn new(k: &R, kp: &R) -> Result<Self, SpecialError> {
+    ///
+    /// Multi-precision (`reference = None`): descend until `k_N⁴ < ε/4` and use
+    /// DLMF 22.10.4–6 at the bottom.  Fixed precision (`reference` = the same pair at
+    /// 192 bits): descend only until the nome is at most [`Q_MAX`] ([`Q_MAX_DEEP`] after two
+    /// levels; each step squares
+    /// it) and use the nome series ([`Fourier`]) at the bottom, unless `k` is so small
+    /// that DLMF 22.10.4–6 needs no level at all.
+    pub(crate) fn new(
+        k: &R,
+        kp: &R,
+        reference: Option<(&Float, &Float)>,
+    ) -> Result<Self, SpecialError> {
         let one = k.one();
-        let two = k.from_i64(2);
-        // stop when k_N^4 < eps/64: the neglected O(k_N^4) terms are below the rounding
+        // stop when k_N^4 < eps/4: the neglected O(k_N^4) terms are below the rounding
         let tol = k.epsilon().mul_2si(-2);
-        let mut ks = Vec::new();
-        let mut omks = Vec::new();
-        let mut opks = Vec::new();
+        let small = |x: &R| x.sqr().sqr() <= tol;
+        let kp2 = kp.sqr();
+        let tiny_kp = kp2 < k.epsilon().mul_2si(-3);
+        // no series where DLMF 22.10.4–6 (tiny k) or 22.10.7–9 (tiny k') apply directly
+        let reference = reference.filter(|_| !small(k) && !tiny_kp);
+        let mut q = match reference {
+            Some(_) => nome(k, kp)?.to_f64(),
+            None => 0.0,
+        };
+        let mut rpair = reference.map(|(a, b)| (a.clone(), b.clone()));
+        let mut levels = Vec::new();
         let (mut kc, mut kpc) = (k.clone(), kp.clone());
         let mut prod = one.clone();
-        while kc.sqr().sqr() > tol {
-            if ks.len() >= 64 {
+        loop {
+            let done = match reference {
+                Some(_) => q <= if levels.len() >= 2 { Q_MAX_DEEP } else { Q_MAX },
+                None => small(&kc),
+            };
+            if done {
+                break;
+            }
+            if levels.len() >= 64 {
                 return Err(SpecialError::NoConvergence(
                     "Landen chain of moduli did not converge in 64 steps".into(),
                 ));
             }
-            let inv = (one.clone() + kpc.clone()).recip();
-            let k1 = (kc.clone() * inv.clone()).sqr();
-            let inv2 = two.clone() * inv;
-            let omk1 = kpc.clone() * inv2.clone();
-            let kp1 = kpc.sqrt() * inv2;
-            let opk = one.clone() + k1.clone();
-            prod = prod * opk.clone();
-            opks.push(opk);
-            ks.push(k1.clone());
-            omks.push(omk1);
-            kc = k1;
-            kpc = kp1;
+            let (k1, kp1, level) = landen_step(&kc, &kpc);
+            prod = prod * level[2].clone();
+            levels.push(level);
+            (kc, kpc) = (k1, kp1);
+            q = q * q;
+            if let Some((rk, rkp)) = rpair.as_mut() {
+                let (a, b, _) = landen_step(rk, rkp);
+                (*rk, *rkp) = (a, b);
+            }
         }
-        let kq = k.pi().mul_2si(-1) * prod.clone() * (one.clone() + kc.sqr().mul_2si(-2));
-        let k2q = kc.sqr().mul_2si(-2);
-        let k2h = kc.sqr().mul_2si(-1);
+        let (kq, fourier) = match (reference, rpair) {
+            (Some((_, top_kp)), Some((rk, rkp))) => {
+                // K = Π(1+k_n)·K(k_N), K(k_N) = π/(2·AGM(1, k_N')) (DLMF 19.8.5)
+                let kq = k.pi() / agm(&one, &kpc)?.mul_2si(1) * prod.clone();
+                // v = πt/(2K) = t·AGM(1, k'), the value of AGM(1, k') from 192 bits
+                let scale = agm(&one, kp)?;
+                let exact = agm(&Float::with_val(top_kp.prec(), 1), top_kp)?;
+                let scale = scale.clone() + scale.from_f64(exact.to_f64() - scale.to_f64());
+                (kq, Some((Fourier::new(&kc, &kpc, (&rk, &rkp))?, scale)))
+            }
+            _ => (
+                k.pi().mul_2si(-1) * prod.clone() * (one.clone() + kc.sqr().mul_2si(-2)),
+                None,
+            ),
+        };
         Ok(Chain {
-            ks,
-            omks,
-            opks,
-            k2q,
-            k2h,
+            levels,
+            k2q: kc.sqr().mul_2si(-2),
+            k2h: kc.sqr().mul_2si(-1),
             half: one.mul_2si(-1),
             k2: k.sqr(),
-            kp2: kp.sqr(),
+            tiny_kp,
+            kp2,
             inv_prod: prod.recip(),
+            fourier,
             kq,
         })
     }
@@ -84,7 +123,7 @@ impl<R: Real> Chain<R> {
     /// plain quotients of DLMF 22.7.1–3 are used (fewer multi-precision operations).
     pub(crate) fn eval(&self, t: &R, fixed: bool) -> (R, R, R) {
         let one = t.one();
-        if fixed && self.kp2 < t.epsilon().mul_2si(-3) {
+        if fixed && self.tiny_kp {
             // k' so small that k'⁴ terms are below the rounding (only reachable as the
             // complementary modulus of a tiny k, e.g. the imaginary part for k = 1e-10):
             // DLMF 22.10.7–9 directly, which keeps relative accuracy of the tiny cn, dn
@@ -101,17 +140,61 @@ impl<R: Real> Chain<R> {
             let d = se.clone() + b * th * se;
             return (s, c, d);
         }
+        if let (true, Some((_, scale))) = (fixed, &self.fourier) {
+            // (callers with a series bottom normally use eval_series directly)
+            let (sv, cv) = (t.clone() * scale.clone()).sin_cos_kernel();
+            if let Some(out) = self.eval_series(&sv, &cv) {
+                return out;
+            }
+        }
         let z = t.clone() * self.inv_prod.clone();
-        let (sz, cz) = z.sin_cos();
+        let (sz, cz) = z.sin_cos_kernel();
         let corr = (z - sz.clone() * cz.clone()) * self.k2q.clone();
-        let mut s = sz.clone() - corr.clone() * cz.clone();
-        let levels = self.ks.iter().zip(self.omks.iter()).zip(self.opks.iter());
+        let s = sz.clone() - corr.clone() * cz.clone();
         if fixed {
-            let mut c = cz + corr * sz.clone();
-            let mut e = self.k2h.clone() * sz.sqr();
-            let mut d = one.clone() - e.clone();
+            let c = cz + corr * sz.clone();
+            let e = self.k2h.clone() * sz.sqr();
+            let d = one.clone() - e.clone();
+            self.climb_fixed(s, c, d, e)
+        } else {
+            let mut s = s;
+            // With guard bits only sn is carried up (DLMF 22.7.1); cn and dn follow at
+            // the top from cn = √((1−sn)(1+sn)), dn = √(k'² + k²cn²) (DLMF 22.6.1).
+            // For |t| ≤ K/2, cn ≥ √(k'/(1+k')), so at most log2(1/k') bits are lost; the
+            // caller adds that many guard bits.
+            for [k1, _, opk] in self.levels.iter().rev() {
+                s = opk.clone() * s.clone() / (one.clone() + k1.clone() * s.sqr());
+            }
+            let c = ((one.clone() - s.clone()) * (one + s.clone())).sqrt();
+            let d = (self.kp2.clone() + self.k2.clone() * c.sqr()).sqrt();
+            (s, c, d)
+        }
+    }
+
+    /// `π/(2K) = AGM(1, k')` if this chain has the nome series at its bottom (fixed
+    /// precision, `k` not tiny): then `v = t·π/(2K)` is the series variable.
+    pub(crate) fn series_scale(&self) -> Option<&R> {
+        self.fourier.as_ref().map(|(_, scale)| scale)
+    }
+
+    /// `(sn, cn, dn)(t)` from `sin v`, `cos v` (`v = πt/(2K)`, any `|v| ≤ π/2`) through
+    /// the nome series and the climb; `None` without a series bottom.
+    #[inline]
+    pub(crate) fn eval_series(&self, sv: &R, cv: &R) -> Option<(R, R, R)> {
+        let (series, _) = self.fourier.as_ref()?;
+        let (s, c, d, e) = series.eval(sv, cv);
+        Some(self.climb_fixed(s, c, d, e))
+    }
+
+    /// Climbs the chain in fixed precision from `(sn, cn, dn, 1 − dn)` at the bottom:
+    /// every update is written as "value + small correction", so that roundings scale
+    /// with the correction, and `1 − dn` is tracked next to `dn`.
+    #[inline]
+    fn climb_fixed(&self, mut s: R, mut c: R, mut d: R, mut e: R) -> (R, R, R) {
+        let one = s.one();
+        {
             let half = self.half.clone();
-            for ((k1, omk), _) in levels.rev() {
+            for [k1, omk, _] in self.levels.iter().rev() {
                 let ss = s.sqr();
                 let cc = c.sqr();
                 let kss = k1.clone() * ss.clone();
@@ -124,25 +207,33 @@ impl<R: Real> Chain<R> {
                 } else {
                     c * d * inv.clone()
                 };
-                // dn = (c² + (1−k₁)s²)/(1+k₁s²), 1 − dn = 2k₁s²/(1+k₁s²)
-                let d_new = (cc + omk.clone() * ss) * inv.clone();
-                e = (kss.clone() + kss) * inv;
+                // 1 − dn = 2k₁s²/(1+k₁s²); dn = 1 − (1 − dn) while that is above ½,
+                // else dn = (c² + (1−k₁)s²)/(1+k₁s²) (relative accuracy for small dn)
+                e = (kss.clone() + kss) * inv.clone();
+                let d_new = if e < half {
+                    one.clone() - e.clone()
+                } else {
+                    (cc + omk.clone() * ss) * inv
+                };
                 s = s_new;
                 c = c_new;
                 d = d_new;
             }
             (s, c, d)
-        } else {
-            // With guard bits only sn is carried up (DLMF 22.7.1); cn and dn follow at
-            // the top from cn = √((1−sn)(1+sn)), dn = √(k'² + k²cn²) (DLMF 22.6.1).
-            // For |t| ≤ K/2, cn ≥ √(k'/(1+k')), so at most log2(1/k') bits are lost; the
-            // caller adds that many guard bits.
-            for ((k1, _), opk) in levels.rev() {
-                s = opk.clone() * s.clone() / (one.clone() + k1.clone() * s.sqr());
-            }
-            let c = ((one.clone() - s.clone()) * (one + s.clone())).sqrt();
-            let d = (self.kp2.clone() + self.k2.clone() * c.sqr()).sqrt();
-            (s, c, d)
         }
     }
+}
+
+/// One descending Landen step (DLMF 19.8.12, 22.7.1–3): `(k, k')` to `(k₁, k₁')` with
+/// `k₁ = (k/(1+k'))²`, `k₁' = 2√k'/(1+k')`, and the level entry
+/// `(k₁, 1 − k₁ = 2k'/(1+k'), 1 + k₁)`.
+fn landen_step<S: Real>(k: &S, kp: &S) -> (S, S, [S; 3]) {
+    let one = k.one();
+    let inv = (one.clone() + kp.clone()).recip();
+    let k1 = (k.clone() * inv.clone()).sqr();
+    let inv2 = inv.mul_2si(1);
+    let omk1 = kp.clone() * inv2.clone();
+    let kp1 = kp.sqrt() * inv2;
+    let opk = one + k1.clone();
+    (k1.clone(), kp1, [k1, omk1, opk])
 }

@@ -73,6 +73,7 @@
 mod agm;
 mod complex;
 mod ellint;
+mod fourier;
 mod inverse;
 mod jacobi;
 mod landen;
@@ -111,19 +112,31 @@ pub enum SpecialError {
 }
 
 /// Checks `0 <= k < 1` and finiteness.
+#[inline]
 pub(crate) fn check_modulus<R: Real>(k: &R) -> Result<(), SpecialError> {
     if !k.is_finite() || *k < k.zero() || *k >= k.one() {
-        return Err(SpecialError::ModulusOutOfRange(show(k)));
+        return Err(modulus_error(k));
     }
     Ok(())
 }
 
+#[cold]
+fn modulus_error<R: Real>(k: &R) -> SpecialError {
+    SpecialError::ModulusOutOfRange(show(k))
+}
+
 /// Checks that an argument is finite.
+#[inline]
 pub(crate) fn check_finite<R: Real>(x: &R, what: &str) -> Result<(), SpecialError> {
     if !x.is_finite() {
-        return Err(SpecialError::NotFinite(format!("{what} = {}", show(x))));
+        return Err(finite_error(x, what));
     }
     Ok(())
+}
+
+#[cold]
+fn finite_error<R: Real>(x: &R, what: &str) -> SpecialError {
+    SpecialError::NotFinite(format!("{what} = {}", show(x)))
 }
 
 /// Short rendering of a value for error messages.
