@@ -166,6 +166,9 @@ impl<R: Real> Real for Dual<R> {
         let e = self.v.exp();
         self.chain(e.clone(), e)
     }
+    fn exp_m1(&self) -> Self {
+        self.chain(self.v.exp_m1(), self.v.exp())
+    }
     fn ln(&self) -> Self {
         self.chain(self.v.ln(), self.v.recip())
     }

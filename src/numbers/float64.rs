@@ -71,6 +71,9 @@ impl Real for f64 {
     fn exp(&self) -> Self {
         f64::exp(*self)
     }
+    fn exp_m1(&self) -> Self {
+        f64::exp_m1(*self)
+    }
     fn ln(&self) -> Self {
         f64::ln(*self)
     }

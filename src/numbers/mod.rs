@@ -149,6 +149,11 @@ pub trait Real: Scalar + PartialOrd {
     fn sqrt(&self) -> Self;
     /// `e^self`.
     fn exp(&self) -> Self;
+    /// `e^self − 1`, accurate also for small `|self|`.  The default `exp − 1` loses
+    /// relative accuracy near 0; `f64`, `rug::Float` and `Dual` override it.
+    fn exp_m1(&self) -> Self {
+        self.exp() - self.one()
+    }
     /// Natural logarithm.
     fn ln(&self) -> Self;
     /// Sine.

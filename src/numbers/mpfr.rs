@@ -101,6 +101,7 @@ impl Real for Float {
         abs => abs_ref,
         sqrt => sqrt_ref,
         exp => exp_ref,
+        exp_m1 => exp_m1_ref,
         ln => ln_ref,
         sin => sin_ref,
         cos => cos_ref,

@@ -39,6 +39,11 @@ pub(crate) const Q_MAX: f64 = 0.06;
 /// `Σ (5.8q)ⁿ ≤ 2.1` (`|Sₙ(x)| ≤ (3+2√2)ⁿ` for the monomial coefficients on `[0, 1]`).
 pub(crate) const Q_MAX_DEEP: f64 = 0.09;
 
+/// Above this nome (`k ≳ 0.986`) fixed-precision chains use the series of the
+/// complementary modulus at imaginary argument instead of Landen levels with moduli
+/// near 1 (each of which adds about one ulp); there `q' = exp(π²/ln q) < 2.2·10⁻³`.
+pub(crate) const Q_IMAG: f64 = 0.2;
+
 /// Precision of the reference evaluation of the coefficients.
 const REF_BITS: u32 = 192;
 
@@ -48,6 +53,9 @@ const REF_BITS: u32 = 192;
 /// `sn = sin v · P(x)`, `cn = cos v · (1 + x·Q₁(x))`, `dn = 1 + x·R₁(x)`.
 pub(crate) struct Fourier<R> {
     pairs: Vec<[R; 6]>,
+    /// `Δ = P − (1 + x·Q₁)` (lowest degree first), summed in 192 bits, so that
+    /// `sn/cn`-type quotients `P/Q = 1 + Δ/Q` need no cancelling subtraction.
+    delta: Vec<R>,
 }
 
 /// The nome `q = exp(−πK'/K)` of the modulus `k` with complement `kp` (DLMF 22.2.1,
@@ -137,7 +145,16 @@ impl<R: Real> Fourier<R> {
     /// chain; `reference` is the same modulus pair at 192 bits (from the exact top
     /// modulus), whose coefficients replace the values of the generic ones.
     pub(crate) fn new(k: &R, kp: &R, reference: (&Float, &Float)) -> Result<Self, SpecialError> {
-        let m = terms(nome(k, kp)?.to_f64());
+        Self::with_terms(k, kp, reference, terms(nome(k, kp)?.to_f64()))
+    }
+
+    /// [`Fourier::new`] with `m` terms.
+    pub(crate) fn with_terms(
+        k: &R,
+        kp: &R,
+        reference: (&Float, &Float),
+        m: usize,
+    ) -> Result<Self, SpecialError> {
         let generic = coefficients(k, kp, m)?;
         let (rk, rkp) = reference;
         let exact = coefficients(
@@ -155,6 +172,27 @@ impl<R: Real> Fourier<R> {
         };
         let [gp, gq, gr] = generic;
         let [ep, eq, er] = exact;
+        // Δ = P − Q with Q = 1 + x·Q₁: coefficients p₀ − 1, pᵢ − q₁,ᵢ₋₁
+        let diff = |p: &[R], q1: &[R], one: R| -> Vec<R> {
+            (0..p.len())
+                .map(|i| match i {
+                    0 => p[0].clone() - one.clone(),
+                    _ => p[i].clone() - q1.get(i - 1).cloned().unwrap_or_else(|| one.zero()),
+                })
+                .collect()
+        };
+        let gd = diff(&gp, &gq, k.one());
+        let one_ref = Float::with_val(REF_BITS, 1);
+        let ed: Vec<Float> = (0..ep.len())
+            .map(|i| match i {
+                0 => Float::with_val(REF_BITS, &ep[0] - &one_ref),
+                _ => match eq.get(i - 1) {
+                    Some(q) => Float::with_val(REF_BITS, &ep[i] - q),
+                    None => ep[i].clone(),
+                },
+            })
+            .collect();
+        let delta = fix(gd, ed);
         let (p, q1, r1) = (fix(gp, ep), fix(gq, eq), fix(gr, er));
         let len = m.div_ceil(2);
         let at = |c: &[R], i: usize| c.get(i).cloned().unwrap_or_else(|| k.zero());
@@ -171,7 +209,7 @@ impl<R: Real> Fourier<R> {
                 ]
             })
             .collect();
-        Ok(Fourier { pairs })
+        Ok(Fourier { pairs, delta })
     }
 
     /// `(sn, cn, dn, 1 − dn)` at `v` with `sin v`, `cos v` given (`|v| ≤ π/2`).
@@ -182,6 +220,23 @@ impl<R: Real> Fourier<R> {
     #[inline]
     pub(crate) fn eval(&self, sv: &R, cv: &R) -> (R, R, R, R) {
         let x = sv.sqr();
+        let (p, xq, xr) = self.polys(&x);
+        let e = -xr;
+        let one = sv.one();
+        (
+            sv.clone() * p,
+            cv.clone() + cv.clone() * xq,
+            one - e.clone(),
+            e,
+        )
+    }
+
+    /// `(P(x), x·Q₁(x), x·R₁(x))`.  The three polynomials are summed in one pass, each
+    /// as two independent Horner chains in `x²` (even and odd coefficients), which
+    /// halves the latency of a plain Horner rule and lets the six chains run side by
+    /// side.
+    #[inline]
+    fn polys(&self, x: &R) -> (R, R, R) {
         let x2 = x.sqr();
         let z = x.zero();
         let mut acc = [z.clone(), z.clone(), z.clone(), z.clone(), z.clone(), z];
@@ -193,13 +248,27 @@ impl<R: Real> Fourier<R> {
         let [pe, po, qe, qo, re, ro] = acc;
         let p = pe + po * x.clone();
         let xq = x.clone() * (qe + qo * x.clone());
-        let e = -(x.clone() * (re + ro * x));
-        let one = sv.one();
-        (
-            sv.clone() * p,
-            cv.clone() + cv.clone() * xq,
-            one - e.clone(),
-            e,
-        )
+        let xr = x.clone() * (re + ro * x.clone());
+        (p, xq, xr)
+    }
+
+    /// The series at imaginary argument `v = iw` (`sin v = i sinh w`, so `x = −y`,
+    /// `y = sinh²w`): `(P(−y)/Q(−y) − 1, Q(−y), 1 − y·R₁(−y))`, where `Q = 1 + x·Q₁`,
+    /// i.e. `sn(iw') = i sinh w·P(−y)`, `cn(iw') = cosh w·Q(−y)`, `dn(iw') = 1 − y·R₁(−y)`
+    /// for the series variable `w`.  The monomial coefficients alternate in sign, so at
+    /// `x = −y` every term is positive (no cancellation).  The ratio `P/Q` is formed as
+    /// `1 + Δ/Q` from the separately summed `Δ = P − Q`, so `sn = tanh w·P/Q` keeps the
+    /// accuracy of `tanh w`.
+    #[inline]
+    pub(crate) fn ratios_imaginary(&self, sh: &R) -> (R, R, R) {
+        let x = -sh.sqr();
+        let (_, xq, xr) = self.polys(&x);
+        let mut d = x.zero();
+        for c in self.delta.iter().rev() {
+            d = d * x.clone() + c.clone();
+        }
+        let one = sh.one();
+        let q = one.clone() + xq;
+        (d / q.clone(), q, one + xr)
     }
 }

@@ -99,6 +99,45 @@ fn series_reduced<R: Real>(
     Ok(((j - odd) / 2, s, c, d))
 }
 
+/// Fixed-precision types with `k` near 1 (the chain's imaginary-argument bottom, see
+/// `Chain::imaginary_eval`): with `j = round(u/K)`, `r = u − jK` formed exactly,
+/// `sn r = A/C`, `cn r = 1/C`, `dn r = D/C`; for odd `j` the quarter-period shift
+/// (DLMF 22.4.3) becomes `sn = 1/D`, `cn = −k'A/D`, `dn = k'C/D` (one quotient each, and
+/// cn keeps its relative accuracy next to its zeros); `sn`, `cn` change sign with
+/// `h = (j − (j mod 2))/2`.
+#[inline]
+fn sncndn_imaginary<R: Real>(
+    u: &R,
+    data: &ChainData<R>,
+    tri: [f64; 3],
+) -> Result<(R, R, R), SpecialError> {
+    let j = quadrant(u, data)?;
+    let r = if j == 0 {
+        u.clone()
+    } else {
+        reduce_dd(u, &data.chain.kq, j, tri)
+    };
+    let (sn, c_big, d_big) = data.chain.imaginary_eval(&r).ok_or_else(no_series)?;
+    let odd = j.rem_euclid(2);
+    let (s, c, d) = if odd == 0 {
+        (sn, c_big.recip(), d_big / c_big)
+    } else {
+        // cd = cn/dn = 1/D, −k'·sd = −k'·sn·C/D, k'·nd = k'·C/D (DLMF 22.4.3)
+        let kp = data.kp.clone();
+        let kc = kp * c_big;
+        (
+            d_big.recip(),
+            -(kc.clone() * sn / d_big.clone()),
+            kc / d_big,
+        )
+    };
+    Ok(if ((j - odd) / 2) % 2 == 0 {
+        (s, c, d)
+    } else {
+        (-s, -c, d)
+    })
+}
+
 #[cold]
 fn no_series() -> SpecialError {
     SpecialError::NoConvergence("internal: chain without a series bottom".into())
@@ -177,6 +216,7 @@ pub(crate) fn sncndn_at<R: Real>(
         return with_chain(k, comp, n + GUARD, |data| {
             match (data.tri, data.chain.series_scale()) {
                 (Some(tri), Some(scale)) => sncndn_series(u, data, tri, scale),
+                (Some(tri), None) if data.chain.has_imaginary() => sncndn_imaginary(u, data, tri),
                 _ => reduce_fixed(u, data).map(|r| r.finish()),
             }
         })?;

@@ -2,7 +2,7 @@
 //! reduced argument by climbing it (DLMF 22.7.1–3, 22.10.4–6, 19.8.12).
 
 use super::agm::agm;
-use super::fourier::{nome, Fourier, Q_MAX, Q_MAX_DEEP};
+use super::fourier::{nome, terms, Fourier, Q_IMAG, Q_MAX, Q_MAX_DEEP};
 use super::SpecialError;
 use crate::numbers::Real;
 use rug::Float;
@@ -28,6 +28,9 @@ pub(crate) struct Chain<R> {
     /// Fixed precision: the nome series at the bottom (see [`Fourier`]) and
     /// `π/(2K) = AGM(1, k')` of the top modulus, which maps `t` to `v`.
     fourier: Option<(Fourier<R>, R)>,
+    /// Fixed precision, `k` near 1: the series of `k'` at imaginary argument and
+    /// `π/(2K') = AGM(1, k)` (see [`Chain::imaginary`]).
+    imaginary: Option<(Fourier<R>, R)>,
     /// The quarter period `K(k) = (π/2)·Π(1+k_n)·(1 + k_N²/4)`.
     pub kq: R,
 }
@@ -59,6 +62,9 @@ impl<R: Real> Chain<R> {
             Some(_) => nome(k, kp)?.to_f64(),
             None => 0.0,
         };
+        if let (Some((rk, rkp)), true) = (reference, q > Q_IMAG) {
+            return Self::imaginary(k, kp, (rk, rkp));
+        }
         let mut rpair = reference.map(|(a, b)| (a.clone(), b.clone()));
         let mut levels = Vec::new();
         let (mut kc, mut kpc) = (k.clone(), kp.clone());
@@ -111,8 +117,62 @@ impl<R: Real> Chain<R> {
             kp2,
             inv_prod: prod.recip(),
             fourier,
+            imaginary: None,
             kq,
         })
+    }
+
+    /// Fixed precision, `k` near 1 (nome `q > Q_IMAG`): no Landen level; the nome
+    /// series of the complementary modulus `k'` (nome `q' = exp(π²/ln q) < 2·10⁻³`) at
+    /// imaginary argument ([`Fourier::eval_imaginary`]).  The series variable is
+    /// `w = πt/(2K')` with `π/(2K') = AGM(1, k)`, and its terms decrease like
+    /// `(q'·4 sinh²w)ⁿ ≤ √q'ⁿ` for `|t| ≤ K/2`, so it is cut after `terms(√q')` terms.
+    fn imaginary(k: &R, kp: &R, reference: (&Float, &Float)) -> Result<Self, SpecialError> {
+        let one = k.one();
+        let (rk, rkp) = reference;
+        let qc = nome(kp, k)?.to_f64();
+        let series = Fourier::with_terms(kp, k, (rkp, rk), terms(qc.sqrt()))?;
+        let scale = agm(&one, k)?;
+        let exact = agm(&Float::with_val(rk.prec(), 1), rk)?;
+        let scale = scale.clone() + scale.from_f64(exact.to_f64() - scale.to_f64());
+        let kp2 = kp.sqr();
+        Ok(Chain {
+            levels: Vec::new(),
+            k2q: k.zero(),
+            k2h: k.zero(),
+            half: one.mul_2si(-1),
+            k2: k.sqr(),
+            tiny_kp: false,
+            kp2,
+            inv_prod: one.clone(),
+            fourier: None,
+            imaginary: Some((series, scale)),
+            // K = π/(2·AGM(1, k')) (DLMF 19.8.5)
+            kq: k.pi() / agm(&one, kp)?.mul_2si(1),
+        })
+    }
+
+    /// Does this chain end in the imaginary-argument series (fixed precision, `k`
+    /// near 1)?
+    pub(crate) fn has_imaginary(&self) -> bool {
+        self.imaginary.is_some()
+    }
+
+    /// For `|t| ≤ K/2` on a chain with the imaginary-argument bottom: `(sn t, C, D)`
+    /// with `cn t = 1/C`, `dn t = D/C`, from `sn(t,k) = −i sn(it,k')/cn(it,k')`,
+    /// `cn(t,k) = 1/cn(it,k')`, `dn(t,k) = dn(it,k')/cn(it,k')` (DLMF Table 22.6.1)
+    /// and [`Fourier::ratios_imaginary`] for `k'` at `y = sinh²w`: `C = cn(it,k')`,
+    /// `D = dn(it,k')`, `sn t = tanh w·(1 + Δ/Q)`, `C = cosh w·Q`; `tanh`, `cosh` are the library
+    /// functions of `w = t·AGM(1,k)` (each within about an ulp, better than forming them
+    /// from one `expm1`); `Δ/Q`, `Q`, `D` from [`Fourier::ratios_imaginary`].
+    #[inline]
+    pub(crate) fn imaginary_eval(&self, t: &R) -> Option<(R, R, R)> {
+        let (series, scale) = self.imaginary.as_ref()?;
+        let w = t.clone() * scale.clone();
+        let (th, ch) = (w.tanh(), w.cosh());
+        let sh = th.clone() * ch.clone();
+        let (dq, q, d) = series.ratios_imaginary(&sh);
+        Some((th.clone() + th * dq, ch * q, d))
     }
 
     /// `(sn, cn, dn)(t, k)` for a reduced argument `|t| ≲ K/2`, each with relative
@@ -139,6 +199,10 @@ impl<R: Real> Chain<R> {
             let c = se.clone() - a * th.clone() * se.clone();
             let d = se.clone() + b * th * se;
             return (s, c, d);
+        }
+        if let (true, Some((sn, c, d))) = (fixed, self.imaginary_eval(t)) {
+            // (callers normally use imaginary_eval directly)
+            return (sn, c.recip(), d / c);
         }
         if let (true, Some((_, scale))) = (fixed, &self.fourier) {
             // (callers with a series bottom normally use eval_series directly)
