@@ -245,7 +245,7 @@ impl<S: Scalar> Mat2<S> {
 
 impl<C: ComplexScalar> Mat2<C> {
     /// Pauli matrix σ_k, k ∈ {1, 2, 3}:
-    /// σ₁ = [[0,1],[1,0]], σ₂ = [[0,−i],[i,0]], σ₃ = [[1,0],[0,−1]].
+    /// `σ₁ = [[0,1],[1,0]]`, `σ₂ = [[0,−i],[i,0]]`, `σ₃ = [[1,0],[0,−1]]`.
     /// Returns `None` for any other k.
     pub fn pauli(k: usize, like: &C) -> Option<Self> {
         let (o, z, i) = (like.one(), like.zero(), like.i());

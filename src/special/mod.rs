@@ -19,32 +19,53 @@
 //!   19.8.12), iterated until `k_N⁴` is below the working epsilon (quadratic
 //!   convergence: 3 steps for k = 0.8 in double, ~10 at 4096 bits).  The quarter period
 //!   follows as `K = (π/2)·Π(1+k_n)·(1+k_N²/4)`.
-//! * **sn, cn, dn of a real argument** (module `jacobi`): the argument is reduced to
-//!   `u = jK + t`, `|t| ≤ K/2`; at the bottom of the chain `sn, cn, dn(t/Π(1+k_n), k_N)`
-//!   come from `sin`/`cos` with the first-order correction DLMF 22.10.4–6, then the
-//!   chain is climbed back with DLMF 22.7.1–3, and the quadrant `j mod 4` is applied
-//!   with the quarter-period shifts DLMF 22.4.3 (`sn(t+K) = cd t`, `cn(t+K) = −k' sd t`,
-//!   `dn(t+K) = k' nd t`).  In `f64` (no guard bits) all three are carried up, written
-//!   as "value + small correction" with `1 − dn` tracked next to `dn`
-//!   (`dn = (cn₁² + (1−k₁)sn₁²)/(1+k₁sn₁²)`), so roundings scale with the correction.
-//!   With guard bits only `sn` is carried up (one reciprocal and three products per
-//!   level) and `cn = √((1−sn)(1+sn))`, `dn = √(k'² + k²cn²)` (DLMF 22.6.1) at the
-//!   top; since `cn(t) ≥ √(k'/(1+k'))` for `|t| ≤ K/2` this loses at most
-//!   `log2(1/k')` bits, which are added to the working precision.  One `sin_cos` per
-//!   call; every output keeps *relative* accuracy near its zeros (the shifts turn
-//!   zeros of cn into factors `k'·sn(t)`), which the complex case needs near its poles.
-//!   In `f64`, a modulus whose complement is below `√(ε/8)` (only reached as the
-//!   complementary modulus of a tiny `k` in the complex case) uses the `tanh`/`sech`
-//!   expansion DLMF 22.10.7–9 instead, exact to rounding there.
+//! * **sn, cn, dn of a real argument, multi-precision** (module `jacobi`): the argument
+//!   is reduced to `u = jK + t`, `|t| ≤ K/2`; at the bottom of the chain
+//!   `sn(t/Π(1+k_n), k_N)` comes from `sin`/`cos` with the first-order correction
+//!   DLMF 22.10.4–6, then only `sn` is carried up the chain (DLMF 22.7.1; one reciprocal
+//!   and three products per level) and `cn = √((1−sn)(1+sn))`, `dn = √(k'² + k²cn²)`
+//!   (DLMF 22.6.1) at the top; since `cn(t) ≥ √(k'/(1+k'))` for `|t| ≤ K/2` this loses at
+//!   most `log2(1/k')` bits, which are added to the working precision.  The quadrant
+//!   `j mod 4` is applied with the quarter-period shifts DLMF 22.4.3
+//!   (`sn(t+K) = cd t`, `cn(t+K) = −k' sd t`, `dn(t+K) = k' nd t`), which keep relative
+//!   accuracy next to the zeros (the complex case needs that near its poles).
+//! * **sn, cn, dn of a real argument, fixed precision** (`f64`, `Dual<f64>`; no guard
+//!   bits, so every rounding counts and speed matters):
+//!   - `j = round(u/K)` and `r = u − jK`, `|r| ≤ K/2`, formed exactly (Cody–Waite with a
+//!     triple-double `K`, module `reduce`);
+//!   - the chain is descended only until the nome `q = exp(−πK'/K)` is at most 0.06
+//!     (0.09 after two levels); each step squares the nome, so `k ≤ 0.8` needs at most
+//!     one level.  At the bottom the nome series DLMF 22.11.1–3 is summed as polynomials
+//!     in `x = sin²v`, `v = πt/(2K)` (module `fourier`): `sn = sin v·P(x)`,
+//!     `cn = cos v·(1 + x Q₁(x))`, `dn = 1 + x R₁(x)`, with coefficients summed in
+//!     192-bit MPFR per modulus and one `sin_cos` from the fdlibm kernel polynomials
+//!     (`Real::sin_cos_kernel`).  For odd `j`, `sin v = cos v_r`, `cos v = −sin v_r`
+//!     (`v = π/2 + v_r`), so no quotient is needed at the end; the levels above the
+//!     series are climbed with DLMF 22.7.1–3 written as "value + small correction",
+//!     with `1 − dn` tracked next to `dn`;
+//!   - `k` near 1 (`q > 0.2`, `k ≳ 0.986`): no Landen level at all; the series of the
+//!     complementary modulus (nome `q' = exp(π²/ln q) < 2.2·10⁻³`) at imaginary argument,
+//!     through Jacobi's imaginary transformation (DLMF Table 22.6.1):
+//!     `sn(t,k) = tanh w·P(−y)/Q(−y)`, `cn(t,k) = 1/(cosh w·Q(−y))`, `dn = R(−y)·cn`,
+//!     `w = πt/(2K')`, `y = sinh²w` (all terms positive, no cancellation);
+//!   - tiny `k` (`k⁴ < ε/4`) or tiny `k'` (`k'² < ε/8`, only reached as the
+//!     complementary modulus of a tiny `k` in the complex case): DLMF 22.10.4–6 resp.
+//!     the `tanh`/`sech` expansion DLMF 22.10.7–9 directly, exact to rounding there.
+//!
+//!   Measured (dense sweeps, `reports/accuracy.md`): absolute error below 2 ε for every
+//!   `k` (below 1.9 ε for `k ≥ 0.99`), every output with relative accuracy next to its
+//!   zeros.
 //!   The chain depends only on `k`; the last few chains are cached per thread for
-//!   `f64` and `rug::Float` (not for `Dual`, whose derivative parts differ per call).
+//!   `f64` and `rug::Float` (typed caches; not for `Dual`, whose derivative parts differ
+//!   per call).
 //! * **Argument reduction.**  For MPFR the working precision is raised to
 //!   `N + 40 + log2(1/k') + log2|j| + (cancellation bits of t)`, adaptively: if `t = u − jK`
 //!   cancels, the reduction is repeated with more bits.  For fixed-precision types
 //!   (`f64`, `Dual<f64>`) `K` is taken as a triple-double from a 200-bit MPFR AGM
-//!   (cached per modulus) and `t` is formed with error-free transformations (FMA),
-//!   so `t` is accurate to ~2⁻¹⁰⁰·|u| while the derivative with respect to `k` still
-//!   flows through the generic `K`.
+//!   (computed once per modulus) and `t` is formed with error-free transformations
+//!   (Cody–Waite with a 32-bit head for `|j| < 2²⁰`, FMA beyond), so `t` is accurate to
+//!   ~2⁻¹⁰⁰·|u| while the derivative with respect to `k` still flows through the
+//!   generic `K`.
 //! * **Complex argument** (module `complex`): the addition theorem DLMF 22.8.1–3 with
 //!   Jacobi's imaginary transformation (DLMF Table 22.6.1) in the form of
 //!   Abramowitz–Stegun 16.21.1–4: `sn(x+iy) = (s d₁ + i c d s₁ c₁)/(c₁² + k²s²s₁²)`,
