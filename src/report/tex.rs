@@ -123,7 +123,8 @@ fn strip_raisebox(s: &str) -> String {
 /// Display math for a printed formula: macros expanded, `eqnarray`/`equation` environments
 /// turned into `array`, labels and `\nonumber` removed, no blank lines.
 pub fn display_math(src: &str, macros: &BTreeMap<String, String>) -> String {
-    let mut s = expand_macros(src, macros);
+    // `\qed` first: the paper's macro would expand it to a `\rule`
+    let mut s = expand_macros(&src.replace("\\qed", ""), macros);
     s = drop_command(&s, "label");
     s = strip_raisebox(&s);
     s = s.replace("\\nonumber", "");
@@ -156,13 +157,53 @@ pub fn display_math(src: &str, macros: &BTreeMap<String, String>) -> String {
 
 /// Is this printed text prose (a statement with inline `$…$`) rather than a formula?
 pub fn is_prose(src: &str) -> bool {
-    src.contains('$')
+    // a `$` inside `\raisebox{..}{$…$}` belongs to a formula, not to prose
+    strip_raisebox(src).contains('$')
+}
+
+/// Split prose into (is_math, text) segments; the delimiters `$`, `$$`, `\[`, `\]` stay with
+/// their math segment.
+fn split_math(src: &str) -> Vec<(bool, String)> {
+    let mut segs: Vec<(bool, String)> = Vec::new();
+    let mut cur = String::new();
+    let mut close: Option<&str> = None; // the delimiter that ends the current math segment
+    let mut i = 0;
+    while i < src.len() {
+        let rest = &src[i..];
+        let opener = ["$$", "$", "\\["]
+            .into_iter()
+            .find(|d| close.is_none() && rest.starts_with(d));
+        if let Some(d) = opener {
+            if !cur.is_empty() {
+                segs.push((false, std::mem::take(&mut cur)));
+            }
+            cur.push_str(d);
+            close = Some(if d == "\\[" { "\\]" } else { d });
+            i += d.len();
+            continue;
+        }
+        if let Some(d) = close.filter(|d| rest.starts_with(d)) {
+            cur.push_str(d);
+            segs.push((true, std::mem::take(&mut cur)));
+            close = None;
+            i += d.len();
+            continue;
+        }
+        let c = rest.chars().next().unwrap_or(' ');
+        cur.push(c);
+        i += c.len_utf8();
+    }
+    if !cur.is_empty() {
+        segs.push((close.is_some(), cur));
+    }
+    segs
 }
 
 /// Prose statement → Markdown: inline math kept as `$…$` (macros expanded), `\ref{x}` →
 /// `(x)`, `{\rm …}`/`{\it …}` unwrapped, LaTeX line breaks and spacing normalised.
 pub fn prose(src: &str, macros: &BTreeMap<String, String>) -> String {
-    let mut s = expand_macros(src, macros);
+    // `\qed` first: the paper's macro would expand it to a `\rule`
+    let mut s = expand_macros(&src.replace("\\qed", ""), macros);
     s = drop_command(&s, "label");
     s = strip_raisebox(&s);
     // \ref{x} → (x)
@@ -182,36 +223,31 @@ pub fn prose(src: &str, macros: &BTreeMap<String, String>) -> String {
         }
     }
     out.push_str(rest);
-    let mut s = out;
-    for (a, b) in [
-        ("{\\rm(", "("),
-        ("{\\rm (", "("),
-        ("{\\it ", ""),
-        ("{\\rm ", ""),
-        ("{\\em ", ""),
-        ("\\qed", ""),
-        ("\\\\", " "),
-        ("~", " "),
-        ("--", "–"),
-    ] {
-        s = s.replace(a, b);
-    }
-    // remove now-unbalanced closing braces outside math
+    // text between the math segments: unwrap `{\rm …}` etc., drop the now-unbalanced braces;
+    // math (`$…$`, `$$…$$`, `\[…\]`) is kept verbatim (`{\rm I}` is valid there)
     let mut res = String::new();
-    let mut in_math = false;
-    let mut depth: i32 = 0;
-    for c in s.chars() {
-        match c {
-            '$' => {
-                in_math = !in_math;
-                res.push(c);
-            }
-            '{' if !in_math => depth += 1,
-            '}' if !in_math => depth -= 1,
-            _ => res.push(c),
+    for (is_math, seg) in split_math(&out) {
+        if is_math {
+            res.push_str(&seg);
+            continue;
         }
+        let mut t = seg;
+        for (a, b) in [
+            ("{\\rm(", "("),
+            ("{\\rm (", "("),
+            ("{\\it ", ""),
+            ("{\\rm ", ""),
+            ("{\\bf ", ""),
+            ("{\\em ", ""),
+            ("\\\\", " "),
+            ("~", " "),
+            ("--", "–"),
+        ] {
+            t = t.replace(a, b);
+        }
+        t.retain(|c| c != '{' && c != '}');
+        res.push_str(&t);
     }
-    let _ = depth;
     // display math inside prose (`$$…$$` or `\[…\]`) stays; collapse whitespace
     res.split_whitespace().collect::<Vec<_>>().join(" ")
 }
@@ -260,5 +296,22 @@ mod tests {
             &m(),
         );
         assert_eq!(p, "Maps defined by (impl spec) possess $M^2({\\bf M})$.");
+    }
+    #[test]
+    fn prose_keeps_math_verbatim() {
+        let mut mac = m();
+        mac.insert("rW".into(), "{\\rm W}".into());
+        let p = prose(
+            "a unique {\\it matrix} $\\rW\\in{\\rm so}(3)$, and\n\\[\n\\omega=\\frac{\\gamma}{2}\\rW^2\n\\]",
+            &mac,
+        );
+        assert_eq!(
+            p,
+            "a unique matrix ${\\rm W}\\in{\\rm so}(3)$, and \\[ \\omega=\\frac{\\gamma}{2}{\\rm W}^2 \\]"
+        );
+        mac.insert("qed".into(), "\\rule{3mm}{3mm}".into());
+        assert!(!is_prose("\\sqrt{\\raisebox{-1mm}{$1-h^2$}}"));
+        let q = prose("{\\bf Proof.} Follows for $h$ small. \\qed", &mac);
+        assert_eq!(q, "Proof. Follows for $h$ small.");
     }
 }
