@@ -1,7 +1,7 @@
 //! Times sn+cn+dn over the benchmark batch in-process (for scripts/bench_peers.py):
-//! `cargo run --release --example bench_batch -- BITS N REPEATS`
+//! `cargo run --release --example bench_batch -- BITS N REPEATS [all]`
 //! prints the median and the minimum over REPEATS of the time per evaluation in
-//! nanoseconds.  Time is wall-clock time of the batch (`std::time::Instant`): on this
+//! nanoseconds (with `all`: every batch's time per evaluation).  Time is wall-clock time of the batch (`std::time::Instant`): on this
 //! machine the per-thread CPU clocks (`/proc/thread-self/schedstat`,
 //! `CLOCK_THREAD_CPUTIME_ID`) advance in scheduler ticks of 4 ms, too coarse for a
 //! batch of a few milliseconds, so wall time over many repeats is used and both the
@@ -42,6 +42,11 @@ fn main() {
             }
         }
         times.push(t0.elapsed().as_nanos() as f64 / n as f64);
+    }
+    if a.get(4).map(String::as_str) == Some("all") {
+        let all: Vec<String> = times.iter().map(|t| t.to_string()).collect();
+        println!("{}", all.join(" "));
+        return;
     }
     times.sort_by(|a, b| a.total_cmp(b));
     println!("{} {}", times[times.len() / 2], times[0]);
