@@ -161,6 +161,10 @@ const C: [f64; 6] = [
 /// of `1 − x²/2` is recovered exactly.
 #[inline]
 fn kernel_sin_cos(x: f64) -> (f64, f64) {
+    if x == 0.0 {
+        // keeps the sign of −0.0 (the polynomial would return +0.0)
+        return (x, 1.0);
+    }
     let z = x * x;
     let w = z * z;
     let rs = S[1] + z * (S[2] + z * S[3]) + z * w * (S[4] + z * S[5]);

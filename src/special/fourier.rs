@@ -83,9 +83,33 @@ fn coefficients<S: Real>(k: &S, kp: &S, m: usize) -> Result<[Vec<S>; 3], Special
     let one = k.one();
     let zero = k.zero();
     let two = k.from_i64(2);
-    let q = nome(k, kp)?;
     let kk = k.pi() / (two.clone() * agm(&one, kp)?);
-    let pre = two.clone() * k.pi() / (k.clone() * kk.clone()) * q.sqrt();
+    // √q/k without the cancellation of √q and k (both ~ k/4 for small k), which would
+    // spoil derivative parts (e.g. d/dk through Dual numbers): below k = 1/2 in fixed
+    // precision Jacobi's series q = ε + 2ε⁵ + 15ε⁹ + 150ε¹³ + 1707ε¹⁷ + …, with
+    // ε = (1 − √k')/(2(1 + √k')) = k²/(2(1 + k')(1 + √k')²) (DLMF 22.2.2 and the
+    // expansion of the nome; the next term 20910ε²¹ is below 2⁻⁵⁷ of the sum for
+    // ε ≤ 0.018); otherwise q = exp(−πK'/K).
+    let (q, sqrt_q_over_k) = if k.prec() <= 64 && k.to_f64() < 0.5 {
+        let spk = kp.sqrt();
+        let e_over_k2 =
+            (two.clone() * (one.clone() + kp.clone()) * (one.clone() + spk).sqr()).recip();
+        let eps = e_over_k2.clone() * k.sqr();
+        let e4 = eps.sqr().sqr();
+        let series = one.clone()
+            + e4.clone()
+                * (two.clone()
+                    + e4.clone()
+                        * (k.from_i64(15)
+                            + e4.clone() * (k.from_i64(150) + e4 * k.from_i64(1707))));
+        let q_over_k2 = e_over_k2 * series;
+        (q_over_k2.clone() * k.sqr(), q_over_k2.sqrt())
+    } else {
+        let q = nome(k, kp)?;
+        let r = q.sqrt() / k.clone();
+        (q, r)
+    };
+    let pre = two.clone() * k.pi() / kk.clone() * sqrt_q_over_k;
     let dpre = two.clone() * k.pi() / kk.clone();
     let step = |cur: &[S], prev: &[S]| step_chebyshev(cur, prev, &zero, &two);
     let (mut s_prev, mut s_cur) = (vec![-one.clone()], vec![one.clone()]);
