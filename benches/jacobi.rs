@@ -1,9 +1,10 @@
-//! Criterion benchmarks of sn+cn+dn (one call returns all three): f64 and 1024-bit
+//! Criterion benchmarks of sn+cn+dn (one call returns all three; also the slice call
+//! `sncndn_many`): f64 and 1024-bit
 //! MPFR, real argument, plus complex f64.  `cargo bench --bench jacobi`.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 use eulertop::numbers::C64;
-use eulertop::special::{sncndn, sncndn_complex};
+use eulertop::special::{sncndn, sncndn_complex, sncndn_many};
 use rug::Float;
 
 /// The batch used everywhere (also by examples/bench_batch.rs and scripts/bench_peers.py):
@@ -27,6 +28,9 @@ fn bench(c: &mut Criterion) {
             }
             acc
         })
+    });
+    g.bench_function("f64 sncndn_many x1000", |b| {
+        b.iter(|| sncndn_many(black_box(&us), black_box(&0.8)).unwrap())
     });
     g.bench_function("f64 complex sncndn x1000", |b| {
         b.iter(|| {

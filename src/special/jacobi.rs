@@ -213,15 +213,69 @@ pub(crate) fn sncndn_at<R: Real>(
     n: u32,
 ) -> Result<(R, R, R), SpecialError> {
     if u.with_prec(n + GUARD).prec() < n + GUARD {
-        return with_chain(k, comp, n + GUARD, |data| {
-            match (data.tri, data.chain.series_scale()) {
-                (Some(tri), Some(scale)) => sncndn_series(u, data, tri, scale),
-                (Some(tri), None) if data.chain.has_imaginary() => sncndn_imaginary(u, data, tri),
-                _ => reduce_fixed(u, data).map(|r| r.finish()),
-            }
-        })?;
+        return with_chain(k, comp, n + GUARD, |data| sncndn_fixed(u, data))?;
     }
     reduced(u, k, comp, n).map(|r| r.finish())
+}
+
+/// Fixed precision: `(sn, cn, dn)(u)` on a given chain, by the chain's bottom.
+#[inline]
+fn sncndn_fixed<R: Real>(u: &R, data: &ChainData<R>) -> Result<(R, R, R), SpecialError> {
+    match (data.tri, data.chain.series_scale()) {
+        (Some(tri), Some(scale)) => sncndn_series(u, data, tri, scale),
+        (Some(tri), None) if data.chain.has_imaginary() => sncndn_imaginary(u, data, tri),
+        _ => reduce_fixed(u, data).map(|r| r.finish()),
+    }
+}
+
+/// [`sncndn`] for many arguments and one modulus: `(sn, cn, dn)(u_i, k)` for every
+/// `u_i` of `us`, in order.  Same algorithm and accuracy as [`sncndn`]; the modulus is
+/// checked and its chain looked up once for the whole slice (in `f64` that saves about a
+/// third of the work per argument), so this is the call for tables, orbits and plots.
+///
+/// Errors: as [`sncndn`]; an argument error names its index in `us`.
+///
+/// ```
+/// use eulertop::special::{sncndn, sncndn_many};
+/// let us = [0.1_f64, 0.7, 2.5, -40.0];
+/// let many = sncndn_many(&us, &0.8).unwrap();
+/// for (u, v) in us.iter().zip(&many) {
+///     assert_eq!(*v, sncndn(u, &0.8).unwrap());
+/// }
+/// assert!(sncndn_many(&[0.1, f64::NAN], &0.8).unwrap_err().to_string().contains("u[1]"));
+/// ```
+pub fn sncndn_many<R: Real>(us: &[R], k: &R) -> Result<Vec<(R, R, R)>, SpecialError> {
+    check_modulus(k)?;
+    let name = |i: usize| format!("u[{i}]");
+    if let Some(i) = us.iter().position(|u| !u.is_finite()) {
+        check_finite(&us[i], &name(i))?;
+    }
+    let indexed = |i: usize, e: SpecialError| match e {
+        SpecialError::ArgumentTooLarge(m) => {
+            SpecialError::ArgumentTooLarge(format!("{}: {m}", name(i)))
+        }
+        other => other,
+    };
+    let n = k.prec();
+    let fixed = us
+        .first()
+        .is_some_and(|u| u.prec() == n && u.with_prec(n + GUARD).prec() < n + GUARD);
+    if fixed {
+        return with_chain(k, false, n + GUARD, |data| {
+            let mut out = Vec::with_capacity(us.len());
+            for (i, u) in us.iter().enumerate() {
+                match sncndn_fixed(u, data) {
+                    Ok(v) => out.push(v),
+                    Err(e) => return Err(indexed(i, e)),
+                }
+            }
+            Ok(out)
+        })?;
+    }
+    us.iter()
+        .enumerate()
+        .map(|(i, u)| sncndn(u, k).map_err(|e| indexed(i, e)))
+        .collect()
 }
 
 /// Reduced evaluation `u = jK + t`.  Fixed-precision types take one pass

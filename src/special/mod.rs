@@ -104,7 +104,7 @@ pub use agm::{ellipk, ellipkp};
 pub use complex::sncndn_complex;
 pub use ellint::ellipf;
 pub use inverse::jacobi_inverse;
-pub use jacobi::{am, sncndn};
+pub use jacobi::{am, sncndn, sncndn_many};
 
 use crate::numbers::Real;
 
