@@ -73,30 +73,27 @@ fn sncndn_series<R: Real>(
     tri: [f64; 3],
     scale: &R,
 ) -> Result<(R, R, R), SpecialError> {
-    let (h, s, c, d) = series_reduced(u, data, tri, scale)?;
-    Ok(if h % 2 == 0 { (s, c, d) } else { (-s, -c, d) })
-}
-
-/// The reduction of [`sncndn_series`]: `h` and `(sn, cn, dn)(t)` for `u = 2hK + t`,
-/// `|t| ≤ 3K/2`.
-#[inline]
-fn series_reduced<R: Real>(
-    u: &R,
-    data: &ChainData<R>,
-    tri: [f64; 3],
-    scale: &R,
-) -> Result<(i64, R, R, R), SpecialError> {
     let j = quadrant(u, data)?;
-    let r = if j == 0 {
-        u.clone()
-    } else {
-        reduce_dd(u, &data.chain.kq, j, tri)
-    };
+    let r = remainder(u, data, j, tri);
     let (sr, cr) = (r * scale.clone()).sin_cos_kernel();
     let odd = j.rem_euclid(2);
     let (sv, cv) = if odd == 0 { (sr, cr) } else { (cr, -sr) };
     let (s, c, d) = data.chain.eval_series(&sv, &cv).ok_or_else(no_series)?;
-    Ok(((j - odd) / 2, s, c, d))
+    Ok(if ((j - odd) / 2) % 2 == 0 {
+        (s, c, d)
+    } else {
+        (-s, -c, d)
+    })
+}
+
+/// `u − jK` formed exactly with the triple-double `K` ([`reduce_dd`]); `u` for `j = 0`.
+#[inline]
+fn remainder<R: Real>(u: &R, data: &ChainData<R>, j: i64, tri: [f64; 3]) -> R {
+    if j == 0 {
+        u.clone()
+    } else {
+        reduce_dd(u, &data.chain.kq, j, tri)
+    }
 }
 
 /// Fixed-precision types with `k` near 1 (the chain's imaginary-argument bottom, see
@@ -112,11 +109,7 @@ fn sncndn_imaginary<R: Real>(
     tri: [f64; 3],
 ) -> Result<(R, R, R), SpecialError> {
     let j = quadrant(u, data)?;
-    let r = if j == 0 {
-        u.clone()
-    } else {
-        reduce_dd(u, &data.chain.kq, j, tri)
-    };
+    let r = remainder(u, data, j, tri);
     let (sn, c_big, d_big) = data.chain.imaginary_eval(&r).ok_or_else(no_series)?;
     let odd = j.rem_euclid(2);
     let (s, c, d) = if odd == 0 {
@@ -150,10 +143,9 @@ fn no_series() -> SpecialError {
 fn reduce_fixed<R: Real>(u: &R, data: &ChainData<R>) -> Result<Reduced<R>, SpecialError> {
     let kq = &data.chain.kq;
     let j = quadrant(u, data)?;
-    let t = match (j, data.tri) {
-        (0, _) => u.clone(),
-        (_, Some(tri)) => reduce_dd(u, kq, j, tri),
-        (_, None) => u.clone() - u.from_i64(j) * kq.clone(),
+    let t = match data.tri {
+        Some(tri) => remainder(u, data, j, tri),
+        None => u.clone() - u.from_i64(j) * kq.clone(),
     };
     let (s, c, d) = data.chain.eval(&t, true);
     Ok(Reduced {
