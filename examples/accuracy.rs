@@ -35,6 +35,16 @@ fn err(got: &Float, want: &str, n: u32, relative: bool) -> f64 {
     (d / scale * Float::with_val(64, Float::u_exp(1, n as i32 - 1))).to_f64()
 }
 
+/// Maximum error and row count per (row key, precision).
+type Table = BTreeMap<String, BTreeMap<u32, (f64, usize)>>;
+
+/// Adds one measured error `e` at precision `n` to the row `key` of `t`.
+fn record(t: &mut Table, key: String, n: u32, e: f64) {
+    let ent = t.entry(key).or_default().entry(n).or_insert((0.0, 0));
+    ent.0 = ent.0.max(e);
+    ent.1 += 1;
+}
+
 fn need(n: u32) -> usize {
     (n as f64 * std::f64::consts::LOG10_2).ceil() as usize + 3
 }
@@ -59,7 +69,7 @@ fn main() {
     println!("Rows per cell in parentheses.  Large |u| (up to 10^4 K) is included.\n");
 
     // real
-    let mut by_k: BTreeMap<String, BTreeMap<u32, (f64, usize)>> = BTreeMap::new();
+    let mut by_k = Table::new();
     for r in &real {
         let kf: f64 = r[0].parse().unwrap();
         let digits: usize = r[2].parse().unwrap();
@@ -80,13 +90,7 @@ fn main() {
                     e = e.max(err(&g, w, n, false));
                 }
             }
-            let ent = by_k
-                .entry(format!("{kf:e}"))
-                .or_default()
-                .entry(n)
-                .or_insert((0.0, 0));
-            ent.0 = ent.0.max(e);
-            ent.1 += 1;
+            record(&mut by_k, format!("{kf:e}"), n, e);
         }
     }
     print_table(
@@ -95,7 +99,7 @@ fn main() {
         &by_k,
     );
 
-    let mut by_k: BTreeMap<String, BTreeMap<u32, (f64, usize)>> = BTreeMap::new();
+    let mut by_k = Table::new();
     for r in &cplx {
         let kf: f64 = r[0].parse().unwrap();
         let digits: usize = r[3].parse().unwrap();
@@ -119,13 +123,7 @@ fn main() {
             for (g, w) in vals.iter().zip(&r[4..10]) {
                 e = e.max(err(g, w, n, true));
             }
-            let ent = by_k
-                .entry(format!("{kf:e}"))
-                .or_default()
-                .entry(n)
-                .or_insert((0.0, 0));
-            ent.0 = ent.0.max(e);
-            ent.1 += 1;
+            record(&mut by_k, format!("{kf:e}"), n, e);
         }
     }
     print_table(
@@ -134,7 +132,7 @@ fn main() {
         &by_k,
     );
 
-    let mut by_f: BTreeMap<String, BTreeMap<u32, (f64, usize)>> = BTreeMap::new();
+    let mut by_f = Table::new();
     for r in &ell {
         let digits: usize = r[3].parse().unwrap();
         for &n in &precs {
@@ -159,13 +157,7 @@ fn main() {
                 .unwrap()
             };
             let e = err(&got, &r[4], n, true);
-            let ent = by_f
-                .entry(r[0].clone())
-                .or_default()
-                .entry(n)
-                .or_insert((0.0, 0));
-            ent.0 = ent.0.max(e);
-            ent.1 += 1;
+            record(&mut by_f, r[0].clone(), n, e);
         }
     }
     print_table(
@@ -189,7 +181,7 @@ fn main() {
     println!("  had eroded the relative accuracy of the tiny cn, dn (≈ 28 ε before).");
 }
 
-fn print_table(title: &str, precs: &[u32], t: &BTreeMap<String, BTreeMap<u32, (f64, usize)>>) {
+fn print_table(title: &str, precs: &[u32], t: &Table) {
     println!("## {title}\n");
     print!("| k |");
     for n in precs {
