@@ -1,7 +1,7 @@
 //! Jacobi elliptic functions sn, cn, dn and the amplitude am of a real argument.
 
 use super::reduce::{reduce_dd, with_chain, ChainData};
-use super::{check_finite, check_modulus, show, SpecialError, GUARD};
+use super::{check_finite, check_modulus, is_fixed, show, SpecialError, GUARD};
 use crate::numbers::Real;
 
 /// A reduced evaluation: `u = j·K + t`, `|t| ≲ K/2`, with `s, c, d = sn, cn, dn(t)`
@@ -79,11 +79,18 @@ fn sncndn_series<R: Real>(
     let odd = j.rem_euclid(2);
     let (sv, cv) = if odd == 0 { (sr, cr) } else { (cr, -sr) };
     let (s, c, d) = data.chain.eval_series(&sv, &cv).ok_or_else(no_series)?;
-    Ok(if ((j - odd) / 2) % 2 == 0 {
+    Ok(half_period_sign(j, (s, c, d)))
+}
+
+/// `(sn, cn, dn)(u)` from the values at `t = u − 2hK`, `2h = j − (j mod 2)`: sn and cn
+/// change sign with `h` (DLMF 22.4.3, `sn(t + 2K) = −sn t`, `cn(t + 2K) = −cn t`).
+#[inline]
+fn half_period_sign<R: Real>(j: i64, (s, c, d): (R, R, R)) -> (R, R, R) {
+    if (j - j.rem_euclid(2)) / 2 % 2 == 0 {
         (s, c, d)
     } else {
         (-s, -c, d)
-    })
+    }
 }
 
 /// `u − jK` formed exactly with the triple-double `K` ([`reduce_dd`]); `u` for `j = 0`.
@@ -98,10 +105,9 @@ fn remainder<R: Real>(u: &R, data: &ChainData<R>, j: i64, tri: [f64; 3]) -> R {
 
 /// Fixed-precision types with `k` near 1 (the chain's imaginary-argument bottom, see
 /// `Chain::imaginary_eval`): with `j = round(u/K)`, `r = u − jK` formed exactly,
-/// `sn r = A/C`, `cn r = 1/C`, `dn r = D/C`; for odd `j` the quarter-period shift
-/// (DLMF 22.4.3) becomes `sn = 1/D`, `cn = −k'A/D`, `dn = k'C/D` (one quotient each, and
-/// cn keeps its relative accuracy next to its zeros); `sn`, `cn` change sign with
-/// `h = (j − (j mod 2))/2`.
+/// `cn r = 1/C`, `dn r = D/C`; for odd `j` the quarter-period shift (DLMF 22.4.3)
+/// becomes `sn = 1/D`, `cn = −k'·sn r·C/D`, `dn = k'C/D` (one quotient each, and cn keeps
+/// its relative accuracy next to its zeros); then [`half_period_sign`].
 #[inline]
 fn sncndn_imaginary<R: Real>(
     u: &R,
@@ -124,11 +130,7 @@ fn sncndn_imaginary<R: Real>(
             kc / d_big,
         )
     };
-    Ok(if ((j - odd) / 2) % 2 == 0 {
-        (s, c, d)
-    } else {
-        (-s, -c, d)
-    })
+    Ok(half_period_sign(j, (s, c, d)))
 }
 
 #[cold]
@@ -204,7 +206,7 @@ pub(crate) fn sncndn_at<R: Real>(
     comp: bool,
     n: u32,
 ) -> Result<(R, R, R), SpecialError> {
-    if u.with_prec(n + GUARD).prec() < n + GUARD {
+    if is_fixed(u, n + GUARD) {
         return with_chain(k, comp, n + GUARD, |data| sncndn_fixed(u, data))?;
     }
     reduced(u, k, comp, n).map(|r| r.finish())
@@ -251,7 +253,7 @@ pub fn sncndn_many<R: Real>(us: &[R], k: &R) -> Result<Vec<(R, R, R)>, SpecialEr
     let n = k.prec();
     let fixed = us
         .first()
-        .is_some_and(|u| u.prec() == n && u.with_prec(n + GUARD).prec() < n + GUARD);
+        .is_some_and(|u| u.prec() == n && is_fixed(u, n + GUARD));
     if fixed {
         return with_chain(k, false, n + GUARD, |data| {
             let mut out = Vec::with_capacity(us.len());
@@ -281,7 +283,7 @@ pub(crate) fn reduced<R: Real>(
     comp: bool,
     n: u32,
 ) -> Result<Reduced<R>, SpecialError> {
-    if u.with_prec(n + GUARD).prec() < n + GUARD {
+    if is_fixed(u, n + GUARD) {
         return with_chain(k, comp, n + GUARD, |data| reduce_fixed(u, data))?;
     }
     // cn from sn at the top of the chain loses up to log2(1/k') bits (see landen.rs);

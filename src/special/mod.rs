@@ -170,5 +170,11 @@ pub(crate) fn show<R: Real>(x: &R) -> String {
     }
 }
 
+/// Is `x`'s type of fixed precision (`f64`, `Dual<f64>`), i.e. unable to hold `bits`?
+/// Such types get no guard bits and take the fixed-precision algorithms.
+pub(crate) fn is_fixed<R: Real>(x: &R, bits: u32) -> bool {
+    x.with_prec(bits).prec() < bits
+}
+
 /// Guard bits added to the working precision of every multi-precision evaluation.
 pub(crate) const GUARD: u32 = 40;

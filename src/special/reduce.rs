@@ -183,7 +183,7 @@ fn build<R: Real>(k0: &R, comp: bool, w: u32) -> Result<ChainData<R>, SpecialErr
     let kpw = super::agm::complementary(&kw);
     let (k, kp) = if comp { (kpw, kw) } else { (kw, kpw) };
     // fixed precision: the exact top modulus pair at 192 bits for the nome series
-    let fixed = k0.with_prec(w).prec() < w;
+    let fixed = super::is_fixed(k0, w);
     let reference = fixed.then(|| {
         let bits = 192;
         let k0f = Float::with_val(bits, k0.to_f64());
