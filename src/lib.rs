@@ -4,7 +4,7 @@
 //! *Integrable discretizations of the Euler top* (1998).
 //!
 //! Layers, each depending only on the ones before it:
-//! numbers → special functions → model → claims → outputs.
+//! numbers and stats → special functions → model → claims → outputs.
 
 #![warn(missing_docs)]
 // `Scalar::from_i64(&self, ..)` takes `&self` on purpose: precision travels with values.
@@ -17,3 +17,4 @@ pub mod model;
 pub mod numbers;
 pub mod report;
 pub mod special;
+pub mod stats;
