@@ -74,9 +74,15 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         .ok_or_else(|| CliError(format!("no claim with id '{}'", args.id)))?;
     let mut out = stdout();
     let err = write_error("standard output");
-    writeln!(out, "{} ({}, {})", claim.id, claim.location, claim.kind.name())
-        .and_then(|()| writeln!(out, "{:>8}  {:>14}", "bits", "residual"))
-        .map_err(&err)?;
+    writeln!(
+        out,
+        "{} ({}, {})",
+        claim.id,
+        claim.location,
+        claim.kind.name()
+    )
+    .and_then(|()| writeln!(out, "{:>8}  {:>14}", "bits", "residual"))
+    .map_err(&err)?;
     let bar = std::io::stderr()
         .is_terminal()
         .then(|| indicatif::ProgressBar::new(bits.len() as u64 + 1));
