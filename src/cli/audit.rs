@@ -3,7 +3,7 @@
 
 use super::verify::{fmt_log2, load, parse_bits};
 use super::CliError;
-use crate::claims::verdict::{run_claim, Options};
+use crate::claims::verdict::{run_claim, Options, Rung};
 use clap::Parser;
 use std::io::IsTerminal;
 
@@ -71,10 +71,10 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         let rung = r.residuals.first();
         let cell = match rung {
             None => format!("- ({})", r.reason),
-            Some(x) if r.kind == "asymptotic" => format!("slope {:.3}", x.residual),
-            Some(x) => fmt_log2(x.log2),
+            Some(Rung::Slope { slope, .. }) => format!("slope {slope:.3}"),
+            Some(x) => fmt_log2(x.log2()),
         };
-        if let Some(l) = rung.and_then(|x| x.log2) {
+        if let Some(l) = rung.and_then(|x| x.log2()) {
             xs.push(f64::from(b));
             ys.push(-l);
         }
@@ -103,7 +103,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     println!(
         "verdict: {} (expect {}): {}",
         full.verdict.name(),
-        full.expect.clone().unwrap_or_else(|| "-".into()),
+        full.expect.map_or("-", |v| v.name()),
         full.reason
     );
     Ok(i32::from(!full.as_expected))
