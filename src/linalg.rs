@@ -1,9 +1,25 @@
 //! Small dense linear algebra over any [`Scalar`]: 3-vectors, 3×3 matrices and 2×2
-//! matrices (used with complex scalars for su(2)).  Part of the numbers layer: it
-//! knows nothing about the Euler top.
+//! matrices (used with complex scalars for su(2)), and in [`newton`] Gaussian elimination
+//! and Newton's method for small square systems.  Part of the numbers layer: it knows
+//! nothing about the Euler top.
+
+pub mod newton;
 
 use crate::numbers::{ComplexScalar, Scalar};
 use std::ops::{Add, Mul, Neg, Sub};
+
+/// The ring operations that sums, products, determinants and commutators need.  Every
+/// [`Scalar`] has them, and so has [`crate::numbers::Cplx`] over any ordered scalar
+/// (exact rationals included), so a `Mat2<Cplx<T>>` works for every backend.
+pub trait Ring:
+    Clone + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Neg<Output = Self>
+{
+}
+
+impl<T> Ring for T where
+    T: Clone + Add<Output = T> + Sub<Output = T> + Mul<Output = T> + Neg<Output = T>
+{
+}
 
 /// A column 3-vector.
 #[derive(Clone, Debug, PartialEq)]
@@ -195,18 +211,10 @@ impl<S: Scalar> Mul for Mat3<S> {
     }
 }
 
-impl<S: Scalar> Mat2<S> {
+impl<S: Ring> Mat2<S> {
     /// Build from a function of (row, column).
     pub fn from_fn(mut f: impl FnMut(usize, usize) -> S) -> Self {
         Mat2(std::array::from_fn(|i| std::array::from_fn(|j| f(i, j))))
-    }
-    /// The zero matrix.
-    pub fn zeros(like: &S) -> Self {
-        Self::from_fn(|_, _| like.zero())
-    }
-    /// The identity matrix.
-    pub fn identity(like: &S) -> Self {
-        Self::from_fn(|i, j| if i == j { like.one() } else { like.zero() })
     }
     /// `s · self`.
     pub fn scale(&self, s: &S) -> Self {
@@ -216,6 +224,29 @@ impl<S: Scalar> Mat2<S> {
     pub fn det(&self) -> S {
         let m = &self.0;
         m[0][0].clone() * m[1][1].clone() - m[0][1].clone() * m[1][0].clone()
+    }
+    /// Transpose.
+    pub fn transpose(&self) -> Self {
+        Self::from_fn(|i, j| self.0[j][i].clone())
+    }
+    /// Trace.
+    pub fn trace(&self) -> S {
+        self.0[0][0].clone() + self.0[1][1].clone()
+    }
+    /// Commutator `[self, o]`.
+    pub fn commutator(&self, o: &Self) -> Self {
+        self.clone() * o.clone() - o.clone() * self.clone()
+    }
+}
+
+impl<S: Scalar> Mat2<S> {
+    /// The zero matrix.
+    pub fn zeros(like: &S) -> Self {
+        Self::from_fn(|_, _| like.zero())
+    }
+    /// The identity matrix.
+    pub fn identity(like: &S) -> Self {
+        Self::from_fn(|i, j| if i == j { like.one() } else { like.zero() })
     }
     /// Inverse; `None` when the determinant is exactly zero.
     pub fn inverse(&self) -> Option<Self> {
@@ -228,10 +259,6 @@ impl<S: Scalar> Mat2<S> {
             [m[1][1].clone() / d.clone(), -m[0][1].clone() / d.clone()],
             [-m[1][0].clone() / d.clone(), m[0][0].clone() / d],
         ]))
-    }
-    /// Commutator `[self, o]`.
-    pub fn commutator(&self, o: &Self) -> Self {
-        self.clone() * o.clone() - o.clone() * self.clone()
     }
     /// Largest entry magnitude, as f64.
     pub fn max_magnitude(&self) -> f64 {
@@ -258,25 +285,25 @@ impl<C: ComplexScalar> Mat2<C> {
     }
 }
 
-impl<S: Scalar> Add for Mat2<S> {
+impl<S: Ring> Add for Mat2<S> {
     type Output = Self;
     fn add(self, o: Self) -> Self {
         Self::from_fn(|i, j| self.0[i][j].clone() + o.0[i][j].clone())
     }
 }
-impl<S: Scalar> Sub for Mat2<S> {
+impl<S: Ring> Sub for Mat2<S> {
     type Output = Self;
     fn sub(self, o: Self) -> Self {
         Self::from_fn(|i, j| self.0[i][j].clone() - o.0[i][j].clone())
     }
 }
-impl<S: Scalar> Neg for Mat2<S> {
+impl<S: Ring> Neg for Mat2<S> {
     type Output = Self;
     fn neg(self) -> Self {
         Self::from_fn(|i, j| -self.0[i][j].clone())
     }
 }
-impl<S: Scalar> Mul for Mat2<S> {
+impl<S: Ring> Mul for Mat2<S> {
     type Output = Self;
     fn mul(self, o: Self) -> Self {
         Self::from_fn(|i, j| {

@@ -1,13 +1,17 @@
 //! Coverage: every `\label` of the paper, every numbered environment and the Corollary
-//! has at least one claim in the catalogue.  Labels are read from the paper when
-//! `../shared/paper/…tex` is present; the checked-in list `tests/data/paper_labels.txt`
-//! keeps the test meaningful without it (and is itself checked against the paper).
+//! has at least one claim in the catalogue.  Labels are read from the paper's LaTeX
+//! source when the environment variable `EULERTOP_PAPER` names it; the checked-in list
+//! `tests/data/paper_labels.txt` keeps the test meaningful without it (and is itself
+//! checked against the paper when it is given).
 
+use eulertop::bindings::euler_top::registry;
 use eulertop::claims::catalogue::{coverage, latex_labels, load_dir};
-use eulertop::cli::verify::catalogue_registry;
 use std::path::Path;
 
-const PAPER: &str = "../shared/paper/bobenko-lorbeer-suris-euler-top.tex";
+/// The paper's LaTeX source, if `EULERTOP_PAPER` names a readable file.
+fn paper() -> Option<String> {
+    std::fs::read_to_string(std::env::var_os("EULERTOP_PAPER")?).ok()
+}
 
 fn checked_in_labels() -> Vec<String> {
     include_str!("data/paper_labels.txt")
@@ -38,7 +42,7 @@ const ENVIRONMENTS: [&str; 13] = [
 fn checked_in_label_list_matches_the_paper() {
     let list = checked_in_labels();
     assert_eq!(list.len(), 96, "the paper has 96 labels");
-    if let Ok(tex) = std::fs::read_to_string(PAPER) {
+    if let Some(tex) = paper() {
         assert_eq!(
             latex_labels(&tex),
             list,
@@ -63,13 +67,13 @@ fn checked_in_label_list_matches_the_paper() {
 
 #[test]
 fn every_label_and_environment_has_a_claim() {
-    let cat = match load_dir(Path::new("identities"), catalogue_registry()) {
+    let cat = match load_dir(Path::new("identities"), registry().unwrap()) {
         Ok(c) => c,
         Err(e) => panic!("catalogue does not load:\n{e}"),
     };
-    let labels = match std::fs::read_to_string(PAPER) {
-        Ok(tex) => latex_labels(&tex),
-        Err(_) => checked_in_labels(),
+    let labels = match paper() {
+        Some(tex) => latex_labels(&tex),
+        None => checked_in_labels(),
     };
     let cov = coverage(&cat);
     let missing: Vec<&String> = labels.iter().filter(|l| !cov.contains_key(*l)).collect();

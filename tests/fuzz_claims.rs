@@ -7,13 +7,12 @@
 //! 2,000 cases per property in the default suite; `cargo test --release --test
 //! fuzz_claims -- --ignored` runs 10⁵ (see the README).  A failure prints the input.
 
-use eulertop::claims::builtins::BUILTINS;
+use eulertop::claims::builtins::Builtin;
 use eulertop::claims::catalogue::load_sources;
 use eulertop::claims::eval::Evaluator;
 use eulertop::claims::lexer::lex;
 use eulertop::claims::parser::{parse_bindings, parse_expr};
 use eulertop::claims::registry::Registry;
-use eulertop::cli::verify::catalogue_registry;
 use proptest::prelude::*;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -204,7 +203,7 @@ fn generate(seed: u64, depth: usize, model: &[(String, usize, String)]) -> Strin
 }
 
 /// Evaluates `src` with the variables of [`BINDINGS`] bound, at the precision of `like`.
-fn evaluate<T: eulertop::claims::backend::Num>(reg: &Registry, like: T, src: &str) {
+fn evaluate<T: eulertop::claims::eval::Backend>(reg: &Registry, like: T, src: &str) {
     let Ok(e) = parse_expr(src) else { return };
     let mut ev = Evaluator::new(reg, like);
     for b in parse_bindings(BINDINGS).expect("bindings parse") {
@@ -234,7 +233,7 @@ fn check(src: &str) {
 fn tokens() -> Vec<String> {
     let syms = "+ - * / ^ ( ) [ ] , < > <= >= == != = ; ' \n # if then else and or not";
     let mut t: Vec<String> = syms.split(' ').map(String::from).collect();
-    t.extend(BUILTINS.iter().map(|s| s.to_string()));
+    t.extend(Builtin::ALL.iter().map(|b| b.name().to_string()));
     t.extend(LITERALS.iter().map(|s| s.to_string()));
     t.extend(VARS.iter().map(|v| v.1.to_string()));
     t.extend(catalogue_registry().registered().into_iter().map(|r| r.0));
@@ -252,8 +251,8 @@ fn config(cases: u32) -> ProptestConfig {
 /// The generator covers every built-in, so a new one cannot escape the fuzzing.
 #[test]
 fn signatures_cover_every_builtin() {
-    for b in BUILTINS {
-        let covered = SIGS.iter().any(|s| s.0 == *b) || SPECIAL.contains(b);
+    for b in Builtin::ALL.iter().map(|b| b.name()) {
+        let covered = SIGS.iter().any(|s| s.0 == b) || SPECIAL.contains(&b);
         assert!(covered, "built-in '{b}' missing from the fuzz signatures");
     }
 }
@@ -302,4 +301,9 @@ fn long_run_100k_cases() {
     byte_strings(100_000);
     token_soups(100_000);
     expressions(100_000);
+}
+
+/// The catalogue's registry (the model's functions).
+fn catalogue_registry() -> Registry {
+    eulertop::bindings::euler_top::registry().expect("the model's registry builds")
 }

@@ -1,18 +1,26 @@
-//! The scalar backends of the evaluator: one trait, [`Num`], implemented for `f64`,
-//! [`rug::Float`] (any precision), [`Dual<f64>`], [`Dual<rug::Float>`] (derivatives) and
-//! [`Rational`] (exact).  Transcendental operations on rationals are errors (the claim is
-//! then not rational and cannot be proved exactly); nothing is approximated silently.
+//! The scalar backends of the evaluator: one trait, [`Num`], for every number system the
+//! language computes in.
+//!
+//! [`Num`] is purely scalar: the field operations and the order come from
+//! [`Scalar`] + `PartialOrd`, and the trait adds the language's functions of scalars
+//! (elementary, elliptic) as fallible operations.  Every real type ([`Real`]: `f64`,
+//! [`rug::Float`] at any precision, [`Dual`](crate::numbers::Dual) over either) is a
+//! backend through one blanket implementation; exact rationals ([`Rational`]) implement
+//! only what is exact and leave the rest to the defaults, which fail with a message
+//! naming the function ("ln is not available in exact rational arithmetic").  Nothing is
+//! approximated silently.
+//!
+//! A backend without transcendental functions (a symbolic one, say) does the same as
+//! [`Rational`]: implement [`Num`] with [`Num::real_fn`] for what it can do and keep the
+//! defaults for the rest.  How a backend calls registered functions and differentiates
+//! are separate traits ([`crate::claims::registry::HostCall`],
+//! [`crate::claims::eval::Differentiate`]).
 
-use super::ast::Expr;
-use super::eval::{derive_with, EvalError, Evaluator};
-use super::registry::ExtFunction;
-use super::value::{Cx, Value};
-use crate::numbers::{Cplx, Dual, Rational, Real, Scalar};
+use crate::numbers::{Cplx, Rational, Real, Scalar};
 use crate::special;
-use num_traits::{Signed, ToPrimitive};
-use rug::Float;
+use num_traits::Signed;
 
-/// Elementary real functions of the language.
+/// Elementary real functions of one argument.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum RealFn {
     /// √x (error for x < 0)
@@ -47,10 +55,42 @@ pub enum RealFn {
     Floor,
 }
 
+/// Real functions of two arguments.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RealFn2 {
+    /// `atan2(y, x)`, the four-quadrant arc tangent.
+    Atan2,
+    /// `x^y` for a real, not necessarily integer, `y` (x > 0).
+    Pow,
+}
+
+impl RealFn2 {
+    /// How the function is named in "not available" messages.
+    fn what(self) -> &'static str {
+        match self {
+            RealFn2::Atan2 => "atan2",
+            RealFn2::Pow => "a non-integer power",
+        }
+    }
+}
+
+/// Named constants.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Constant {
+    /// π.
+    Pi,
+}
+
 /// A scalar type the evaluator can compute with.
+///
+/// Every method but [`Num::real_fn`] has a default that fails with
+/// "`what` is not available in [`Num::ARITHMETIC`]", so a backend states only what it can
+/// compute.
 pub trait Num: Scalar + PartialOrd {
-    /// Is this the exact (rational) backend?
+    /// Is this an exact backend (no rounding: a zero is a proof)?
     const EXACT: bool;
+    /// The arithmetic, for messages: "exact rational arithmetic".
+    const ARITHMETIC: &'static str;
     /// Converts a literal as written (`0.1` is exactly 1/10 for rationals, correctly
     /// rounded at the working precision otherwise).
     fn lit(&self, s: &str) -> Result<Self, String> {
@@ -62,51 +102,51 @@ pub trait Num: Scalar + PartialOrd {
         }
         self.parse_like(s).map_err(|e| e.to_string())
     }
-    /// An elementary function.
+    /// An elementary function of one argument.
     fn real_fn(&self, f: RealFn) -> Result<Self, String>;
-    /// `atan2(self, x)`.
-    fn atan2_(&self, x: &Self) -> Result<Self, String>;
-    /// π at this precision.
-    fn pi_(&self) -> Result<Self, String>;
-    /// `self^y` for real y, self > 0.
-    fn powf_(&self, y: &Self) -> Result<Self, String>;
-    /// The value rounded to f64.
-    fn to_f64_(&self) -> f64;
-    /// Not NaN or infinite.
-    fn finite(&self) -> bool;
-    /// log2 |self| without underflow (−∞ for zero).
-    fn log2_abs(&self) -> f64;
-    /// `(sn, cn, dn)` of real `u`, modulus `k`.
-    fn sncndn(u: &Self, k: &Self) -> Result<[Self; 3], String>;
-    /// `(sn, cn, dn)` of complex `u`, real modulus `k`.
-    fn sncndn_c(u: &Cx<Self>, k: &Self) -> Result<[Cx<Self>; 3], String>;
-    /// Amplitude am(u, k).
-    fn am(u: &Self, k: &Self) -> Result<Self, String>;
-    /// Complete elliptic integral K(k).
-    fn ellipk(k: &Self) -> Result<Self, String>;
-    /// Incomplete elliptic integral F(φ, k).
-    fn ellipf(phi: &Self, k: &Self) -> Result<Self, String>;
-    /// Complementary complete integral K'(k) = K(√(1−k²)).
-    fn ellipkp(k: &Self) -> Result<Self, String>;
-    /// The real u in (−2K, 2K] with the given sn, cn, dn.
-    fn jacobi_inverse(s: &Self, c: &Self, d: &Self, k: &Self) -> Result<Self, String>;
-    /// Calls a registered function on this backend.
-    fn ext_call(f: &dyn ExtFunction, args: &[Value<Self>]) -> Result<Value<Self>, String>;
-    /// Evaluates `d(body, var[, comp])` (forward-mode AD in the matching dual backend).
-    /// Duals (nested derivatives) and rationals cannot differentiate: an error.
-    fn derive_in(
-        _ev: &Evaluator<'_, Self>,
-        _body: &Expr,
-        var: &str,
-        _comp: Option<i64>,
-    ) -> Result<Value<Self>, EvalError> {
-        Err(EvalError {
-            message: format!(
-                "d(..., {var}): nested derivatives and exact derivatives are not supported"
-            ),
-            span: None,
-        })
+    /// A real function of two arguments: `f(self, y)`.
+    fn real_fn2(&self, f: RealFn2, _y: &Self) -> Result<Self, String> {
+        unavailable::<Self, _>(f.what())
     }
+    /// A named constant at the precision of `self`.
+    fn constant(&self, c: Constant) -> Result<Self, String> {
+        match c {
+            Constant::Pi => unavailable::<Self, _>("pi"),
+        }
+    }
+    /// `[sn, cn, dn]` of real `u`, modulus `k`.
+    fn sncndn(_u: &Self, _k: &Self) -> Result<[Self; 3], String> {
+        unavailable::<Self, _>("sn/cn/dn")
+    }
+    /// `[sn, cn, dn]` of complex `u`, real modulus `k`.
+    fn sncndn_complex(_u: &Cplx<Self>, _k: &Self) -> Result<[Cplx<Self>; 3], String> {
+        unavailable::<Self, _>("sn/cn/dn")
+    }
+    /// Amplitude am(u, k).
+    fn am(_u: &Self, _k: &Self) -> Result<Self, String> {
+        unavailable::<Self, _>("am")
+    }
+    /// Complete elliptic integral K(k).
+    fn ellipk(_k: &Self) -> Result<Self, String> {
+        unavailable::<Self, _>("K")
+    }
+    /// Incomplete elliptic integral F(φ, k).
+    fn ellipf(_phi: &Self, _k: &Self) -> Result<Self, String> {
+        unavailable::<Self, _>("F")
+    }
+    /// Complementary complete integral K'(k) = K(√(1−k²)).
+    fn ellipkp(_k: &Self) -> Result<Self, String> {
+        unavailable::<Self, _>("Kp")
+    }
+    /// The real u in (−2K, 2K] with the given sn, cn, dn.
+    fn jacobi_inverse(_s: &Self, _c: &Self, _d: &Self, _k: &Self) -> Result<Self, String> {
+        unavailable::<Self, _>("jacobi_inverse")
+    }
+}
+
+/// The error of a function the backend `T` cannot compute.
+pub fn unavailable<T: Num, X>(what: &str) -> Result<X, String> {
+    Err(format!("{what} is not available in {}", T::ARITHMETIC))
 }
 
 fn real_fn_generic<R: Real>(x: &R, f: RealFn) -> Result<R, String> {
@@ -156,182 +196,100 @@ fn real_fn_generic<R: Real>(x: &R, f: RealFn) -> Result<R, String> {
     }
 }
 
-trait Log2Abs {
-    fn log2_abs_impl(&self) -> f64;
-}
-impl Log2Abs for f64 {
-    fn log2_abs_impl(&self) -> f64 {
-        f64::abs(*self).log2()
+/// Every real type computes every function of the language.
+impl<R: Real> Num for R {
+    const EXACT: bool = false;
+    const ARITHMETIC: &'static str = "floating-point arithmetic";
+    fn real_fn(&self, f: RealFn) -> Result<Self, String> {
+        real_fn_generic(self, f)
     }
-}
-impl Log2Abs for Float {
-    fn log2_abs_impl(&self) -> f64 {
-        if Float::is_zero(self) {
-            return f64::NEG_INFINITY;
-        }
-        let (m, e) = self.to_f64_exp();
-        m.abs().log2() + f64::from(e)
-    }
-}
-impl<S: Log2Abs> Log2Abs for Dual<S> {
-    fn log2_abs_impl(&self) -> f64 {
-        self.v.log2_abs_impl()
-    }
-}
-fn log2_abs_of<S: Log2Abs>(x: &S) -> f64 {
-    x.log2_abs_impl()
-}
-
-macro_rules! real_backend {
-    ($t:ty, $call:ident, $deriv:ident) => {
-        impl Num for $t {
-            const EXACT: bool = false;
-            fn real_fn(&self, f: RealFn) -> Result<Self, String> {
-                real_fn_generic(self, f)
-            }
-            fn atan2_(&self, x: &Self) -> Result<Self, String> {
-                Ok(Real::atan2(self, x))
-            }
-            fn pi_(&self) -> Result<Self, String> {
-                Ok(Real::pi(self))
-            }
-            fn powf_(&self, y: &Self) -> Result<Self, String> {
+    fn real_fn2(&self, f: RealFn2, y: &Self) -> Result<Self, String> {
+        match f {
+            RealFn2::Atan2 => Ok(Real::atan2(self, y)),
+            RealFn2::Pow => {
                 if *self <= self.zero() {
                     return Err(format!(
                         "real power of non-positive base {:.6e}",
-                        Real::to_f64(self)
+                        self.to_f64()
                     ));
                 }
                 Ok(Real::powf(self, y))
             }
-            fn to_f64_(&self) -> f64 {
-                Real::to_f64(self)
-            }
-            fn finite(&self) -> bool {
-                Real::is_finite(self)
-            }
-            fn log2_abs(&self) -> f64 {
-                log2_abs_of(self)
-            }
-            fn sncndn(u: &Self, k: &Self) -> Result<[Self; 3], String> {
-                special::sncndn(u, k)
-                    .map(|(s, c, d)| [s, c, d])
-                    .map_err(|e| e.to_string())
-            }
-            fn sncndn_c(u: &Cx<Self>, k: &Self) -> Result<[Cx<Self>; 3], String> {
-                let z = Cplx::new(u.re.clone(), u.im.clone());
-                let (s, c, d) = special::sncndn_complex(&z, k).map_err(|e| e.to_string())?;
-                let back = |w: Cplx<Self>| Cx { re: w.re, im: w.im };
-                Ok([back(s), back(c), back(d)])
-            }
-            fn am(u: &Self, k: &Self) -> Result<Self, String> {
-                special::am(u, k).map_err(|e| e.to_string())
-            }
-            fn ellipk(k: &Self) -> Result<Self, String> {
-                special::ellipk(k).map_err(|e| e.to_string())
-            }
-            fn ellipkp(k: &Self) -> Result<Self, String> {
-                special::ellipkp(k).map_err(|e| e.to_string())
-            }
-            fn ellipf(phi: &Self, k: &Self) -> Result<Self, String> {
-                special::ellipf(phi, k).map_err(|e| e.to_string())
-            }
-            fn jacobi_inverse(s: &Self, c: &Self, d: &Self, k: &Self) -> Result<Self, String> {
-                special::jacobi_inverse(s, c, d, k).map_err(|e| e.to_string())
-            }
-            fn ext_call(f: &dyn ExtFunction, args: &[Value<Self>]) -> Result<Value<Self>, String> {
-                f.$call(args)
-            }
-            real_backend!(@derive $deriv);
         }
-    };
-    (@derive yes) => {
-        fn derive_in(
-            ev: &Evaluator<'_, Self>,
-            body: &Expr,
-            var: &str,
-            comp: Option<i64>,
-        ) -> Result<Value<Self>, EvalError> {
-            derive_with(ev, body, var, comp)
+    }
+    fn constant(&self, c: Constant) -> Result<Self, String> {
+        match c {
+            Constant::Pi => Ok(Real::pi(self)),
         }
-    };
-    (@derive no) => {};
+    }
+    fn sncndn(u: &Self, k: &Self) -> Result<[Self; 3], String> {
+        special::sncndn(u, k)
+            .map(|(s, c, d)| [s, c, d])
+            .map_err(|e| e.to_string())
+    }
+    fn sncndn_complex(u: &Cplx<Self>, k: &Self) -> Result<[Cplx<Self>; 3], String> {
+        special::sncndn_complex(u, k)
+            .map(|(s, c, d)| [s, c, d])
+            .map_err(|e| e.to_string())
+    }
+    fn am(u: &Self, k: &Self) -> Result<Self, String> {
+        special::am(u, k).map_err(|e| e.to_string())
+    }
+    fn ellipk(k: &Self) -> Result<Self, String> {
+        special::ellipk(k).map_err(|e| e.to_string())
+    }
+    fn ellipkp(k: &Self) -> Result<Self, String> {
+        special::ellipkp(k).map_err(|e| e.to_string())
+    }
+    fn ellipf(phi: &Self, k: &Self) -> Result<Self, String> {
+        special::ellipf(phi, k).map_err(|e| e.to_string())
+    }
+    fn jacobi_inverse(s: &Self, c: &Self, d: &Self, k: &Self) -> Result<Self, String> {
+        special::jacobi_inverse(s, c, d, k).map_err(|e| e.to_string())
+    }
 }
 
-real_backend!(f64, call_f64, yes);
-real_backend!(Float, call_mpfr, yes);
-real_backend!(Dual<f64>, call_dual_f64, no);
-real_backend!(Dual<Float>, call_dual_mpfr, no);
-
-fn not_exact<T>(what: &str) -> Result<T, String> {
-    Err(format!(
-        "{what} is not available in exact rational arithmetic"
-    ))
-}
-
+/// Exact rationals: `sqrt` of perfect squares, `abs` and `floor`; everything else is
+/// "not available in exact rational arithmetic".
 impl Num for Rational {
     const EXACT: bool = true;
+    const ARITHMETIC: &'static str = "exact rational arithmetic";
     fn real_fn(&self, f: RealFn) -> Result<Self, String> {
         match f {
             RealFn::Sqrt => self.try_sqrt().map_err(|e| e.to_string()),
             RealFn::Abs => Ok(Signed::abs(self)),
             RealFn::Floor => Ok(self.floor()),
-            _ => not_exact(&format!("{f:?}")),
+            _ => unavailable::<Self, _>(&format!("{f:?}")),
         }
     }
-    fn atan2_(&self, _x: &Self) -> Result<Self, String> {
-        not_exact("atan2")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rationals_refuse_what_is_not_exact() {
+        let q = Rational::from_integer(4.into());
+        assert_eq!(
+            q.real_fn(RealFn::Sqrt),
+            Ok(Rational::from_integer(2.into()))
+        );
+        assert_eq!(
+            q.real_fn(RealFn::Exp).unwrap_err(),
+            "Exp is not available in exact rational arithmetic"
+        );
+        assert!(q.constant(Constant::Pi).is_err());
+        assert!(Rational::ellipk(&q)
+            .unwrap_err()
+            .starts_with("K is not available"));
     }
-    fn pi_(&self) -> Result<Self, String> {
-        not_exact("pi")
-    }
-    fn powf_(&self, _y: &Self) -> Result<Self, String> {
-        not_exact("a non-integer power")
-    }
-    fn to_f64_(&self) -> f64 {
-        self.to_f64().unwrap_or(f64::NAN)
-    }
-    fn finite(&self) -> bool {
-        true
-    }
-    fn log2_abs(&self) -> f64 {
-        if num_traits::Zero::is_zero(self) {
-            return f64::NEG_INFINITY;
-        }
-        let n = self.numer().abs();
-        let d = self.denom().abs();
-        let shift = |x: &num_bigint::BigInt| -> (f64, i64) {
-            let b = x.bits() as i64;
-            let s = (b - 60).max(0);
-            let top: num_bigint::BigInt = x >> (s as usize);
-            (top.to_f64().unwrap_or(1.0), s)
-        };
-        let (nf, ns) = shift(&n);
-        let (df, ds) = shift(&d);
-        nf.log2() - df.log2() + (ns - ds) as f64
-    }
-    fn sncndn(_u: &Self, _k: &Self) -> Result<[Self; 3], String> {
-        not_exact("sn/cn/dn")
-    }
-    fn sncndn_c(_u: &Cx<Self>, _k: &Self) -> Result<[Cx<Self>; 3], String> {
-        not_exact("sn/cn/dn")
-    }
-    fn am(_u: &Self, _k: &Self) -> Result<Self, String> {
-        not_exact("am")
-    }
-    fn ellipk(_k: &Self) -> Result<Self, String> {
-        not_exact("K")
-    }
-    fn ellipf(_p: &Self, _k: &Self) -> Result<Self, String> {
-        not_exact("F")
-    }
-    fn ellipkp(_k: &Self) -> Result<Self, String> {
-        not_exact("Kp")
-    }
-    fn jacobi_inverse(_s: &Self, _c: &Self, _d: &Self, _k: &Self) -> Result<Self, String> {
-        not_exact("jacobi_inverse")
-    }
-    fn ext_call(f: &dyn ExtFunction, args: &[Value<Self>]) -> Result<Value<Self>, String> {
-        f.call_exact(args)
+
+    #[test]
+    fn reals_compute_and_check_domains() {
+        assert_eq!(4.0f64.real_fn(RealFn::Sqrt), Ok(2.0));
+        assert!((-1.0f64).real_fn(RealFn::Ln).is_err());
+        assert!((-1.0f64).real_fn2(RealFn2::Pow, &0.5).is_err());
+        assert_eq!(1.0f64.constant(Constant::Pi), Ok(std::f64::consts::PI));
     }
 }

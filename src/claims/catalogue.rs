@@ -4,6 +4,7 @@
 //! the offending source line with the bad text underlined.  Nothing panics.
 
 use super::ast::{Binding, Expr, ExprKind, Span};
+use super::kind::{Form, Kind, Verdict};
 use super::lexer::SyntaxError;
 use super::parser::{parse_bindings, parse_expr};
 use super::registry::Registry;
@@ -126,38 +127,6 @@ pub struct PExpr {
     pub origin: Origin,
 }
 
-/// A claim's kind.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Kind {
-    /// lhs == rhs.
-    Identity,
-    /// expr does not depend on a variable.
-    Independence,
-    /// expr = O(h^order).
-    Asymptotic,
-    /// The inner claim is false.
-    Negation,
-    /// A solution exists.
-    Existence,
-    /// Defines functions.
-    Definition,
-}
-
-impl Kind {
-    /// The kind's name.
-    pub fn name(self) -> &'static str {
-        match self {
-            Kind::Identity => "identity",
-            Kind::Independence => "independence",
-            Kind::Asymptotic => "asymptotic",
-            Kind::Negation => "negation",
-            Kind::Existence => "existence",
-            Kind::Definition => "definition",
-        }
-    }
-}
-
 /// The kind-specific part of a claim.
 #[derive(Debug, Clone)]
 pub enum Body {
@@ -244,12 +213,12 @@ pub struct Claim {
     pub printed: String,
     /// Kind.
     pub kind: Kind,
-    /// printed | corrected.
-    pub form: String,
+    /// Printed or corrected.
+    pub form: Form,
     /// Fixed printed claim id.
     pub corrects: Option<String>,
-    /// Expected verdict.
-    pub expect: Option<String>,
+    /// Expected verdict (`None` for definitions).
+    pub expect: Option<Verdict>,
     /// Note.
     pub note: Option<String>,
     /// `file:line` of the claim.
@@ -464,13 +433,6 @@ fn var_list(
     Ok(out)
 }
 
-/// Options for loading.
-#[derive(Clone)]
-pub struct LoadOptions {
-    /// Functions registered by other layers.
-    pub registry: Registry,
-}
-
 /// Loads every `*.toml` file of `dir` (sorted by name).
 pub fn load_dir(dir: &Path, registry: Registry) -> Result<Catalogue, LoadError> {
     let rd = std::fs::read_dir(dir).map_err(|e| LoadError {
@@ -588,7 +550,7 @@ pub fn load_sources(
         }
         registry
             .define(b.clone())
-            .map_err(|m| origin.error(Some(b.span), m))?;
+            .map_err(|m| origin.error(Some(b.span), m.to_string()))?;
     }
     let cat = Catalogue {
         claims,
@@ -744,30 +706,35 @@ fn build_claim(
         }
     };
     let form = match &t.form {
-        None => outer.map_or("printed".to_string(), |o| o.form.clone()),
-        Some(f) => {
-            let v = f.get_ref();
-            if v != "printed" && v != "corrected" {
+        None => outer.map_or(Form::Printed, |o| o.form),
+        Some(f) => match Form::ALL.iter().find(|x| x.name() == f.get_ref()) {
+            Some(x) => *x,
+            None => {
                 return Err(file.error_at(
                     f.span().start,
                     f.span().end,
-                    format!("form must be 'printed' or 'corrected', not '{v}'"),
-                ));
+                    format!(
+                        "form must be 'printed' or 'corrected', not '{}'",
+                        f.get_ref()
+                    ),
+                ))
             }
-            v.clone()
-        }
+        },
     };
     let expect = match &t.expect {
         None => None,
         Some(e) => {
             let v = e.get_ref();
-            if !["holds", "refuted", "proved", "inconclusive"].contains(&v.as_str()) {
+            let Some(verdict) = Verdict::ALL
+                .iter()
+                .find(|x| x.name() == v && **x != Verdict::Defined)
+            else {
                 return Err(file.error_at(
                     e.span().start,
                     e.span().end,
                     format!("expect must be holds | refuted | proved | inconclusive, not '{v}'"),
                 ));
-            }
+            };
             if kind == Kind::Definition {
                 return Err(file.error_at(
                     e.span().start,
@@ -775,7 +742,7 @@ fn build_claim(
                     "a definition has no verdict: remove 'expect'",
                 ));
             }
-            Some(v.clone())
+            Some(*verdict)
         }
     };
     if outer.is_none() && kind != Kind::Definition && expect.is_none() {
@@ -789,7 +756,7 @@ fn build_claim(
             return Err(need("printed"));
         }
     }
-    if form == "corrected" && t.corrects.is_none() && outer.is_none() {
+    if form == Form::Corrected && t.corrects.is_none() && outer.is_none() {
         return Err(need("corrects"));
     }
     let vars = var_list(file, &t.vars, at)?;

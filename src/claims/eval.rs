@@ -1,17 +1,26 @@
-//! The evaluator: one generic tree walker over every scalar backend ([`Num`]).
+//! The evaluator: one generic tree walker over every backend ([`Backend`]).
 //!
 //! A scope is a list of bindings (sampled variables, `let` values, function parameters).
 //! `let` bindings remember their defining expression, so `d(expr, x)` can lift the scope
 //! into dual numbers, seed `x`, and recompute every later binding that may depend on it.
+//!
+//! A backend is a scalar type ([`Num`]) that also knows how to call registered functions
+//! ([`HostCall`]) and how to differentiate ([`Differentiate`]: `f64` and MPFR by dual
+//! numbers; duals and rationals refuse).  Evaluation depth is bounded
+//! ([`MAX_NESTING`], [`MAX_CALL_DEPTH`]): a too deep expression or a recursive
+//! definition is an error, never a stack overflow.
 
 use super::ast::{BinOp, Binding, Expr, ExprKind, Span, UnOp};
 use super::backend::Num;
-use super::builtins;
-use super::registry::{Registry, UserFn};
-use super::value::{Cx, Value};
-use crate::numbers::Dual;
+use super::builtins::{apply, Builtin};
+use super::cmath;
+use super::registry::{HostCall, Registry, UserFn};
+use super::value::Value;
+use crate::linalg::{Mat2, Mat3, Vec3};
+use crate::numbers::{Dual, Rational};
+use rug::Float;
 use std::any::Any;
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::collections::HashMap;
 use std::rc::Rc;
 use std::sync::Arc;
@@ -24,16 +33,85 @@ pub struct EvalError {
     pub message: String,
     /// Where (in the expression's source string), if known.
     pub span: Option<Span>,
+    /// A depth limit was reached: the message is passed up unchanged (not prefixed by
+    /// every enclosing function).
+    pub limit: bool,
 }
 
 impl EvalError {
+    /// An error without a position.
+    pub fn new(message: impl Into<String>) -> Self {
+        EvalError {
+            message: message.into(),
+            span: None,
+            limit: false,
+        }
+    }
     fn at(message: impl Into<String>, span: Span) -> Self {
         EvalError {
             message: message.into(),
             span: Some(span),
+            limit: false,
+        }
+    }
+    fn limit(message: String, span: Span) -> Self {
+        EvalError {
+            message,
+            span: Some(span),
+            limit: true,
         }
     }
 }
+
+/// How a backend evaluates `d(body, var[, comp])`.
+pub trait Differentiate: Sized {
+    /// The derivative of `body` with respect to `var` (component `comp` of a vec3) in
+    /// the scope of `ev`.
+    fn derive(
+        ev: &Evaluator<'_, Self>,
+        body: &Expr,
+        var: &str,
+        comp: Option<i64>,
+    ) -> Result<Value<Self>, EvalError>;
+}
+
+/// Everything the evaluator needs of a number type.
+pub trait Backend: Num + HostCall + Differentiate {}
+impl<T: Num + HostCall + Differentiate> Backend for T {}
+
+macro_rules! by_duals {
+    ($($t:ty),*) => {$(
+        impl Differentiate for $t {
+            fn derive(
+                ev: &Evaluator<'_, Self>,
+                body: &Expr,
+                var: &str,
+                comp: Option<i64>,
+            ) -> Result<Value<Self>, EvalError> {
+                derive_with(ev, body, var, comp)
+            }
+        }
+    )*};
+}
+by_duals!(f64, Float);
+
+macro_rules! cannot_derive {
+    ($($t:ty),*) => {$(
+        impl Differentiate for $t {
+            fn derive(
+                _ev: &Evaluator<'_, Self>,
+                _body: &Expr,
+                var: &str,
+                _comp: Option<i64>,
+            ) -> Result<Value<Self>, EvalError> {
+                Err(EvalError::new(format!(
+                    "d(..., {var}): nested derivatives and exact derivatives are not supported"
+                )))
+            }
+        }
+    )*};
+}
+cannot_derive!(Dual<f64>, Dual<Float>, Rational);
 
 #[derive(Clone)]
 struct Bind<T> {
@@ -61,12 +139,16 @@ pub struct Evaluator<'r, T> {
     scope: Vec<Bind<T>>,
     local_fns: Vec<Arc<UserFn>>,
     depth: usize,
+    nesting: Cell<usize>,
     dcache: DCache,
 }
 
-const MAX_CALL_DEPTH: usize = 64;
+/// Most nested calls of catalogue functions (a recursive definition stops here).
+pub const MAX_CALL_DEPTH: usize = 64;
+/// Most nested sub-expressions being evaluated at once, function bodies included.
+pub const MAX_NESTING: usize = 2000;
 
-impl<'r, T: Num> Evaluator<'r, T> {
+impl<'r, T: Backend> Evaluator<'r, T> {
     /// A new evaluator; `like` fixes the precision of constants and literals.
     pub fn new(reg: &'r Registry, like: T) -> Self {
         Evaluator {
@@ -75,6 +157,19 @@ impl<'r, T: Num> Evaluator<'r, T> {
             scope: Vec::new(),
             local_fns: Vec::new(),
             depth: 0,
+            nesting: Cell::new(0),
+            dcache: DCache::default(),
+        }
+    }
+    /// An empty evaluator over another backend that continues this one's depth counts.
+    fn child<U: Backend>(&self, like: U, depth: usize) -> Evaluator<'r, U> {
+        Evaluator {
+            reg: self.reg,
+            like,
+            scope: Vec::new(),
+            local_fns: Vec::new(),
+            depth,
+            nesting: Cell::new(self.nesting.get()),
             dcache: DCache::default(),
         }
     }
@@ -106,7 +201,7 @@ impl<'r, T: Num> Evaluator<'r, T> {
         }
         let v = self.eval(&b.body).map_err(|e| EvalError {
             message: format!("in '{}': {}", b.name, e.message),
-            span: e.span,
+            ..e
         })?;
         self.dcache.0.borrow_mut().clear();
         self.scope.push(Bind {
@@ -125,9 +220,35 @@ impl<'r, T: Num> Evaluator<'r, T> {
             .map(|b| &b.value)
     }
 
-    /// Evaluates an expression.
+    /// Evaluates an expression; a value that is not finite is an error.
+    ///
+    /// ```
+    /// use eulertop::claims::eval::Evaluator;
+    /// use eulertop::claims::parser::parse_expr;
+    /// use eulertop::claims::registry::Registry;
+    /// use eulertop::claims::value::Value;
+    ///
+    /// let reg = Registry::new();
+    /// let mut ev = Evaluator::new(&reg, 0.0f64);
+    /// ev.bind("x", Value::Real(0.5));
+    /// let v = ev.eval(&parse_expr("sn(x, 0)^2 + cos(x)^2").unwrap()).unwrap();
+    /// assert!((v.as_real().unwrap() - 1.0).abs() < 1e-15);
+    /// // the same expression exactly: sn is not rational
+    /// let q = eulertop::numbers::Rational::from_integer(0.into());
+    /// assert!(Evaluator::new(&reg, q).eval(&parse_expr("sn(0, 0)").unwrap()).is_err());
+    /// ```
     pub fn eval(&self, e: &Expr) -> Result<Value<T>, EvalError> {
-        let v = self.eval_inner(e)?;
+        let n = self.nesting.get();
+        if n >= MAX_NESTING {
+            return Err(EvalError::limit(
+                format!("expression nested too deeply to evaluate (more than {MAX_NESTING} levels, function bodies included)"),
+                e.span,
+            ));
+        }
+        self.nesting.set(n + 1);
+        let v = self.eval_inner(e);
+        self.nesting.set(n);
+        let v = v?;
         if !v.is_finite() {
             return Err(EvalError::at(
                 "value is not finite (pole or overflow)",
@@ -142,34 +263,10 @@ impl<'r, T: Num> Evaluator<'r, T> {
         let wrap = |r: Result<Value<T>, String>| r.map_err(|m| EvalError::at(m, sp));
         match &e.kind {
             ExprKind::Num(s) => wrap(self.like.lit(s).map(Value::Real)),
-            ExprKind::Name(n) => {
-                if let Some(v) = self.lookup(n) {
-                    return Ok(v.clone());
-                }
-                match n.as_str() {
-                    "pi" => wrap(self.like.pi_().map(Value::Real)),
-                    "i" => Ok(Value::Complex(Cx::new(self.like.zero(), self.like.one()))),
-                    "I3" | "I2" => builtins::call(self, n, &[])
-                        .unwrap_or_else(|| Err(String::new()))
-                        .map_err(|m| EvalError::at(m, sp)),
-                    _ => Err(EvalError::at(format!("unknown variable '{n}'"), sp)),
-                }
-            }
+            ExprKind::Name(n) => self.name(n, sp),
             ExprKind::Unary(UnOp::Neg, a) => wrap(self.eval(a)?.neg()),
             ExprKind::Unary(UnOp::Not, a) => wrap(self.eval(a)?.as_bool().map(|b| Value::Bool(!b))),
-            ExprKind::Binary(op, a, b) => {
-                if matches!(op, BinOp::And | BinOp::Or) {
-                    let x = wrap(self.eval(a)?.as_bool().map(Value::Bool))?;
-                    let x = x.as_bool().map_err(|m| EvalError::at(m, sp))?;
-                    if (*op == BinOp::And && !x) || (*op == BinOp::Or && x) {
-                        return Ok(Value::Bool(x));
-                    }
-                    return wrap(self.eval(b)?.as_bool().map(Value::Bool));
-                }
-                let x = self.eval(a)?;
-                let y = self.eval(b)?;
-                wrap(binary(*op, &x, &y))
-            }
+            ExprKind::Binary(op, a, b) => self.binary(*op, a, b, sp),
             ExprKind::If(c, a, b) => {
                 let c = wrap(self.eval(c)?.as_bool().map(Value::Bool))?;
                 if c == Value::Bool(true) {
@@ -182,13 +279,9 @@ impl<'r, T: Num> Evaluator<'r, T> {
                 let v = self.eval(a)?;
                 let mut idx = Vec::new();
                 for i in ix {
-                    idx.push(
-                        self.eval(i)?
-                            .as_int()
-                            .map_err(|m| EvalError::at(m, i.span))?,
-                    );
+                    idx.push(self.int(i)?);
                 }
-                wrap(index(&v, &idx))
+                wrap(v.index(&idx))
             }
             ExprKind::List(items) => self.list(items, sp),
             ExprKind::Call(name, args) => self.call(name, args, sp),
@@ -198,69 +291,109 @@ impl<'r, T: Num> Evaluator<'r, T> {
                 to,
                 body,
                 product,
-            } => {
-                let a = self
-                    .eval(from)?
-                    .as_int()
-                    .map_err(|m| EvalError::at(m, from.span))?;
-                let b = self
-                    .eval(to)?
-                    .as_int()
-                    .map_err(|m| EvalError::at(m, to.span))?;
-                if b - a > 100_000 {
-                    return Err(EvalError::at("sum range too long", sp));
-                }
-                let mut acc = Value::Real(if *product {
-                    self.like.one()
-                } else {
-                    self.like.zero()
-                });
-                let mut inner = self.clone();
-                for k in a..=b {
-                    inner.scope.push(Bind {
-                        name: var.clone(),
-                        value: Value::Real(self.like.from_i64(k)),
-                        def: None,
-                    });
-                    inner.dcache.0.borrow_mut().clear();
-                    let t = inner.eval(body)?;
-                    inner.scope.pop();
-                    acc = wrap(if *product { acc.mul(&t) } else { acc.add(&t) })?;
-                }
-                Ok(acc)
-            }
+            } => self.sum(var, from, to, body, *product, sp),
             ExprKind::Deriv {
                 body,
                 var,
                 component,
             } => {
                 let comp = match component {
-                    Some(c) => Some(
-                        self.eval(c)?
-                            .as_int()
-                            .map_err(|m| EvalError::at(m, c.span))?,
-                    ),
+                    Some(c) => Some(self.int(c)?),
                     None => None,
                 };
-                T::derive_in(self, body, var, comp).map_err(|mut err| {
+                T::derive(self, body, var, comp).map_err(|mut err| {
                     if err.span.is_none() {
                         err.span = Some(sp);
                     }
                     err
                 })
             }
-            ExprKind::Grad { body, var } => {
-                let mut out = Vec::new();
-                for j in 1..=3 {
-                    let v = T::derive_in(self, body, var, Some(j))?;
-                    out.push(v.as_real().map_err(|m| {
-                        EvalError::at(format!("grad needs a real expression: {m}"), sp)
-                    })?);
-                }
-                let [a, b, c]: [T; 3] = out.try_into().map_err(|_| EvalError::at("grad", sp))?;
-                Ok(Value::Vec3([a, b, c]))
-            }
+            ExprKind::Grad { body, var } => self.grad(body, var, sp),
         }
+    }
+
+    fn int(&self, e: &Expr) -> Result<i64, EvalError> {
+        self.eval(e)?.as_int().map_err(|m| EvalError::at(m, e.span))
+    }
+
+    fn name(&self, n: &str, sp: Span) -> Result<Value<T>, EvalError> {
+        if let Some(v) = self.lookup(n) {
+            return Ok(v.clone());
+        }
+        let r = match n {
+            "pi" => cmath::pi(&self.like).map(Value::Real),
+            "i" => Ok(Value::Complex(cmath::i(&self.like))),
+            "I3" => apply(Builtin::I3, &self.like, &[]),
+            "I2" => apply(Builtin::I2, &self.like, &[]),
+            _ => Err(format!("unknown variable '{n}'")),
+        };
+        r.map_err(|m| EvalError::at(m, sp))
+    }
+
+    fn binary(&self, op: BinOp, a: &Expr, b: &Expr, sp: Span) -> Result<Value<T>, EvalError> {
+        let wrap = |r: Result<Value<T>, String>| r.map_err(|m| EvalError::at(m, sp));
+        if matches!(op, BinOp::And | BinOp::Or) {
+            let x = wrap(self.eval(a)?.as_bool().map(Value::Bool))?;
+            let x = x.as_bool().map_err(|m| EvalError::at(m, sp))?;
+            if (op == BinOp::And && !x) || (op == BinOp::Or && x) {
+                return Ok(Value::Bool(x));
+            }
+            return wrap(self.eval(b)?.as_bool().map(Value::Bool));
+        }
+        let x = self.eval(a)?;
+        let y = self.eval(b)?;
+        wrap(binary(op, &x, &y))
+    }
+
+    fn sum(
+        &self,
+        var: &str,
+        from: &Expr,
+        to: &Expr,
+        body: &Expr,
+        product: bool,
+        sp: Span,
+    ) -> Result<Value<T>, EvalError> {
+        let a = self.int(from)?;
+        let b = self.int(to)?;
+        if b - a > 100_000 {
+            return Err(EvalError::at(
+                format!("sum range too long: {a}..{b} has more than 100000 terms"),
+                sp,
+            ));
+        }
+        let mut acc = Value::Real(if product {
+            self.like.one()
+        } else {
+            self.like.zero()
+        });
+        let mut inner = self.clone();
+        for k in a..=b {
+            inner.scope.push(Bind {
+                name: var.to_string(),
+                value: Value::Real(self.like.from_i64(k)),
+                def: None,
+            });
+            inner.dcache.0.borrow_mut().clear();
+            let t = inner.eval(body)?;
+            inner.scope.pop();
+            acc = (if product { acc.mul(&t) } else { acc.add(&t) })
+                .map_err(|m| EvalError::at(m, sp))?;
+        }
+        Ok(acc)
+    }
+
+    fn grad(&self, body: &Expr, var: &str, sp: Span) -> Result<Value<T>, EvalError> {
+        let mut out = Vec::new();
+        for j in 1..=3 {
+            let v = T::derive(self, body, var, Some(j))?;
+            out.push(
+                v.as_real()
+                    .map_err(|m| EvalError::at(format!("grad needs a real expression: {m}"), sp))?,
+            );
+        }
+        let [a, b, c]: [T; 3] = out.try_into().map_err(|_| EvalError::at("grad", sp))?;
+        Ok(Value::Vec3(Vec3([a, b, c])))
     }
 
     fn list(&self, items: &[Expr], sp: Span) -> Result<Value<T>, EvalError> {
@@ -273,16 +406,24 @@ impl<'r, T: Num> Evaluator<'r, T> {
         };
         if vals.len() == 3 && vals.iter().all(|v| matches!(v, Value::Real(_))) {
             let r: Vec<T> = vals.iter().filter_map(|v| v.as_real().ok()).collect();
-            return Ok(Value::Vec3([r[0].clone(), r[1].clone(), r[2].clone()]));
+            return Ok(Value::Vec3(Vec3([
+                r[0].clone(),
+                r[1].clone(),
+                r[2].clone(),
+            ])));
         }
         // matrices: rows are lists; a row of reals evaluates to a vec3 for 3×3
         if vals.len() == 3 && vals.iter().all(|v| matches!(v, Value::Vec3(_))) {
-            let rows: Vec<[T; 3]> = vals.iter().filter_map(|v| v.as_vec3().ok()).collect();
-            return Ok(Value::Mat3([
+            let rows: Vec<[T; 3]> = vals
+                .iter()
+                .filter_map(|v| v.as_vec3().ok())
+                .map(|v| v.0)
+                .collect();
+            return Ok(Value::Mat3(Mat3([
                 rows[0].clone(),
                 rows[1].clone(),
                 rows[2].clone(),
-            ]));
+            ])));
         }
         if vals.len() == 2 {
             // 2×2: evaluate rows entry by entry (rows are lists of 2 scalars)
@@ -294,27 +435,21 @@ impl<'r, T: Num> Evaluator<'r, T> {
                 if r.len() != 2 {
                     return Err(err());
                 }
-                let a = self
-                    .eval(&r[0])?
-                    .as_complex()
-                    .map_err(|m| EvalError::at(m, r[0].span))?;
-                let b = self
-                    .eval(&r[1])?
-                    .as_complex()
-                    .map_err(|m| EvalError::at(m, r[1].span))?;
-                rows.push([a, b]);
+                let entry = |x: &Expr| {
+                    self.eval(x)?
+                        .as_complex()
+                        .map_err(|m| EvalError::at(m, x.span))
+                };
+                rows.push([entry(&r[0])?, entry(&r[1])?]);
             }
             let r1 = rows.pop().ok_or_else(err)?;
             let r0 = rows.pop().ok_or_else(err)?;
-            return Ok(Value::CMat2([r0, r1]));
+            return Ok(Value::CMat2(Mat2([r0, r1])));
         }
         Err(err())
     }
 
     fn call(&self, name: &str, args: &[Expr], sp: Span) -> Result<Value<T>, EvalError> {
-        if name == "__list2" {
-            return Err(EvalError::at("internal", sp));
-        }
         let vals: Vec<Value<T>> = args
             .iter()
             .map(|x| self.eval(x))
@@ -322,8 +457,9 @@ impl<'r, T: Num> Evaluator<'r, T> {
         if let Some(f) = self.local_fns.iter().rev().find(|f| f.def.name == name) {
             return self.call_user(f, &vals, sp);
         }
-        if let Some(r) = builtins::call(self, name, &vals) {
-            return r.map_err(|m| EvalError::at(format!("{name}: {m}"), sp));
+        if let Some(b) = Builtin::from_name(name) {
+            return apply(b, &self.like, &vals)
+                .map_err(|m| EvalError::at(format!("{name}: {m}"), sp));
         }
         if let Some(f) = self.reg.ext(name) {
             if vals.len() != f.arity {
@@ -332,9 +468,8 @@ impl<'r, T: Num> Evaluator<'r, T> {
                     sp,
                 ));
             }
-            let out = T::ext_call(f.f.as_ref(), &vals)
-                .map_err(|m| EvalError::at(format!("{name}: {m}"), sp))?;
-            return Ok(out);
+            return T::host_call(f.f.as_ref(), &vals)
+                .map_err(|m| EvalError::at(format!("{name}: {m}"), sp));
         }
         if let Some(f) = self.reg.user(name) {
             let f = f.clone();
@@ -356,25 +491,23 @@ impl<'r, T: Num> Evaluator<'r, T> {
             ));
         }
         if self.depth >= MAX_CALL_DEPTH {
-            return Err(EvalError::at(
-                format!("recursion too deep in '{}'", f.def.name),
+            return Err(EvalError::limit(
+                format!(
+                    "recursion too deep in '{}' (more than {MAX_CALL_DEPTH} nested calls)",
+                    f.def.name
+                ),
                 sp,
             ));
         }
-        let mut inner = Evaluator {
-            reg: self.reg,
-            like: self.like.clone(),
-            scope: Vec::new(),
-            local_fns: Vec::new(),
-            depth: self.depth + 1,
-            dcache: DCache::default(),
-        };
+        let mut inner = self.child(self.like.clone(), self.depth + 1);
         for (p, v) in f.params.iter().zip(vals) {
             inner.bind(p, v.clone());
         }
-        inner.eval(&f.def.body).map_err(|e| EvalError {
-            message: format!("in function '{}': {}", f.def.name, e.message),
-            span: Some(sp),
+        inner.eval(&f.def.body).map_err(|e| {
+            if e.limit {
+                return e;
+            }
+            EvalError::at(format!("in function '{}': {}", f.def.name, e.message), sp)
         })
     }
 }
@@ -410,29 +543,9 @@ pub fn binary<T: Num>(op: BinOp, x: &Value<T>, y: &Value<T>) -> Result<Value<T>,
     }
 }
 
-fn index<T: Num>(v: &Value<T>, idx: &[i64]) -> Result<Value<T>, String> {
-    let chk = |i: i64, n: i64| -> Result<usize, String> {
-        if i < 1 || i > n {
-            Err(format!("index {i} out of range 1..{n}"))
-        } else {
-            Ok((i - 1) as usize)
-        }
-    };
-    match (v, idx) {
-        (Value::Vec3(a), [i]) => Ok(Value::Real(a[chk(*i, 3)?].clone())),
-        (Value::Mat3(m), [i, j]) => Ok(Value::Real(m[chk(*i, 3)?][chk(*j, 3)?].clone())),
-        (Value::Mat3(m), [i]) => Ok(Value::Vec3(m[chk(*i, 3)?].clone())),
-        (Value::CMat2(m), [i, j]) => Ok(Value::Complex(m[chk(*i, 2)?][chk(*j, 2)?].clone())),
-        _ => Err(format!(
-            "cannot index a {} with {} indices",
-            v.type_name(),
-            idx.len()
-        )),
-    }
-}
-
-/// `d(body, var[, comp])` evaluated with dual numbers over `T` (used by the f64 and MPFR
-/// backends).  Bindings after `var` that have a defining expression are recomputed.
+/// `d(body, var[, comp])` evaluated with dual numbers over `T` (the f64 and MPFR
+/// backends).  Only the bindings after `var` that the body needs (transitively) are
+/// recomputed; the lifted scope is cached per evaluator.
 pub fn derive_with<'r, T>(
     ev: &Evaluator<'r, T>,
     body: &Expr,
@@ -440,35 +553,17 @@ pub fn derive_with<'r, T>(
     comp: Option<i64>,
 ) -> Result<Value<T>, EvalError>
 where
-    T: Num,
-    Dual<T>: Num,
+    T: Backend,
+    Dual<T>: Backend,
 {
     let Some(pos) = ev.scope.iter().rposition(|b| b.name == var) else {
-        return Err(EvalError {
-            message: format!("d(): '{var}' is not a variable in scope"),
-            span: None,
-        });
+        return Err(EvalError::new(format!(
+            "d(): '{var}' is not a variable in scope"
+        )));
     };
-    let lift = |v: &Value<T>| v.map(&mut |x: &T| Dual::constant(x.clone()));
-    let mut dev: Evaluator<'r, Dual<T>> = Evaluator {
-        reg: ev.reg,
-        like: Dual::constant(ev.like.clone()),
-        scope: Vec::new(),
-        local_fns: ev.local_fns.clone(),
-        depth: ev.depth,
-        dcache: DCache::default(),
-    };
-    // Only bindings after `var` that the body needs (transitively) are recomputed.
-    let mut needed = std::collections::BTreeSet::new();
-    collect_names(body, &mut needed);
-    let mut recompute = vec![false; ev.scope.len()];
-    for j in (pos + 1..ev.scope.len()).rev() {
-        let b = &ev.scope[j];
-        if let (true, Some(d)) = (needed.contains(&b.name), &b.def) {
-            recompute[j] = true;
-            collect_names(d, &mut needed);
-        }
-    }
+    let mut dev: Evaluator<'r, Dual<T>> = ev.child(Dual::constant(ev.like.clone()), ev.depth);
+    dev.local_fns = ev.local_fns.clone();
+    let recompute = needed_bindings(ev, body, pos);
     let key = format!(
         "{pos}|{comp:?}|{}",
         recompute
@@ -485,32 +580,61 @@ where
     if let Some(scope) = cached {
         dev.scope = (*scope).clone();
     } else {
-        for (j, b) in ev.scope.iter().enumerate() {
-            let value = if j == pos {
-                seed(&b.value, comp).map_err(|m| EvalError {
-                    message: m,
-                    span: None,
-                })?
-            } else if recompute[j] {
-                let d = b.def.as_ref().map(|d| d.as_ref().clone());
-                match d {
-                    Some(d) => dev.eval(&d)?,
-                    None => lift(&b.value),
-                }
-            } else {
-                lift(&b.value)
-            };
-            dev.scope.push(Bind {
-                name: b.name.clone(),
-                value,
-                def: b.def.clone(),
-            });
-        }
+        lift_scope(ev, &mut dev, pos, comp, &recompute)?;
         let stored: Rc<dyn Any> = Rc::new(dev.scope.clone());
         ev.dcache.0.borrow_mut().insert(key, stored);
     }
     let out = dev.eval(body)?;
     Ok(out.map(&mut |x: &Dual<T>| x.d.clone()))
+}
+
+/// Which bindings after position `pos` must be recomputed for `body`.
+fn needed_bindings<T>(ev: &Evaluator<'_, T>, body: &Expr, pos: usize) -> Vec<bool> {
+    let mut needed = std::collections::BTreeSet::new();
+    collect_names(body, &mut needed);
+    let mut recompute = vec![false; ev.scope.len()];
+    for j in (pos + 1..ev.scope.len()).rev() {
+        let b = &ev.scope[j];
+        if let (true, Some(d)) = (needed.contains(&b.name), &b.def) {
+            recompute[j] = true;
+            collect_names(d, &mut needed);
+        }
+    }
+    recompute
+}
+
+/// Fills `dev`'s scope: `var` seeded, recomputed bindings evaluated in duals, the rest
+/// lifted as constants.
+fn lift_scope<T>(
+    ev: &Evaluator<'_, T>,
+    dev: &mut Evaluator<'_, Dual<T>>,
+    pos: usize,
+    comp: Option<i64>,
+    recompute: &[bool],
+) -> Result<(), EvalError>
+where
+    T: Backend,
+    Dual<T>: Backend,
+{
+    let lift = |v: &Value<T>| v.map(&mut |x: &T| Dual::constant(x.clone()));
+    for (j, b) in ev.scope.iter().enumerate() {
+        let value = if j == pos {
+            seed(&b.value, comp).map_err(EvalError::new)?
+        } else if recompute[j] {
+            match &b.def {
+                Some(d) => dev.eval(d)?,
+                None => lift(&b.value),
+            }
+        } else {
+            lift(&b.value)
+        };
+        dev.scope.push(Bind {
+            name: b.name.clone(),
+            value,
+            def: b.def.clone(),
+        });
+    }
+    Ok(())
 }
 
 fn collect_names(e: &Expr, out: &mut std::collections::BTreeSet<String>) {
@@ -532,13 +656,13 @@ where
     match (v, comp) {
         (Value::Real(x), None) => Ok(Value::Real(Dual::var(x.clone()))),
         (Value::Vec3(a), Some(j)) if (1..=3).contains(&j) => {
-            Ok(Value::Vec3(std::array::from_fn(|i| {
+            Ok(Value::Vec3(Vec3(std::array::from_fn(|i| {
                 if i as i64 == j - 1 {
-                    Dual::var(a[i].clone())
+                    Dual::var(a.0[i].clone())
                 } else {
-                    Dual::constant(a[i].clone())
+                    Dual::constant(a.0[i].clone())
                 }
-            })))
+            }))))
         }
         (Value::Vec3(_), None) => Err(
             "d(): differentiate a vec3 variable by component: d(expr, v, j) or grad(expr, v)"

@@ -2,6 +2,7 @@
 //! evaluated" next to the paper's "as printed".
 
 use super::ast::{BinOp, Binding, Expr, ExprKind, UnOp};
+use super::builtins::{Builtin, Tex};
 
 fn name_tex(n: &str) -> String {
     const GREEK: &[&str] = &[
@@ -119,30 +120,7 @@ pub fn to_latex(e: &Expr) -> String {
                 format!("\\left({}\\right)^{{\\mathsf T}}", args(items))
             }
         }
-        ExprKind::Call(f, a) => match (f.as_str(), a.len()) {
-            ("sqrt", 1) => format!("\\sqrt{{{}}}", to_latex(&a[0])),
-            ("abs", 1) => format!("\\left|{}\\right|", to_latex(&a[0])),
-            ("norm", 1) => format!("\\left\\|{}\\right\\|", to_latex(&a[0])),
-            ("norm2", 1) => format!("\\left\\|{}\\right\\|^2", to_latex(&a[0])),
-            ("dot", 2) => format!("\\langle {}, {}\\rangle", to_latex(&a[0]), to_latex(&a[1])),
-            ("cross", 2) => format!("{}\\times {}", wrap(&a[0], 7), wrap(&a[1], 7)),
-            ("comm", 2) => format!("\\left[{}, {}\\right]", to_latex(&a[0]), to_latex(&a[1])),
-            ("transpose", 1) => format!("{}^{{\\mathsf T}}", wrap(&a[0], 9)),
-            ("inv", 1) => format!("{}^{{-1}}", wrap(&a[0], 9)),
-            ("exp", 1) => format!("e^{{{}}}", to_latex(&a[0])),
-            ("conj", 1) => format!("\\overline{{{}}}", to_latex(&a[0])),
-            ("pauli", 1) => format!("\\sigma_{{{}}}", to_latex(&a[0])),
-            ("I3" | "I2", 0) => "I".into(),
-            ("sn" | "cn" | "dn" | "am", 2) => {
-                format!("\\mathrm{{{f}}}({}, {})", to_latex(&a[0]), to_latex(&a[1]))
-            }
-            (
-                "sin" | "cos" | "tan" | "ln" | "sinh" | "cosh" | "tanh" | "det" | "arg" | "min"
-                | "max",
-                _,
-            ) => format!("\\{f}\\left({}\\right)", args(a)),
-            _ => format!("{}\\left({}\\right)", name_tex(f), args(a)),
-        },
+        ExprKind::Call(f, a) => call(f, a),
         ExprKind::Sum {
             var,
             from,
@@ -177,6 +155,26 @@ pub fn to_latex(e: &Expr) -> String {
         ExprKind::Grad { body, var } => {
             format!("\\nabla_{{{}}}{}", name_tex(var), wrap(body, 9))
         }
+    }
+}
+
+/// LaTeX for a call: the built-ins in the form their declaration gives
+/// ([`Builtin::spec`]), every other function as `name\left(args\right)`.
+fn call(f: &str, a: &[Expr]) -> String {
+    let tex = Builtin::from_name(f).map_or(Tex::Name, |b| b.spec().tex);
+    if tex.arity().is_some_and(|n| n != a.len()) {
+        return format!("{}\\left({}\\right)", name_tex(f), args(a));
+    }
+    let t = |j: usize| to_latex(&a[j]);
+    match tex {
+        Tex::Operator => format!("\\{f}\\left({}\\right)", args(a)),
+        Tex::Upright => format!("\\mathrm{{{f}}}({}, {})", t(0), t(1)),
+        Tex::Wrap(pre, post) => format!("{pre}{}{post}", t(0)),
+        Tex::Pair(pre, mid, post) => format!("{pre}{}{mid}{}{post}", t(0), t(1)),
+        Tex::Infix(op) => format!("{}{op}{}", wrap(&a[0], 7), wrap(&a[1], 7)),
+        Tex::Postfix(sup) => format!("{}^{sup}", wrap(&a[0], 9)),
+        Tex::Symbol(s) => s.to_string(),
+        Tex::Name | Tex::Form => format!("{}\\left({}\\right)", name_tex(f), args(a)),
     }
 }
 

@@ -1,13 +1,23 @@
 //! The claims layer: the expression language, the catalogue loader, the sampler and the
 //! verdict engine.  It knows nothing about the Euler top: other layers add functions
-//! through [`registry::Registry`].  The language and the catalogue format are specified
-//! in `identities/README.md`.
+//! through [`registry::Registry`] (the model does, in [`crate::bindings`]).  The
+//! language and the catalogue format are specified in `identities/README.md`; the
+//! verdict engine follows the kinds in [`verdict`].
+//!
+//! Modules, from the bottom: [`ast`], [`lexer`], [`parser`] (text → syntax);
+//! [`backend`] (number systems), [`cmath`], [`value`] (values of the language);
+//! [`builtins`] (the built-in functions and random primitives, declared once);
+//! [`registry`] (host and catalogue functions); [`eval`] (the evaluator); [`latex`];
+//! [`kind`] (kinds, forms, verdicts); [`catalogue`] (TOML → claims); [`sampler`];
+//! [`verdict`] (claims → results).
 
 pub mod ast;
 pub mod backend;
 pub mod builtins;
 pub mod catalogue;
+pub mod cmath;
 pub mod eval;
+pub mod kind;
 pub mod latex;
 pub mod lexer;
 pub mod parser;

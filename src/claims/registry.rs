@@ -1,18 +1,23 @@
-//! The function table through which other layers (the Euler-top model) register named
-//! functions for the catalogue.  The engine itself knows nothing about the Euler top.
+//! The function table through which other layers register named functions for the
+//! catalogue (the Euler-top model does, from [`crate::bindings`]), and the catalogue's own
+//! `definition` functions.  The engine itself knows nothing about the Euler top.
 //!
 //! A layer implements [`GenericFunction`] (one generic method over every [`Real`]
-//! backend, optionally an exact one) and calls [`Registry::register`].
+//! backend, optionally one over every backend with field operations only) and calls
+//! [`Registry::register`].  How a backend reaches the right method of a registered
+//! function is [`HostCall`], implemented here for every backend.
 
 use super::ast::Binding;
+use super::backend::Num;
+use super::builtins::Builtin;
 use super::value::Value;
 use crate::numbers::{Dual, Rational, Real};
 use rug::Float;
 use std::collections::BTreeMap;
 use std::sync::Arc;
 
-/// A function callable on every backend.  Implemented automatically for every
-/// [`GenericFunction`].
+/// A function callable on every backend: one method per backend type, so that it can be
+/// stored as a trait object.  Implemented automatically for every [`GenericFunction`].
 pub trait ExtFunction: Send + Sync {
     /// On f64.
     fn call_f64(&self, args: &[Value<f64>]) -> Result<Value<f64>, String>;
@@ -26,12 +31,14 @@ pub trait ExtFunction: Send + Sync {
     fn call_exact(&self, args: &[Value<Rational>]) -> Result<Value<Rational>, String>;
 }
 
-/// A function written once, generically over the real backends.
+/// A function written once, generically over the backends.
 pub trait GenericFunction: Send + Sync {
     /// Evaluates on any real backend; errors are one-line messages.
-    fn call<R: Real + super::backend::Num>(&self, args: &[Value<R>]) -> Result<Value<R>, String>;
-    /// Evaluates exactly; by default an error (the function is not rational).
-    fn call_exact(&self, _args: &[Value<Rational>]) -> Result<Value<Rational>, String> {
+    fn call<R: Real>(&self, args: &[Value<R>]) -> Result<Value<R>, String>;
+    /// Evaluates with field operations only, on any backend (exact rationals, and any
+    /// backend without transcendental functions); by default an error (the function is
+    /// not rational).
+    fn call_algebraic<S: Num>(&self, _args: &[Value<S>]) -> Result<Value<S>, String> {
         Err("not available in exact rational arithmetic".into())
     }
 }
@@ -50,9 +57,33 @@ impl<G: GenericFunction> ExtFunction for G {
         self.call(a)
     }
     fn call_exact(&self, a: &[Value<Rational>]) -> Result<Value<Rational>, String> {
-        GenericFunction::call_exact(self, a)
+        self.call_algebraic(a)
     }
 }
+
+/// How a backend calls a registered function: it picks its method of [`ExtFunction`].
+pub trait HostCall: Num {
+    /// Calls `f` on `args`.
+    fn host_call(f: &dyn ExtFunction, args: &[Value<Self>]) -> Result<Value<Self>, String>;
+}
+
+macro_rules! host_call {
+    ($($t:ty => $method:ident),* $(,)?) => {
+        $(impl HostCall for $t {
+            fn host_call(f: &dyn ExtFunction, args: &[Value<Self>]) -> Result<Value<Self>, String> {
+                f.$method(args)
+            }
+        })*
+    };
+}
+
+host_call!(
+    f64 => call_f64,
+    Float => call_mpfr,
+    Dual<f64> => call_dual_f64,
+    Dual<Float> => call_dual_mpfr,
+    Rational => call_exact,
+);
 
 /// A registered function.
 #[derive(Clone)]
@@ -72,6 +103,23 @@ pub struct UserFn {
     pub params: Vec<String>,
     /// The defining binding.
     pub def: Binding,
+}
+
+/// Why a name could not be added to a [`Registry`].
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum RegistryError {
+    /// The name is a built-in function.
+    #[error("'{0}' is a built-in function")]
+    Builtin(String),
+    /// A host function of this name is registered already.
+    #[error("function '{0}' registered twice")]
+    RegisteredTwice(String),
+    /// A definition would shadow a built-in or registered function.
+    #[error("'{0}' is already a built-in or registered function")]
+    Shadows(String),
+    /// A catalogue function of this name is defined already.
+    #[error("function '{0}' defined twice")]
+    DefinedTwice(String),
 }
 
 /// The function table: registered (host) functions and catalogue-defined functions.
@@ -95,19 +143,43 @@ impl Registry {
     pub fn new() -> Self {
         Self::default()
     }
-    /// Registers a host function.  Errors if the name is a built-in or taken.
+    /// Registers a host function under `name`.  Errors if the name is a built-in or
+    /// taken.
+    ///
+    /// ```
+    /// use eulertop::claims::eval::Evaluator;
+    /// use eulertop::claims::parser::parse_expr;
+    /// use eulertop::claims::registry::{GenericFunction, Registry};
+    /// use eulertop::claims::value::Value;
+    /// use eulertop::numbers::Real;
+    ///
+    /// /// cube(x) = x³
+    /// struct Cube;
+    /// impl GenericFunction for Cube {
+    ///     fn call<R: Real>(&self, a: &[Value<R>]) -> Result<Value<R>, String> {
+    ///         let x = a[0].as_real()?;
+    ///         Ok(Value::Real(x.clone() * x.clone() * x))
+    ///     }
+    /// }
+    ///
+    /// let mut reg = Registry::new();
+    /// reg.register("cube", 1, "cube(x): x^3", Cube).unwrap();
+    /// assert!(reg.register("sin", 1, "clash", Cube).is_err());
+    /// let v = Evaluator::new(&reg, 0.0f64).eval(&parse_expr("cube(2)").unwrap()).unwrap();
+    /// assert_eq!(v, Value::Real(8.0));
+    /// ```
     pub fn register(
         &mut self,
         name: &str,
         arity: usize,
         doc: &str,
         f: impl ExtFunction + 'static,
-    ) -> Result<(), String> {
-        if super::builtins::is_builtin(name) {
-            return Err(format!("'{name}' is a built-in function"));
+    ) -> Result<(), RegistryError> {
+        if Builtin::from_name(name).is_some() {
+            return Err(RegistryError::Builtin(name.into()));
         }
         if self.ext.contains_key(name) {
-            return Err(format!("function '{name}' registered twice"));
+            return Err(RegistryError::RegisteredTwice(name.into()));
         }
         self.ext.insert(
             name.to_string(),
@@ -120,15 +192,13 @@ impl Registry {
         Ok(())
     }
     /// Adds a catalogue-defined function.  Errors if the name is taken.
-    pub fn define(&mut self, def: Binding) -> Result<(), String> {
+    pub fn define(&mut self, def: Binding) -> Result<(), RegistryError> {
         let name = def.name.clone();
-        if super::builtins::is_builtin(&name) || self.ext.contains_key(&name) {
-            return Err(format!(
-                "'{name}' is already a built-in or registered function"
-            ));
+        if Builtin::from_name(&name).is_some() || self.ext.contains_key(&name) {
+            return Err(RegistryError::Shadows(name));
         }
         if self.user.contains_key(&name) {
-            return Err(format!("function '{name}' defined twice"));
+            return Err(RegistryError::DefinedTwice(name));
         }
         let params = def.params.clone().unwrap_or_default();
         self.user.insert(name, Arc::new(UserFn { params, def }));
@@ -144,15 +214,19 @@ impl Registry {
     }
     /// Is `name` callable (built-in, registered or defined)?
     pub fn knows(&self, name: &str) -> bool {
-        super::builtins::is_builtin(name)
+        Builtin::from_name(name).is_some()
             || self.ext.contains_key(name)
             || self.user.contains_key(name)
     }
-    /// Names and docs of the registered host functions, sorted.
+    /// Names, arities and docs of the registered host functions, sorted by name.
     pub fn registered(&self) -> Vec<(String, usize, String)> {
         self.ext
             .iter()
             .map(|(n, r)| (n.clone(), r.arity, r.doc.clone()))
             .collect()
+    }
+    /// The catalogue-defined functions, sorted by name.
+    pub fn defined(&self) -> impl Iterator<Item = &Arc<UserFn>> {
+        self.user.values()
     }
 }

@@ -5,10 +5,12 @@
 //! enforced by rejection with a cap; a too-thin domain is an error naming the constraint.
 
 use super::ast::{Expr, ExprKind};
+use super::builtins::{Arity, Primitive};
 use super::catalogue::{Catalogue, Claim, PExpr};
-use super::eval::Evaluator;
+use super::eval::{EvalError, Evaluator};
 use super::registry::Registry;
 use super::value::Value;
+use crate::linalg::Vec3;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha20Rng;
 
@@ -57,7 +59,7 @@ pub fn render_f64_value(v: &Value<f64>) -> String {
         Value::Real(x) => format!("{x:e}"),
         Value::Bool(b) => b.to_string(),
         Value::Complex(z) => format!("{:e} + {:e}i", z.re, z.im),
-        Value::Vec3(a) => format!("({:e}, {:e}, {:e})", a[0], a[1], a[2]),
+        Value::Vec3(Vec3(a)) => format!("({:e}, {:e}, {:e})", a[0], a[1], a[2]),
         v => format!("{:?}", v.components()),
     }
 }
@@ -85,6 +87,31 @@ pub fn fnv1a(s: &str) -> u64 {
     h
 }
 
+/// The independent random streams of one claim: different purposes never share draws.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stream {
+    /// The float samples of the ladder.
+    Samples,
+    /// The rational points of the exact evaluation.
+    Exact,
+    /// The redrawn values of an independence claim.
+    Redraws,
+    /// The Newton starts of an existence claim.
+    Starts,
+}
+
+impl Stream {
+    /// The ChaCha20 stream number (fixed: reports depend on it).
+    pub fn id(self) -> u64 {
+        match self {
+            Stream::Samples => 0,
+            Stream::Exact => 1,
+            Stream::Redraws => 2,
+            Stream::Starts => 3,
+        }
+    }
+}
+
 /// Samples points of one claim's domain.
 pub struct Sampler<'c> {
     rng: ChaCha20Rng,
@@ -96,10 +123,8 @@ pub struct Sampler<'c> {
 }
 
 impl<'c> Sampler<'c> {
-    /// A sampler for `claim` (domain variables then the claim's own), on stream `stream`
-    /// (different purposes — float samples, exact samples, redraws — use different
-    /// streams so they never share draws).
-    pub fn new(cat: &'c Catalogue, claim: &'c Claim, stream: u64) -> Result<Self, String> {
+    /// A sampler for `claim` (domain variables then the claim's own) on `stream`.
+    pub fn new(cat: &'c Catalogue, claim: &'c Claim, stream: Stream) -> Result<Self, String> {
         let mut vars = Vec::new();
         let mut wheres = Vec::new();
         if let Some(d) = &claim.domain {
@@ -114,7 +139,7 @@ impl<'c> Sampler<'c> {
         wheres.extend(claim.wheres.iter());
         let seed = fnv1a(&claim.id) ^ claim.seed.wrapping_mul(0x9e3779b97f4a7c15);
         let mut rng = ChaCha20Rng::seed_from_u64(seed);
-        rng.set_stream(stream);
+        rng.set_stream(stream.id());
         Ok(Sampler {
             rng,
             reg: &cat.registry,
@@ -154,12 +179,10 @@ impl<'c> Sampler<'c> {
             ev.bind(n, v.clone());
         }
         for w in &self.wheres {
-            match ev.eval(&w.expr).and_then(|v| {
-                v.as_bool().map_err(|m| super::eval::EvalError {
-                    message: m,
-                    span: None,
-                })
-            }) {
+            match ev
+                .eval(&w.expr)
+                .and_then(|v| v.as_bool().map_err(EvalError::new))
+            {
                 Ok(true) => {}
                 Ok(false) => return Err(format!("'{}' is false", w.text)),
                 Err(e) => return Err(format!("'{}' cannot be evaluated: {}", w.text, e.message)),
@@ -191,6 +214,54 @@ impl<'c> Sampler<'c> {
     ) -> Result<Value<f64>, String> {
         let sub = self.substitute(e, ev)?;
         ev.eval(&sub).map_err(|e| e.message)
+    }
+
+    /// One draw of the primitive `p` with (f64) arguments `a`.
+    fn draw_primitive(&mut self, p: Primitive, a: &[f64]) -> Result<f64, String> {
+        Ok(match p {
+            Primitive::Uniform => {
+                if a.len() != 2 || a[0] >= a[1] || !a[0].is_finite() || !a[1].is_finite() {
+                    return Err("uniform(a, b) needs a < b".into());
+                }
+                let j = self.rng.gen_range(0..=UNIFORM_GRID);
+                self.set_size(UNIFORM_GRID + 1);
+                a[0] + (a[1] - a[0]) * (j as f64 / UNIFORM_GRID as f64)
+            }
+            Primitive::Normal => {
+                self.stats.nonuniform = true;
+                // Box–Muller
+                let u1: f64 = 1.0 - self.rng.gen::<f64>();
+                let u2: f64 = self.rng.gen::<f64>();
+                (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+            }
+            Primitive::Randint => {
+                if a.len() != 2
+                    || a[0].fract() != 0.0
+                    || a[1].fract() != 0.0
+                    || a[0] > a[1]
+                    || (a[1] - a[0]) > 1e12
+                {
+                    return Err("randint(a, b) needs integers a <= b".into());
+                }
+                self.set_size((a[1] - a[0]) as u64 + 1);
+                self.rng.gen_range(a[0] as i64..=a[1] as i64) as f64
+            }
+            Primitive::Sign => {
+                self.set_size(2);
+                if self.rng.gen::<bool>() {
+                    1.0
+                } else {
+                    -1.0
+                }
+            }
+            Primitive::Choice => {
+                if a.is_empty() {
+                    return Err("choice(...) needs at least one value".into());
+                }
+                self.set_size(a.len() as u64);
+                a[self.rng.gen_range(0..a.len())]
+            }
+        })
     }
 
     fn set_size(&mut self, n: u64) {
@@ -237,60 +308,13 @@ impl<'c> Sampler<'c> {
                 .map(|a| ev.eval(a).map_err(|e| e.message)?.as_real())
                 .collect()
         };
-        let x: f64 = match name.as_str() {
-            "uniform" => {
-                let a = reals(args)?;
-                if a.len() != 2 || a[0] >= a[1] || !a[0].is_finite() || !a[1].is_finite() {
-                    return Err("uniform(a, b) needs a < b".into());
-                }
-                let j = self.rng.gen_range(0..=UNIFORM_GRID);
-                self.set_size(UNIFORM_GRID + 1);
-                a[0] + (a[1] - a[0]) * (j as f64 / UNIFORM_GRID as f64)
-            }
-            "normal" => {
-                if !args.is_empty() {
-                    return Err("normal() takes no arguments".into());
-                }
-                self.stats.nonuniform = true;
-                // Box–Muller
-                let u1: f64 = 1.0 - self.rng.gen::<f64>();
-                let u2: f64 = self.rng.gen::<f64>();
-                (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
-            }
-            "randint" => {
-                let a = reals(args)?;
-                if a.len() != 2
-                    || a[0].fract() != 0.0
-                    || a[1].fract() != 0.0
-                    || a[0] > a[1]
-                    || (a[1] - a[0]) > 1e12
-                {
-                    return Err("randint(a, b) needs integers a <= b".into());
-                }
-                self.set_size((a[1] - a[0]) as u64 + 1);
-                self.rng.gen_range(a[0] as i64..=a[1] as i64) as f64
-            }
-            "sign" => {
-                if !args.is_empty() {
-                    return Err("sign() takes no arguments in a sampler".into());
-                }
-                self.set_size(2);
-                if self.rng.gen::<bool>() {
-                    1.0
-                } else {
-                    -1.0
-                }
-            }
-            "choice" => {
-                let a = reals(args)?;
-                if a.is_empty() {
-                    return Err("choice(...) needs at least one value".into());
-                }
-                self.set_size(a.len() as u64);
-                a[self.rng.gen_range(0..a.len())]
-            }
-            _ => return Ok(()),
+        let Some(p) = Primitive::from_name(name) else {
+            return Ok(());
         };
+        if p.spec().arity == Arity::Exact(0) && !args.is_empty() {
+            return Err(format!("{}() takes no arguments in a sampler", p.name()));
+        }
+        let x = self.draw_primitive(p, &reals(args)?)?;
         e.kind = ExprKind::Num(format!("{x:e}"));
         Ok(())
     }
@@ -303,7 +327,7 @@ pub fn check_domains(cat: &Catalogue) -> Result<(), String> {
         if matches!(c.body, super::catalogue::Body::Definition(_)) {
             continue;
         }
-        let mut s = Sampler::new(cat, c, 0).map_err(|m| format!("{}: {m}", c.id))?;
+        let mut s = Sampler::new(cat, c, Stream::Samples).map_err(|m| format!("{}: {m}", c.id))?;
         s.draw().map_err(|m| format!("{}: {m}", c.id))?;
     }
     Ok(())

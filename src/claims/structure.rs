@@ -14,7 +14,8 @@
 //! assert_eq!(Role::parse("proof-step"), Some(Role::ProofStep));
 //! ```
 
-use super::catalogue::{Body, Catalogue, Claim, Kind, LoadError, Origin};
+use super::catalogue::{Body, Catalogue, Claim, LoadError, Origin};
+use super::kind::Kind;
 use std::collections::{BTreeMap, BTreeSet};
 use toml::Spanned;
 

@@ -1,113 +1,12 @@
 //! Values of the expression language: real, complex, vec3, mat3, cmat2, bool, over any
 //! scalar backend, with the arithmetic of the language (type errors are `Err`, never
-//! panics).
+//! panics).  Vectors and matrices are the [`crate::linalg`] types, so products,
+//! determinants and commutators are written once, there.
 
-use super::backend::{Num, RealFn};
-
-/// A complex number over a backend scalar (exact for rationals).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Cx<T> {
-    /// Real part.
-    pub re: T,
-    /// Imaginary part.
-    pub im: T,
-}
-
-impl<T: Num> Cx<T> {
-    /// `re + i·im`.
-    pub fn new(re: T, im: T) -> Self {
-        Cx { re, im }
-    }
-    /// A real number as complex.
-    pub fn real(re: T) -> Self {
-        let im = re.zero();
-        Cx { re, im }
-    }
-    /// Sum.
-    pub fn add(&self, o: &Self) -> Self {
-        Cx::new(
-            self.re.clone() + o.re.clone(),
-            self.im.clone() + o.im.clone(),
-        )
-    }
-    /// Difference.
-    pub fn sub(&self, o: &Self) -> Self {
-        Cx::new(
-            self.re.clone() - o.re.clone(),
-            self.im.clone() - o.im.clone(),
-        )
-    }
-    /// Product.
-    pub fn mul(&self, o: &Self) -> Self {
-        Cx::new(
-            self.re.clone() * o.re.clone() - self.im.clone() * o.im.clone(),
-            self.re.clone() * o.im.clone() + self.im.clone() * o.re.clone(),
-        )
-    }
-    /// Quotient; error when dividing by an exact zero.
-    pub fn div(&self, o: &Self) -> Result<Self, String> {
-        let den = o.re.clone() * o.re.clone() + o.im.clone() * o.im.clone();
-        if den.is_zero() {
-            return Err("division by zero".into());
-        }
-        let n = self.mul(&o.conj());
-        Ok(Cx::new(n.re / den.clone(), n.im / den))
-    }
-    /// Negation.
-    pub fn neg(&self) -> Self {
-        Cx::new(-self.re.clone(), -self.im.clone())
-    }
-    /// Conjugate.
-    pub fn conj(&self) -> Self {
-        Cx::new(self.re.clone(), -self.im.clone())
-    }
-    /// Real scaling.
-    pub fn scale(&self, s: &T) -> Self {
-        Cx::new(self.re.clone() * s.clone(), self.im.clone() * s.clone())
-    }
-    /// Modulus.
-    pub fn abs(&self) -> Result<T, String> {
-        (self.re.clone() * self.re.clone() + self.im.clone() * self.im.clone())
-            .real_fn(RealFn::Sqrt)
-    }
-    /// Largest part magnitude, as f64.
-    pub fn magnitude(&self) -> f64 {
-        self.re.magnitude().hypot(self.im.magnitude())
-    }
-    /// Principal square root.
-    pub fn sqrt(&self) -> Result<Self, String> {
-        let r = self.abs()?;
-        if r.is_zero() {
-            return Ok(self.clone());
-        }
-        let two = r.from_i64(2);
-        let t = ((r + self.re.real_fn(RealFn::Abs)?) / two.clone()).real_fn(RealFn::Sqrt)?;
-        if self.re >= self.re.zero() {
-            let im = self.im.clone() / (t.clone() * two);
-            Ok(Cx::new(t, im))
-        } else {
-            let re = self.im.real_fn(RealFn::Abs)? / (t.clone() * two);
-            let im = if self.im < self.im.zero() { -t } else { t };
-            Ok(Cx::new(re, im))
-        }
-    }
-    /// Exponential.
-    pub fn exp(&self) -> Result<Self, String> {
-        let e = self.re.real_fn(RealFn::Exp)?;
-        Ok(Cx::new(
-            e.clone() * self.im.real_fn(RealFn::Cos)?,
-            e * self.im.real_fn(RealFn::Sin)?,
-        ))
-    }
-    /// Principal logarithm.
-    pub fn ln(&self) -> Result<Self, String> {
-        Ok(Cx::new(self.abs()?.real_fn(RealFn::Ln)?, self.arg()?))
-    }
-    /// Argument in (−π, π].
-    pub fn arg(&self) -> Result<T, String> {
-        self.im.atan2_(&self.re)
-    }
-}
+use super::backend::{Num, RealFn2};
+use super::cmath;
+use crate::linalg::{Mat2, Mat3, Vec3};
+use crate::numbers::Cplx;
 
 /// A value of the language.
 #[derive(Clone, Debug, PartialEq)]
@@ -115,13 +14,13 @@ pub enum Value<T> {
     /// A real number.
     Real(T),
     /// A complex number.
-    Complex(Cx<T>),
+    Complex(Cplx<T>),
     /// A real 3-vector.
-    Vec3([T; 3]),
+    Vec3(Vec3<T>),
     /// A real 3×3 matrix (row-major).
-    Mat3([[T; 3]; 3]),
+    Mat3(Mat3<T>),
     /// A complex 2×2 matrix (row-major).
-    CMat2([[Cx<T>; 2]; 2]),
+    CMat2(Mat2<Cplx<T>>),
     /// A truth value.
     Bool(bool),
 }
@@ -149,11 +48,14 @@ pub enum Layout {
     Rows,
 }
 
+/// The largest integer magnitude [`Value::as_int`] accepts.
+pub const MAX_INT: f64 = 1e15;
+
 impl<T: Num> Value<T> {
     /// Decimal rendering with `digits` significant digits in the given layout.
     pub fn render(&self, digits: usize, layout: Layout) -> String {
         let d = |x: &T| x.to_decimal(digits);
-        let c = |z: &Cx<T>| format!("{} + {}i", d(&z.re), d(&z.im));
+        let c = |z: &Cplx<T>| format!("{} + {}i", d(&z.re), d(&z.im));
         let rows = |rs: Vec<String>| match layout {
             Layout::Inline => format!("[{}]", rs.join(", ")),
             Layout::Rows => rs.join("\n"),
@@ -162,19 +64,19 @@ impl<T: Num> Value<T> {
             Value::Real(x) => d(x),
             Value::Bool(b) => b.to_string(),
             Value::Complex(z) => c(z),
-            Value::Vec3(a) => {
+            Value::Vec3(Vec3(a)) => {
                 let (open, close) = match layout {
                     Layout::Inline => ("(", ")"),
                     Layout::Rows => ("[", "]"),
                 };
                 format!("{open}{}, {}, {}{close}", d(&a[0]), d(&a[1]), d(&a[2]))
             }
-            Value::Mat3(m) => rows(
+            Value::Mat3(Mat3(m)) => rows(
                 m.iter()
                     .map(|r| format!("[{}, {}, {}]", d(&r[0]), d(&r[1]), d(&r[2])))
                     .collect(),
             ),
-            Value::CMat2(m) => rows(
+            Value::CMat2(Mat2(m)) => rows(
                 m.iter()
                     .map(|r| format!("[{}, {}]", c(&r[0]), c(&r[1])))
                     .collect(),
@@ -190,9 +92,9 @@ impl<T: Num> Value<T> {
         }
     }
     /// The value as a complex number (reals promoted).
-    pub fn as_complex(&self) -> Result<Cx<T>, String> {
+    pub fn as_complex(&self) -> Result<Cplx<T>, String> {
         match self {
-            Value::Real(x) => Ok(Cx::real(x.clone())),
+            Value::Real(x) => Ok(cmath::real(x.clone())),
             Value::Complex(z) => Ok(z.clone()),
             v => Err(format!(
                 "expected a complex number, got a {}",
@@ -201,21 +103,21 @@ impl<T: Num> Value<T> {
         }
     }
     /// The 3-vector, or a type error.
-    pub fn as_vec3(&self) -> Result<[T; 3], String> {
+    pub fn as_vec3(&self) -> Result<Vec3<T>, String> {
         match self {
             Value::Vec3(v) => Ok(v.clone()),
             v => Err(format!("expected a vec3, got a {}", v.type_name())),
         }
     }
     /// The 3×3 matrix, or a type error.
-    pub fn as_mat3(&self) -> Result<[[T; 3]; 3], String> {
+    pub fn as_mat3(&self) -> Result<Mat3<T>, String> {
         match self {
             Value::Mat3(m) => Ok(m.clone()),
             v => Err(format!("expected a mat3, got a {}", v.type_name())),
         }
     }
     /// The complex 2×2 matrix, or a type error.
-    pub fn as_cmat2(&self) -> Result<[[Cx<T>; 2]; 2], String> {
+    pub fn as_cmat2(&self) -> Result<Mat2<Cplx<T>>, String> {
         match self {
             Value::CMat2(m) => Ok(m.clone()),
             v => Err(format!("expected a cmat2, got a {}", v.type_name())),
@@ -228,16 +130,19 @@ impl<T: Num> Value<T> {
             v => Err(format!("expected a bool, got a {}", v.type_name())),
         }
     }
-    /// An exact integer (for indices, loop bounds, integer powers).
+    /// An exact integer of magnitude at most [`MAX_INT`] (for indices, loop bounds,
+    /// integer powers).
     pub fn as_int(&self) -> Result<i64, String> {
         let x = self.as_real()?;
-        let f = x.to_f64_();
-        if !f.is_finite()
-            || f.abs() > 1e15
-            || f.fract() != 0.0
-            || !(x.clone() - x.from_f64(f)).is_zero()
-        {
+        let f = x.to_f64();
+        let exact = f.is_finite() && f.fract() == 0.0 && (x.clone() - x.from_f64(f)).is_zero();
+        if !exact {
             return Err(format!("expected an integer, got {f}"));
+        }
+        if f.abs() > MAX_INT {
+            return Err(format!(
+                "integer {f:e} is too large (at most {MAX_INT:e} in magnitude)"
+            ));
         }
         Ok(f as i64)
     }
@@ -246,25 +151,27 @@ impl<T: Num> Value<T> {
         match self {
             Value::Real(x) => vec![x.clone()],
             Value::Complex(z) => vec![z.re.clone(), z.im.clone()],
-            Value::Vec3(v) => v.to_vec(),
-            Value::Mat3(m) => m.iter().flatten().cloned().collect(),
-            Value::CMat2(m) => m
-                .iter()
-                .flatten()
-                .flat_map(|z| [z.re.clone(), z.im.clone()])
-                .collect(),
+            Value::Vec3(v) => v.0.to_vec(),
+            Value::Mat3(m) => m.0.iter().flatten().cloned().collect(),
+            Value::CMat2(m) => {
+                m.0.iter()
+                    .flatten()
+                    .flat_map(|z| [z.re.clone(), z.im.clone()])
+                    .collect()
+            }
             Value::Bool(_) => vec![],
         }
     }
     /// Largest component modulus (complex entries by modulus), as f64.
     pub fn magnitude(&self) -> f64 {
         match self {
-            Value::Complex(z) => z.magnitude(),
-            Value::CMat2(m) => m
-                .iter()
-                .flatten()
-                .map(|z| z.magnitude())
-                .fold(0.0, f64::max),
+            Value::Complex(z) => cmath::magnitude(z),
+            Value::CMat2(m) => {
+                m.0.iter()
+                    .flatten()
+                    .map(cmath::magnitude)
+                    .fold(0.0, f64::max)
+            }
             Value::Bool(b) => f64::from(u8::from(*b)),
             v => v
                 .components()
@@ -273,26 +180,34 @@ impl<T: Num> Value<T> {
                 .fold(0.0, f64::max),
         }
     }
+    /// `max log2 |component|` (−∞ when every component is zero): the size of a value at
+    /// any precision, without underflow.
+    pub fn log2_magnitude(&self) -> f64 {
+        self.components()
+            .iter()
+            .map(|c| c.log2_abs())
+            .fold(f64::NEG_INFINITY, f64::max)
+    }
     /// Are all components finite?
     pub fn is_finite(&self) -> bool {
-        self.components().iter().all(|x| x.finite())
+        self.components().iter().all(|x| x.is_finite())
     }
     /// Maps every scalar component (complex parts included).
     pub fn map<U: Num>(&self, f: &mut dyn FnMut(&T) -> U) -> Value<U> {
-        let cx = |z: &Cx<T>, f: &mut dyn FnMut(&T) -> U| Cx::new(f(&z.re), f(&z.im));
+        let mut cx = |z: &Cplx<T>| Cplx::new(f(&z.re), f(&z.im));
         match self {
             Value::Real(x) => Value::Real(f(x)),
-            Value::Complex(z) => Value::Complex(cx(z, f)),
-            Value::Vec3(v) => Value::Vec3([f(&v[0]), f(&v[1]), f(&v[2])]),
-            Value::Mat3(m) => Value::Mat3(std::array::from_fn(|i| {
-                std::array::from_fn(|j| f(&m[i][j]))
-            })),
+            Value::Complex(z) => Value::Complex(cx(z)),
+            Value::Vec3(v) => Value::Vec3(Vec3([f(&v.0[0]), f(&v.0[1]), f(&v.0[2])])),
+            Value::Mat3(m) => Value::Mat3(Mat3(std::array::from_fn(|i| {
+                std::array::from_fn(|j| f(&m.0[i][j]))
+            }))),
             Value::CMat2(m) => {
-                let a = cx(&m[0][0], f);
-                let b = cx(&m[0][1], f);
-                let c = cx(&m[1][0], f);
-                let d = cx(&m[1][1], f);
-                Value::CMat2([[a, b], [c, d]])
+                let a = cx(&m.0[0][0]);
+                let b = cx(&m.0[0][1]);
+                let c = cx(&m.0[1][0]);
+                let d = cx(&m.0[1][1]);
+                Value::CMat2(Mat2([[a, b], [c, d]]))
             }
             Value::Bool(b) => Value::Bool(*b),
         }
@@ -300,33 +215,32 @@ impl<T: Num> Value<T> {
 
     /// `self + o`.
     pub fn add(&self, o: &Self) -> Result<Self, String> {
-        self.zip(o, "+", |a, b| a + b, |a, b| a.add(b))
+        self.zip(o, "+", false)
     }
     /// `self - o`.
     pub fn sub(&self, o: &Self) -> Result<Self, String> {
-        self.zip(o, "-", |a, b| a - b, |a, b| a.sub(b))
+        self.zip(o, "-", true)
     }
-    fn zip(
-        &self,
-        o: &Self,
-        op: &str,
-        f: impl Fn(T, T) -> T,
-        g: impl Fn(&Cx<T>, &Cx<T>) -> Cx<T>,
-    ) -> Result<Self, String> {
+    fn zip(&self, o: &Self, op: &str, minus: bool) -> Result<Self, String> {
+        fn pm<X: std::ops::Add<Output = X> + std::ops::Sub<Output = X>>(
+            a: X,
+            b: X,
+            minus: bool,
+        ) -> X {
+            if minus {
+                a - b
+            } else {
+                a + b
+            }
+        }
         Ok(match (self, o) {
-            (Value::Real(a), Value::Real(b)) => Value::Real(f(a.clone(), b.clone())),
+            (Value::Real(a), Value::Real(b)) => Value::Real(pm(a.clone(), b.clone(), minus)),
             (Value::Real(_) | Value::Complex(_), Value::Real(_) | Value::Complex(_)) => {
-                Value::Complex(g(&self.as_complex()?, &o.as_complex()?))
+                Value::Complex(pm(self.as_complex()?, o.as_complex()?, minus))
             }
-            (Value::Vec3(a), Value::Vec3(b)) => {
-                Value::Vec3(std::array::from_fn(|i| f(a[i].clone(), b[i].clone())))
-            }
-            (Value::Mat3(a), Value::Mat3(b)) => Value::Mat3(std::array::from_fn(|i| {
-                std::array::from_fn(|j| f(a[i][j].clone(), b[i][j].clone()))
-            })),
-            (Value::CMat2(a), Value::CMat2(b)) => Value::CMat2(std::array::from_fn(|i| {
-                std::array::from_fn(|j| g(&a[i][j], &b[i][j]))
-            })),
+            (Value::Vec3(a), Value::Vec3(b)) => Value::Vec3(pm(a.clone(), b.clone(), minus)),
+            (Value::Mat3(a), Value::Mat3(b)) => Value::Mat3(pm(a.clone(), b.clone(), minus)),
+            (Value::CMat2(a), Value::CMat2(b)) => Value::CMat2(pm(a.clone(), b.clone(), minus)),
             _ => {
                 return Err(format!(
                     "cannot apply '{op}' to a {} and a {}",
@@ -343,12 +257,12 @@ impl<T: Num> Value<T> {
             v => Ok(v.map(&mut |x: &T| -x.clone())),
         }
     }
-    fn scale_complex(&self, s: &Cx<T>) -> Result<Self, String> {
+    fn scale_complex(&self, s: &Cplx<T>) -> Result<Self, String> {
         match self {
-            Value::Real(x) => Ok(Value::Complex(s.scale(x))),
-            Value::Complex(z) => Ok(Value::Complex(s.mul(z))),
-            Value::CMat2(m) => Ok(Value::CMat2(std::array::from_fn(|i| {
-                std::array::from_fn(|j| s.mul(&m[i][j]))
+            Value::Real(x) => Ok(Value::Complex(cmath::scale(s, x))),
+            Value::Complex(z) => Ok(Value::Complex(s.clone() * z.clone())),
+            Value::CMat2(m) => Ok(Value::CMat2(Mat2::from_fn(|i, j| {
+                s.clone() * m.0[i][j].clone()
             }))),
             v => Err(format!(
                 "cannot multiply a {} by a complex number",
@@ -363,21 +277,9 @@ impl<T: Num> Value<T> {
                 Ok(v.map(&mut |x: &T| s.clone() * x.clone()))
             }
             (Value::Complex(s), v) | (v, Value::Complex(s)) => v.scale_complex(s),
-            (Value::Mat3(a), Value::Mat3(b)) => Ok(Value::Mat3(std::array::from_fn(|i| {
-                std::array::from_fn(|j| {
-                    a[i][0].clone() * b[0][j].clone()
-                        + a[i][1].clone() * b[1][j].clone()
-                        + a[i][2].clone() * b[2][j].clone()
-                })
-            }))),
-            (Value::Mat3(a), Value::Vec3(v)) => Ok(Value::Vec3(std::array::from_fn(|i| {
-                a[i][0].clone() * v[0].clone()
-                    + a[i][1].clone() * v[1].clone()
-                    + a[i][2].clone() * v[2].clone()
-            }))),
-            (Value::CMat2(a), Value::CMat2(b)) => Ok(Value::CMat2(std::array::from_fn(|i| {
-                std::array::from_fn(|j| a[i][0].mul(&b[0][j]).add(&a[i][1].mul(&b[1][j])))
-            }))),
+            (Value::Mat3(a), Value::Mat3(b)) => Ok(Value::Mat3(a.clone() * b.clone())),
+            (Value::Mat3(a), Value::Vec3(v)) => Ok(Value::Vec3(a.mul_vec(v))),
+            (Value::CMat2(a), Value::CMat2(b)) => Ok(Value::CMat2(a.clone() * b.clone())),
             _ => Err(format!(
                 "cannot multiply a {} by a {} (use dot/cross for vectors)",
                 self.type_name(),
@@ -398,11 +300,26 @@ impl<T: Num> Value<T> {
                 }
             }
             Value::Complex(s) => {
-                let inv = Cx::real(s.re.one()).div(s)?;
+                let inv = cmath::div(&cmath::real(s.re.one()), s)?;
                 self.scale_complex(&inv)
             }
             _ => Err(format!("cannot divide by a {}", o.type_name())),
         }
+    }
+    /// The multiplicative identity of this value's type (scalars and square matrices).
+    fn one(&self) -> Result<Self, String> {
+        Ok(match self {
+            Value::Real(x) => Value::Real(x.one()),
+            Value::Complex(z) => Value::Complex(cmath::real(z.re.one())),
+            Value::Mat3(m) => Value::Mat3(Mat3::identity(&m.0[0][0])),
+            Value::CMat2(m) => {
+                let z = &m.0[0][0].re;
+                Value::CMat2(Mat2::from_fn(|i, j| {
+                    cmath::real(if i == j { z.one() } else { z.zero() })
+                }))
+            }
+            v => return Err(format!("cannot raise a {} to a power", v.type_name())),
+        })
     }
     /// `self ^ o`: integer powers of scalars and square matrices by repeated
     /// multiplication (negative powers of scalars invert); real powers of positive reals.
@@ -411,23 +328,7 @@ impl<T: Num> Value<T> {
             if n.unsigned_abs() > 1 << 20 {
                 return Err(format!("exponent {n} too large"));
             }
-            let one: Self = match self {
-                Value::Real(x) => Value::Real(x.one()),
-                Value::Complex(z) => Value::Complex(Cx::real(z.re.one())),
-                Value::Mat3(m) => {
-                    let z = &m[0][0];
-                    Value::Mat3(std::array::from_fn(|i| {
-                        std::array::from_fn(|j| if i == j { z.one() } else { z.zero() })
-                    }))
-                }
-                Value::CMat2(m) => {
-                    let z = &m[0][0].re;
-                    Value::CMat2(std::array::from_fn(|i| {
-                        std::array::from_fn(|j| Cx::real(if i == j { z.one() } else { z.zero() }))
-                    }))
-                }
-                v => return Err(format!("cannot raise a {} to a power", v.type_name())),
-            };
+            let one = self.one()?;
             let mut base = self.clone();
             if n < 0 {
                 base = match &base {
@@ -449,11 +350,32 @@ impl<T: Num> Value<T> {
             return Ok(acc);
         }
         match (self, o) {
-            (Value::Real(x), Value::Real(y)) => Ok(Value::Real(x.powf_(y)?)),
+            (Value::Real(x), Value::Real(y)) => Ok(Value::Real(x.real_fn2(RealFn2::Pow, y)?)),
             _ => Err(format!(
                 "cannot raise a {} to a non-integer {} power",
                 self.type_name(),
                 o.type_name()
+            )),
+        }
+    }
+    /// `self[idx]` with 1-based indices: a vec3 component, a matrix entry or row.
+    pub fn index(&self, idx: &[i64]) -> Result<Self, String> {
+        let chk = |i: i64, n: i64| -> Result<usize, String> {
+            if i < 1 || i > n {
+                Err(format!("index {i} out of range 1..{n}"))
+            } else {
+                Ok((i - 1) as usize)
+            }
+        };
+        match (self, idx) {
+            (Value::Vec3(a), [i]) => Ok(Value::Real(a.0[chk(*i, 3)?].clone())),
+            (Value::Mat3(m), [i, j]) => Ok(Value::Real(m.0[chk(*i, 3)?][chk(*j, 3)?].clone())),
+            (Value::Mat3(m), [i]) => Ok(Value::Vec3(Vec3(m.0[chk(*i, 3)?].clone()))),
+            (Value::CMat2(m), [i, j]) => Ok(Value::Complex(m.0[chk(*i, 2)?][chk(*j, 2)?].clone())),
+            _ => Err(format!(
+                "cannot index a {} with {} indices",
+                self.type_name(),
+                idx.len()
             )),
         }
     }

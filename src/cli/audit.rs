@@ -4,7 +4,7 @@
 use super::verify::{fmt_log2, load, parse_bits};
 use super::{stdout, write_error, CliError};
 use crate::claims::catalogue::{Catalogue, Claim};
-use crate::claims::verdict::{run_claim, Options};
+use crate::claims::verdict::{run_claim, Options, Rung};
 use crate::stats::ls_slope;
 use clap::Parser;
 use std::io::{IsTerminal, Write};
@@ -44,10 +44,10 @@ fn ladder(
         let rung = r.residuals.first();
         let cell = match rung {
             None => format!("- ({})", r.reason),
-            Some(x) if r.kind == "asymptotic" => format!("slope {:.3}", x.residual),
-            Some(x) => fmt_log2(x.log2),
+            Some(Rung::Slope { slope, .. }) => format!("slope {slope:.3}"),
+            Some(x) => fmt_log2(x.log2()),
         };
-        if let Some(l) = rung.and_then(|x| x.log2) {
+        if let Some(l) = rung.and_then(|x| x.log2()) {
             xs.push(f64::from(b));
             ys.push(-l);
         }
@@ -105,7 +105,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
                 out,
                 "verdict: {} (expect {}): {}",
                 full.verdict.name(),
-                full.expect.clone().unwrap_or_else(|| "-".into()),
+                full.expect.map_or("-", |v| v.name()),
                 full.reason
             )
         })

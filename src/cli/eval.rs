@@ -1,9 +1,7 @@
 //! `eulertop eval EXPR`: evaluates an expression of the catalogue language.
 
-use super::verify::catalogue_registry;
 use super::CliError;
-use crate::claims::backend::Num;
-use crate::claims::eval::Evaluator;
+use crate::claims::eval::{Backend, Evaluator};
 use crate::claims::parser::parse_expr;
 use crate::claims::value::Layout;
 use clap::Parser;
@@ -25,10 +23,10 @@ pub struct Args {
     pub catalogue: Option<String>,
 }
 
-fn go<T: Num>(args: &Args, like: T) -> Result<String, CliError> {
+fn go<T: Backend>(args: &Args, like: T) -> Result<String, CliError> {
     let reg = match &args.catalogue {
         Some(dir) => super::verify::load(dir)?.registry,
-        None => catalogue_registry(),
+        None => crate::bindings::euler_top::registry().map_err(CliError::new)?,
     };
     let mut ev = Evaluator::new(&reg, like);
     for s in &args.set {

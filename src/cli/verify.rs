@@ -3,8 +3,7 @@
 
 use super::CliError;
 use crate::claims::catalogue::{latex_labels, load_dir, Catalogue};
-use crate::claims::registry::Registry;
-use crate::claims::verdict::{coverage_table, verify, ClaimResult, Options, Verdict};
+use crate::claims::verdict::{coverage_table, verify, ClaimResult, Options, Rung, Verdict};
 use clap::Parser;
 use serde::Serialize;
 use std::io::{IsTerminal, Write};
@@ -33,21 +32,10 @@ pub struct Args {
     pub coverage: bool,
 }
 
-/// The function table used by the command-line tools: every function registered by the
-/// model layer.
-pub fn catalogue_registry() -> Registry {
-    let mut reg = Registry::new();
-    // Names are fixed and distinct from the built-ins; a clash is a programming error
-    // caught by the tests, never by users.
-    if let Err(m) = crate::model::catalogue_fns::register(&mut reg) {
-        eprintln!("eulertop: internal error registering model functions: {m}");
-    }
-    reg
-}
-
 /// Loads the catalogue with the model's functions; load errors become [`CliError`].
 pub fn load(dir: &str) -> Result<Catalogue, CliError> {
-    load_dir(Path::new(dir), catalogue_registry()).map_err(|e| CliError(e.to_string()))
+    let reg = crate::bindings::euler_top::registry().map_err(CliError::new)?;
+    load_dir(Path::new(dir), reg).map_err(|e| CliError(e.to_string()))
 }
 
 /// Simple pattern match: substring, with `*` as a wildcard.
@@ -145,18 +133,15 @@ fn summary(results: &[ClaimResult], bits: &[u32]) -> Summary {
     }
 }
 
-/// Paper labels: from the LaTeX source next to the repository if present, else the
-/// checked-in list.
+/// Paper labels: from the LaTeX source named by the environment variable
+/// `EULERTOP_PAPER` when it is set and readable, else the checked-in list.
 pub fn paper_labels() -> Vec<String> {
-    for p in [
-        "../shared/paper/bobenko-lorbeer-suris-euler-top.tex",
-        "../../shared/paper/bobenko-lorbeer-suris-euler-top.tex",
-    ] {
-        if let Ok(t) = std::fs::read_to_string(p) {
-            let l = latex_labels(&t);
-            if !l.is_empty() {
-                return l;
-            }
+    if let Some(t) =
+        std::env::var_os("EULERTOP_PAPER").and_then(|p| std::fs::read_to_string(p).ok())
+    {
+        let l = latex_labels(&t);
+        if !l.is_empty() {
+            return l;
         }
     }
     include_str!("../../tests/data/paper_labels.txt")
@@ -294,14 +279,14 @@ fn print_text(
             loc,
             r.form,
             format!("{}{mark}", r.verdict.name()),
-            r.expect.clone().unwrap_or_else(|| "-".into()),
+            r.expect.map_or("-", |v| v.name()),
             g
         );
         for (j, _) in bits.iter().enumerate() {
             let cell = match r.residuals.get(j) {
                 None => "-".to_string(),
-                Some(x) if r.kind == "asymptotic" => format!("slope {:.2}", x.residual),
-                Some(x) => fmt_log2(x.log2),
+                Some(Rung::Slope { slope, .. }) => format!("slope {slope:.2}"),
+                Some(x) => fmt_log2(x.log2()),
             };
             line.push_str(&format!("  {cell:>10}"));
         }

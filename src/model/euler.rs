@@ -4,7 +4,7 @@
 
 use super::ModelError;
 use crate::linalg::Vec3;
-use crate::numbers::{Dual, Real};
+use crate::numbers::{Dual, Real, Scalar};
 
 /// Principal moments of inertia `A > B > C > 0` (ABC).
 #[derive(Clone, Debug, PartialEq)]
@@ -17,7 +17,9 @@ pub struct Inertia<R> {
     pub c: R,
 }
 
-impl<R: Real> Inertia<R> {
+/// The field-only part: every ordered scalar (exact rationals included) computes
+/// (Omega), (E) and (M2) with this same code.
+impl<R: Scalar + PartialOrd> Inertia<R> {
     /// Validates (ABC) `A > B > C > 0`; otherwise [`ModelError::InvalidInertia`].
     pub fn new(a: R, b: R, c: R) -> Result<Self, ModelError> {
         let z = a.zero();
@@ -31,21 +33,6 @@ impl<R: Real> Inertia<R> {
                 c: c.to_decimal(17),
             })
         }
-    }
-
-    /// Converts every moment with `f` (e.g. to [`Dual`] constants or another
-    /// precision); the order A > B > C > 0 is preserved by monotone conversions.
-    pub fn map<S: Real>(&self, f: impl Fn(&R) -> S) -> Inertia<S> {
-        Inertia {
-            a: f(&self.a),
-            b: f(&self.b),
-            c: f(&self.c),
-        }
-    }
-
-    /// The same moments as [`Dual`] constants.
-    pub fn to_dual(&self) -> Inertia<Dual<R>> {
-        self.map(|x| Dual::constant(x.clone()))
     }
 
     /// `(A, B, C)` as a vector.
@@ -71,6 +58,23 @@ impl<R: Real> Inertia<R> {
     /// Casimir (M2): `M² = M₁² + M₂² + M₃²`.
     pub fn m2(&self, m: &Vec3<R>) -> R {
         m.norm2()
+    }
+}
+
+impl<R: Real> Inertia<R> {
+    /// Converts every moment with `f` (e.g. to [`Dual`] constants or another
+    /// precision); the order A > B > C > 0 is preserved by monotone conversions.
+    pub fn map<S: Real>(&self, f: impl Fn(&R) -> S) -> Inertia<S> {
+        Inertia {
+            a: f(&self.a),
+            b: f(&self.b),
+            c: f(&self.c),
+        }
+    }
+
+    /// The same moments as [`Dual`] constants.
+    pub fn to_dual(&self) -> Inertia<Dual<R>> {
+        self.map(|x| Dual::constant(x.clone()))
     }
 
     /// The right-hand side of (ET) in components:

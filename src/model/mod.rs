@@ -30,7 +30,6 @@
 //! [`euler::Inertia::field_cross_std`] is the printed `M × Ω` with the standard cross
 //! product, kept separately so that the mismatch can be recorded as a claim.
 
-pub mod catalogue_fns;
 pub mod discretization;
 pub mod elliptic_coords;
 pub mod error;

@@ -37,13 +37,13 @@ pub fn vee<S: Scalar>(m: &Mat3<S>) -> Vec3<S> {
 }
 
 /// (Omega m): `Ω(M)` as a skew matrix, the [`hat`] of (Omega).
-pub fn omega_matrix<R: Real>(inertia: &Inertia<R>, m: &Vec3<R>) -> Mat3<R> {
+pub fn omega_matrix<R: Scalar + PartialOrd>(inertia: &Inertia<R>, m: &Vec3<R>) -> Mat3<R> {
     hat(&inertia.omega(m))
 }
 
 /// The diagonal of `J` (J) from (Js): `J₁ = (B+C−A)/2`, `J₂ = (C+A−B)/2`,
 /// `J₃ = (A+B−C)/2`.  (`J₁` may be ≤ 0 when `A ≥ B + C`.)
-pub fn j_diag<R: Real>(inertia: &Inertia<R>) -> Vec3<R> {
+pub fn j_diag<R: Scalar + PartialOrd>(inertia: &Inertia<R>) -> Vec3<R> {
     let (a, b, c) = (&inertia.a, &inertia.b, &inertia.c);
     let half = a.from_ratio(1, 2);
     Vec3::new(

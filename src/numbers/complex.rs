@@ -17,26 +17,26 @@ pub struct Cplx<R> {
 /// The double-precision complex type.
 pub type C64 = Cplx<f64>;
 
-impl<R: Real> Cplx<R> {
+impl<R: Scalar + PartialOrd> Cplx<R> {
     /// `re + i·im`.
     pub fn new(re: R, im: R) -> Self {
         Cplx { re, im }
     }
 }
 
-impl<R: Real> Add for Cplx<R> {
+impl<R: Scalar + PartialOrd> Add for Cplx<R> {
     type Output = Self;
     fn add(self, o: Self) -> Self {
         Cplx::new(self.re + o.re, self.im + o.im)
     }
 }
-impl<R: Real> Sub for Cplx<R> {
+impl<R: Scalar + PartialOrd> Sub for Cplx<R> {
     type Output = Self;
     fn sub(self, o: Self) -> Self {
         Cplx::new(self.re - o.re, self.im - o.im)
     }
 }
-impl<R: Real> Mul for Cplx<R> {
+impl<R: Scalar + PartialOrd> Mul for Cplx<R> {
     type Output = Self;
     fn mul(self, o: Self) -> Self {
         let re = self.re.clone() * o.re.clone() - self.im.clone() * o.im.clone();
@@ -65,7 +65,7 @@ impl<R: Real> Div for Cplx<R> {
         }
     }
 }
-impl<R: Real> Neg for Cplx<R> {
+impl<R: Scalar + PartialOrd> Neg for Cplx<R> {
     type Output = Self;
     fn neg(self) -> Self {
         Cplx::new(-self.re, -self.im)
@@ -111,6 +111,15 @@ impl<R: Real> Scalar for Cplx<R> {
     fn magnitude(&self) -> f64 {
         self.re.magnitude().hypot(self.im.magnitude())
     }
+    fn to_f64(&self) -> f64 {
+        self.re.to_f64()
+    }
+    fn is_finite(&self) -> bool {
+        self.re.is_finite() && self.im.is_finite()
+    }
+    fn log2_abs(&self) -> f64 {
+        log2_hypot(self.re.log2_abs(), self.im.log2_abs())
+    }
     fn try_sqrt(&self) -> Result<Self, NumError> {
         Ok(ComplexScalar::sqrt(self))
     }
@@ -134,6 +143,15 @@ impl<R: Real> ComplexScalar for Cplx<R> {
     fn im(&self) -> R {
         self.im.clone()
     }
+}
+
+/// `log2 √(2^(2a) + 2^(2b))` from `a = log2|x|`, `b = log2|y|`, without overflow.
+fn log2_hypot(a: f64, b: f64) -> f64 {
+    let (hi, lo) = if a >= b { (a, b) } else { (b, a) };
+    if hi == f64::NEG_INFINITY || !hi.is_finite() {
+        return hi;
+    }
+    hi + 0.5 * (2.0 * (lo - hi)).exp2().ln_1p() / std::f64::consts::LN_2
 }
 
 /// Splits `a+bi` / `a-bi` / `bi` / `a,b` / `a` into real and imaginary literal parts.
@@ -215,6 +233,15 @@ impl Scalar for Complex {
     }
     fn magnitude(&self) -> f64 {
         self.real().to_f64().hypot(self.imag().to_f64())
+    }
+    fn to_f64(&self) -> f64 {
+        self.real().to_f64()
+    }
+    fn is_finite(&self) -> bool {
+        self.real().is_finite() && self.imag().is_finite()
+    }
+    fn log2_abs(&self) -> f64 {
+        log2_hypot(self.real().log2_abs(), self.imag().log2_abs())
     }
     fn try_sqrt(&self) -> Result<Self, NumError> {
         Ok(Complex::with_val(self.prec(), self.sqrt_ref()))

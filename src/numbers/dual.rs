@@ -116,6 +116,16 @@ impl<S: Scalar> Scalar for Dual<S> {
     fn magnitude(&self) -> f64 {
         self.v.magnitude()
     }
+    fn to_f64(&self) -> f64 {
+        self.v.to_f64()
+    }
+    /// Both the value and the derivative are finite.
+    fn is_finite(&self) -> bool {
+        self.v.is_finite() && self.d.is_finite()
+    }
+    fn log2_abs(&self) -> f64 {
+        self.v.log2_abs()
+    }
     fn try_sqrt(&self) -> Result<Self, NumError> {
         let r = self.v.try_sqrt()?;
         let two = r.from_i64(2);
@@ -138,9 +148,6 @@ impl<R: Real> Real for Dual<R> {
     }
     fn with_prec(&self, bits: u32) -> Self {
         Dual::new(self.v.with_prec(bits), self.d.with_prec(bits))
-    }
-    fn to_f64(&self) -> f64 {
-        self.v.to_f64()
     }
     fn pi(&self) -> Self {
         Dual::constant(self.v.pi())
@@ -226,8 +233,5 @@ impl<R: Real> Real for Dual<R> {
     }
     fn round(&self) -> Self {
         Dual::constant(self.v.round())
-    }
-    fn is_finite(&self) -> bool {
-        self.v.is_finite() && self.d.is_finite()
     }
 }

@@ -31,6 +31,12 @@ impl Scalar for f64 {
     fn magnitude(&self) -> f64 {
         f64::abs(*self)
     }
+    fn to_f64(&self) -> f64 {
+        *self
+    }
+    fn is_finite(&self) -> bool {
+        f64::is_finite(*self)
+    }
     fn try_sqrt(&self) -> Result<Self, NumError> {
         if *self < 0.0 {
             Err(NumError::NegativeSqrt(format!("{self:e}")))
@@ -49,9 +55,6 @@ impl Real for f64 {
         53
     }
     fn with_prec(&self, _bits: u32) -> Self {
-        *self
-    }
-    fn to_f64(&self) -> f64 {
         *self
     }
     fn pi(&self) -> Self {
@@ -123,9 +126,6 @@ impl Real for f64 {
     }
     fn round(&self) -> Self {
         f64::round(*self)
-    }
-    fn is_finite(&self) -> bool {
-        f64::is_finite(*self)
     }
     fn powf(&self, y: &Self) -> Self {
         f64::powf(*self, *y)

@@ -95,6 +95,15 @@ pub trait Scalar:
     fn is_zero(&self) -> bool;
     /// The absolute value (modulus), rounded to `f64`.  Used for residual scaling.
     fn magnitude(&self) -> f64;
+    /// The value rounded to `f64` (for complex scalars: the real part).
+    fn to_f64(&self) -> f64;
+    /// Is the value finite (not NaN or infinite)?  Exact scalars always are.
+    fn is_finite(&self) -> bool;
+    /// `log2 |self|` without underflow or overflow of the `f64` result's argument
+    /// (−∞ for zero): the size of a value at any precision.
+    fn log2_abs(&self) -> f64 {
+        self.magnitude().log2()
+    }
     /// A square root: correctly rounded for floating types (principal branch for
     /// complex ones, error for negative reals), and exact for rationals, where it is an
     /// error unless the argument is a perfect square.
@@ -143,8 +152,6 @@ pub trait Real: Scalar + PartialOrd {
     fn prec(&self) -> u32;
     /// The same value rounded to `bits` of precision (identity for `f64`).
     fn with_prec(&self, bits: u32) -> Self;
-    /// The value rounded to `f64`.
-    fn to_f64(&self) -> f64;
     /// π at the precision of `self`.
     fn pi(&self) -> Self;
     /// Machine epsilon at the precision of `self`: `2^(1-prec)`.
@@ -216,8 +223,6 @@ pub trait Real: Scalar + PartialOrd {
     fn floor(&self) -> Self;
     /// Nearest integer (ties away from zero).
     fn round(&self) -> Self;
-    /// Is the value finite (not NaN or infinite)?
-    fn is_finite(&self) -> bool;
     /// `self^y` for real `y` (`exp(y ln self)`, self > 0).
     fn powf(&self, y: &Self) -> Self {
         (y.clone() * self.ln()).exp()

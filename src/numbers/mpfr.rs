@@ -47,6 +47,19 @@ impl Scalar for Float {
     fn magnitude(&self) -> f64 {
         Float::to_f64(self).abs()
     }
+    fn to_f64(&self) -> f64 {
+        Float::to_f64(self)
+    }
+    fn is_finite(&self) -> bool {
+        Float::is_finite(self)
+    }
+    fn log2_abs(&self) -> f64 {
+        if Float::is_zero(self) {
+            return f64::NEG_INFINITY;
+        }
+        let (m, e) = self.to_f64_exp();
+        m.abs().log2() + f64::from(e)
+    }
     fn try_sqrt(&self) -> Result<Self, NumError> {
         if self.is_sign_negative() && !Float::is_zero(self) {
             Err(NumError::NegativeSqrt(Scalar::to_decimal(self, 10)))
@@ -87,9 +100,6 @@ impl Real for Float {
     fn with_prec(&self, bits: u32) -> Self {
         Float::with_val(bits, self)
     }
-    fn to_f64(&self) -> f64 {
-        Float::to_f64(self)
-    }
     fn pi(&self) -> Self {
         Float::with_val(self.prec(), Constant::Pi)
     }
@@ -125,9 +135,6 @@ impl Real for Float {
     }
     fn atan2(&self, x: &Self) -> Self {
         Float::with_val(self.prec(), self.atan2_ref(x))
-    }
-    fn is_finite(&self) -> bool {
-        Float::is_finite(self)
     }
     fn powf(&self, y: &Self) -> Self {
         Float::with_val(self.prec(), self.pow(y))

@@ -96,7 +96,28 @@ impl Scalar for BigRational {
         Zero::is_zero(self)
     }
     fn magnitude(&self) -> f64 {
-        self.abs().to_f64().unwrap_or(f64::INFINITY)
+        ToPrimitive::to_f64(&self.abs()).unwrap_or(f64::INFINITY)
+    }
+    fn to_f64(&self) -> f64 {
+        ToPrimitive::to_f64(self).unwrap_or(f64::NAN)
+    }
+    fn is_finite(&self) -> bool {
+        true
+    }
+    /// From the leading 60 bits of numerator and denominator: no overflow for any size.
+    fn log2_abs(&self) -> f64 {
+        if Zero::is_zero(self) {
+            return f64::NEG_INFINITY;
+        }
+        let top = |x: &BigInt| -> (f64, i64) {
+            let x = x.abs();
+            let shift = (x.bits() as i64 - 60).max(0);
+            let t: BigInt = x >> (shift as usize);
+            (ToPrimitive::to_f64(&t).unwrap_or(1.0), shift)
+        };
+        let (nf, ns) = top(self.numer());
+        let (df, ds) = top(self.denom());
+        nf.log2() - df.log2() + (ns - ds) as f64
     }
     fn try_sqrt(&self) -> Result<Self, NumError> {
         match (exact_isqrt(self.numer()), exact_isqrt(self.denom())) {

@@ -8,6 +8,7 @@ mod phase;
 mod style;
 
 use super::Section;
+use crate::claims::kind::Kind;
 use crate::claims::verdict::{ClaimResult, Verdict};
 use plotters::prelude::*;
 
@@ -50,7 +51,8 @@ pub fn residual_plot(sec: &Section, claims: &[&ClaimResult], bits: &[u32]) -> St
                     .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], BLACK))
             });
         for r in claims {
-            if r.verdict == Verdict::Defined || r.kind == "asymptotic" || r.residuals.is_empty() {
+            if r.verdict == Verdict::Defined || r.kind == Kind::Asymptotic || r.residuals.is_empty()
+            {
                 continue;
             }
             let color = match r.verdict {
@@ -61,7 +63,7 @@ pub fn residual_plot(sec: &Section, claims: &[&ClaimResult], bits: &[u32]) -> St
             let pts: Vec<(f64, f64)> = r
                 .residuals
                 .iter()
-                .map(|x| (x.bits as f64, x.log2.unwrap_or(floor).max(floor)))
+                .map(|x| (x.bits() as f64, x.log2().unwrap_or(floor).max(floor)))
                 .collect();
             let _ = chart.draw_series(LineSeries::new(pts.clone(), color.stroke_width(1)));
             let _ = chart.draw_series(pts.into_iter().map(|p| Circle::new(p, 2, color.filled())));

@@ -2,6 +2,7 @@
 
 use super::tex::{display_math, is_prose, prose};
 use super::{stem_of, ReportInput, Section};
+use crate::claims::kind::{Form, Kind};
 use crate::claims::verdict::{ClaimResult, Rung, Verdict};
 use std::collections::BTreeMap;
 use std::fmt::Write;
@@ -18,11 +19,11 @@ pub fn verdict_badge(v: Verdict) -> &'static str {
 }
 
 /// A residual as `2^-n` (or `0`), with two significant digits of the mantissa.
-pub fn fmt_residual(r: &Rung, kind: &str) -> String {
-    if kind == "asymptotic" {
-        return format!("slope {:.3}", r.residual);
+pub fn fmt_residual(r: &Rung) -> String {
+    if let Rung::Slope { slope, .. } = r {
+        return format!("slope {slope:.3}");
     }
-    match r.log2 {
+    match r.log2() {
         None => "0 (exact)".to_string(),
         Some(l) => format!("2^{:.1}", l),
     }
@@ -33,25 +34,25 @@ pub fn best_residual(r: &ClaimResult) -> String {
     if r.verdict == Verdict::Defined {
         return "—".to_string();
     }
-    if r.kind == "asymptotic" {
+    if r.kind == Kind::Asymptotic {
         return r
             .residuals
             .last()
-            .map(|x| fmt_residual(x, &r.kind))
+            .map(fmt_residual)
             .unwrap_or_else(|| "—".into());
     }
     let mut best: Option<&Rung> = None;
     for x in &r.residuals {
-        let better = match (best, x.log2) {
+        let better = match (best, x.log2()) {
             (None, _) => true,
-            (Some(b), Some(l)) => b.log2.is_some_and(|bl| l < bl),
-            (Some(b), None) => b.log2.is_some(),
+            (Some(b), Some(l)) => b.log2().is_some_and(|bl| l < bl),
+            (Some(b), None) => b.log2().is_some(),
         };
         if better {
             best = Some(x);
         }
     }
-    best.map(|x| format!("{} at {} bits", fmt_residual(x, &r.kind), x.bits))
+    best.map(|x| format!("{} at {} bits", fmt_residual(x), x.bits()))
         .unwrap_or_else(|| "—".into())
 }
 
@@ -193,7 +194,7 @@ pub fn claim_block(input: &ReportInput, r: &ClaimResult) -> String {
         },
         r.kind,
         r.form,
-        r.expect.as_deref().unwrap_or("—"),
+        r.expect.map_or("—", |v| v.name()),
         r.position
     );
     let _ = writeln!(s, "As printed:\n");
@@ -245,7 +246,7 @@ pub fn claim_block(input: &ReportInput, r: &ClaimResult) -> String {
         let _ = writeln!(
             s,
             "| bits | {} |",
-            if r.kind == "asymptotic" {
+            if r.kind == Kind::Asymptotic {
                 "fitted slope"
             } else {
                 "residual"
@@ -253,7 +254,7 @@ pub fn claim_block(input: &ReportInput, r: &ClaimResult) -> String {
         );
         let _ = writeln!(s, "|---:|---:|");
         for x in &r.residuals {
-            let _ = writeln!(s, "| {} | {} |", x.bits, fmt_residual(x, &r.kind));
+            let _ = writeln!(s, "| {} | {} |", x.bits(), fmt_residual(x));
         }
         if let Some(g) = r.loss_bits {
             let _ = writeln!(
@@ -330,7 +331,7 @@ pub fn errata(input: &ReportInput) -> String {
     let refuted: Vec<&ClaimResult> = input
         .results
         .iter()
-        .filter(|r| r.form == "printed" && r.verdict == Verdict::Refuted)
+        .filter(|r| r.form == Form::Printed && r.verdict == Verdict::Refuted)
         .collect();
     if refuted.is_empty() {
         let _ = writeln!(s, "No printed form is refuted.");

@@ -1,0 +1,5 @@
+//! Bindings: the layer that ties the Euler-top model to the claim engine.  It sits above
+//! both (the model knows nothing of claims, the engine nothing of the Euler top) and
+//! registers the model's functions under the names the catalogue uses.
+
+pub mod euler_top;

@@ -1,0 +1,293 @@
+//! Evaluation of the built-in functions on values of any backend.
+
+use super::names::Builtin;
+use crate::claims::backend::{Num, RealFn, RealFn2};
+use crate::claims::cmath;
+use crate::claims::value::Value;
+use crate::linalg::{Mat2, Mat3, Vec3};
+
+fn arity<T>(a: &[Value<T>], n: usize) -> Result<(), String> {
+    if a.len() != n {
+        return Err(format!("takes {n} argument(s), got {}", a.len()));
+    }
+    Ok(())
+}
+
+fn not_defined<T, X>(v: &Value<T>) -> Result<X, String> {
+    Err(format!("not defined for a {}", v.type_name()))
+}
+
+/// Calls the built-in `f` on `a`; `like` carries the working precision.  The error is a
+/// one-line message without the function's name (the evaluator adds it).
+pub fn apply<T: Num>(f: Builtin, like: &T, a: &[Value<T>]) -> Result<Value<T>, String> {
+    if let Some(rf) = real_fn(f) {
+        arity(a, 1)?;
+        return elementary(f, rf, &a[0]);
+    }
+    use Builtin as B;
+    match f {
+        B::Sign | B::Atan2 | B::Min | B::Max => real_misc(f, a),
+        B::Re | B::Im | B::Conj | B::Arg | B::Cplx => complex(f, a),
+        B::Sn | B::Cn | B::Dn | B::Am | B::K | B::Kp | B::F | B::JacobiInverse => elliptic(f, a),
+        B::Vec | B::Dot | B::Cross | B::Norm2 | B::Norm | B::VnormInf => vector(f, a),
+        B::Sum | B::Prod | B::D | B::Grad => {
+            Err(format!("'{}' is a special form, not a function", f.name()))
+        }
+        _ => matrix(f, like, a),
+    }
+}
+
+/// The built-ins that are one [`RealFn`] on reals.
+fn real_fn(f: Builtin) -> Option<RealFn> {
+    use Builtin as B;
+    Some(match f {
+        B::Sqrt => RealFn::Sqrt,
+        B::Abs => RealFn::Abs,
+        B::Exp => RealFn::Exp,
+        B::Ln => RealFn::Ln,
+        B::Sin => RealFn::Sin,
+        B::Cos => RealFn::Cos,
+        B::Tan => RealFn::Tan,
+        B::Atan => RealFn::Atan,
+        B::Asin => RealFn::Asin,
+        B::Sinh => RealFn::Sinh,
+        B::Cosh => RealFn::Cosh,
+        B::Tanh => RealFn::Tanh,
+        B::Asinh => RealFn::Asinh,
+        B::Atanh => RealFn::Atanh,
+        B::Floor => RealFn::Floor,
+        _ => return None,
+    })
+}
+
+fn elementary<T: Num>(f: Builtin, rf: RealFn, x: &Value<T>) -> Result<Value<T>, String> {
+    match (x, f) {
+        (Value::Real(x), _) => x.real_fn(rf).map(Value::Real),
+        (Value::Complex(z), Builtin::Sqrt) => cmath::sqrt(z).map(Value::Complex),
+        (Value::Complex(z), Builtin::Exp) => cmath::exp(z).map(Value::Complex),
+        (Value::Complex(z), Builtin::Ln) => cmath::ln(z).map(Value::Complex),
+        (Value::Complex(z), Builtin::Abs) => cmath::abs(z).map(Value::Real),
+        (v, _) => not_defined(v),
+    }
+}
+
+fn real_misc<T: Num>(f: Builtin, a: &[Value<T>]) -> Result<Value<T>, String> {
+    match f {
+        Builtin::Sign => {
+            arity(a, 1)?;
+            let x = a[0].as_real()?;
+            let z = x.zero();
+            Ok(Value::Real(if x > z {
+                z.one()
+            } else if x < z {
+                -z.one()
+            } else {
+                z
+            }))
+        }
+        Builtin::Atan2 => {
+            arity(a, 2)?;
+            let (y, x) = (a[0].as_real()?, a[1].as_real()?);
+            y.real_fn2(RealFn2::Atan2, &x).map(Value::Real)
+        }
+        _ => {
+            if a.is_empty() {
+                return Err("needs at least one argument".into());
+            }
+            let mut best = a[0].as_real()?;
+            for v in &a[1..] {
+                let x = v.as_real()?;
+                let min = f == Builtin::Min;
+                if (min && x < best) || (!min && x > best) {
+                    best = x;
+                }
+            }
+            Ok(Value::Real(best))
+        }
+    }
+}
+
+fn complex<T: Num>(f: Builtin, a: &[Value<T>]) -> Result<Value<T>, String> {
+    if f == Builtin::Cplx {
+        arity(a, 2)?;
+        let z = crate::numbers::Cplx::new(a[0].as_real()?, a[1].as_real()?);
+        return Ok(Value::Complex(z));
+    }
+    arity(a, 1)?;
+    if let (Value::CMat2(m), Builtin::Conj) = (&a[0], f) {
+        return Ok(Value::CMat2(Mat2::from_fn(|i, j| cmath::conj(&m.0[i][j]))));
+    }
+    let w = a[0].as_complex()?;
+    match f {
+        Builtin::Re => Ok(Value::Real(w.re)),
+        Builtin::Im => Ok(Value::Real(w.im)),
+        Builtin::Conj => Ok(Value::Complex(cmath::conj(&w))),
+        _ => cmath::arg(&w).map(Value::Real),
+    }
+}
+
+fn elliptic<T: Num>(f: Builtin, a: &[Value<T>]) -> Result<Value<T>, String> {
+    let r = |j: usize| a[j].as_real();
+    match f {
+        Builtin::Sn | Builtin::Cn | Builtin::Dn => {
+            arity(a, 2)?;
+            let k = r(1)?;
+            let j = match f {
+                Builtin::Sn => 0,
+                Builtin::Cn => 1,
+                _ => 2,
+            };
+            match &a[0] {
+                Value::Real(u) => T::sncndn(u, &k).map(|s| Value::Real(s[j].clone())),
+                Value::Complex(u) => T::sncndn_complex(u, &k).map(|s| Value::Complex(s[j].clone())),
+                v => Err(format!(
+                    "argument u must be real or complex, got a {}",
+                    v.type_name()
+                )),
+            }
+        }
+        Builtin::Am => {
+            arity(a, 2)?;
+            T::am(&r(0)?, &r(1)?).map(Value::Real)
+        }
+        Builtin::K => {
+            arity(a, 1)?;
+            T::ellipk(&r(0)?).map(Value::Real)
+        }
+        Builtin::Kp => {
+            arity(a, 1)?;
+            T::ellipkp(&r(0)?).map(Value::Real)
+        }
+        Builtin::F => {
+            arity(a, 2)?;
+            T::ellipf(&r(0)?, &r(1)?).map(Value::Real)
+        }
+        _ => {
+            arity(a, 4)?;
+            T::jacobi_inverse(&r(0)?, &r(1)?, &r(2)?, &r(3)?).map(Value::Real)
+        }
+    }
+}
+
+fn vector<T: Num>(f: Builtin, a: &[Value<T>]) -> Result<Value<T>, String> {
+    if f == Builtin::Vec {
+        arity(a, 3)?;
+        let v = Vec3::new(a[0].as_real()?, a[1].as_real()?, a[2].as_real()?);
+        return Ok(Value::Vec3(v));
+    }
+    if matches!(f, Builtin::Dot | Builtin::Cross) {
+        arity(a, 2)?;
+        let (x, y) = (a[0].as_vec3()?, a[1].as_vec3()?);
+        return Ok(if f == Builtin::Dot {
+            Value::Real(x.dot(&y))
+        } else {
+            Value::Vec3(x.cross(&y))
+        });
+    }
+    arity(a, 1)?;
+    let x = a[0].as_vec3()?;
+    match f {
+        Builtin::VnormInf => {
+            let mut m = x.0[0].real_fn(RealFn::Abs)?;
+            for c in &x.0[1..] {
+                let t = c.real_fn(RealFn::Abs)?;
+                if t > m {
+                    m = t;
+                }
+            }
+            Ok(Value::Real(m))
+        }
+        Builtin::Norm => x.norm2().real_fn(RealFn::Sqrt).map(Value::Real),
+        _ => Ok(Value::Real(x.norm2())),
+    }
+}
+
+fn matrix<T: Num>(f: Builtin, like: &T, a: &[Value<T>]) -> Result<Value<T>, String> {
+    let z = like.zero();
+    match f {
+        Builtin::I3 | Builtin::I2 => {
+            arity(a, 0)?;
+            Ok(if f == Builtin::I3 {
+                Value::Mat3(Mat3::identity(&z))
+            } else {
+                Value::CMat2(Mat2::from_fn(|i, j| {
+                    cmath::real(if i == j { z.one() } else { z.zero() })
+                }))
+            })
+        }
+        Builtin::Diag => {
+            let d = match a.len() {
+                1 => a[0].as_vec3()?,
+                3 => Vec3::new(a[0].as_real()?, a[1].as_real()?, a[2].as_real()?),
+                n => return Err(format!("takes 1 vec3 or 3 reals, got {n} arguments")),
+            };
+            Ok(Value::Mat3(Mat3::diag(&d)))
+        }
+        Builtin::Pauli => {
+            arity(a, 1)?;
+            pauli(&z, a[0].as_int()?)
+        }
+        Builtin::Skew => {
+            arity(a, 1)?;
+            let [x, y, w] = a[0].as_vec3()?.0;
+            Ok(Value::Mat3(Mat3([
+                [z.clone(), -w.clone(), y.clone()],
+                [w, z.clone(), -x.clone()],
+                [-y, x, z],
+            ])))
+        }
+        Builtin::Unskew => {
+            arity(a, 1)?;
+            let m = a[0].as_mat3()?.0;
+            let v = Vec3::new(m[2][1].clone(), m[0][2].clone(), m[1][0].clone());
+            Ok(Value::Vec3(v))
+        }
+        Builtin::Comm => {
+            arity(a, 2)?;
+            a[0].mul(&a[1])?.sub(&a[1].mul(&a[0])?)
+        }
+        _ => {
+            arity(a, 1)?;
+            square(f, like, &a[0])
+        }
+    }
+}
+
+/// transpose, det, tr, inv of one square matrix (inv also of a scalar).
+fn square<T: Num>(f: Builtin, like: &T, x: &Value<T>) -> Result<Value<T>, String> {
+    match (f, x) {
+        (Builtin::Transpose, Value::Mat3(m)) => Ok(Value::Mat3(m.transpose())),
+        (Builtin::Transpose, Value::CMat2(m)) => Ok(Value::CMat2(m.transpose())),
+        (Builtin::Det, Value::Mat3(m)) => Ok(Value::Real(m.det())),
+        (Builtin::Det, Value::CMat2(m)) => Ok(Value::Complex(m.det())),
+        (Builtin::Tr, Value::Mat3(m)) => Ok(Value::Real(m.trace())),
+        (Builtin::Tr, Value::CMat2(m)) => Ok(Value::Complex(m.trace())),
+        (Builtin::Inv, Value::Mat3(m)) => match m.inverse() {
+            Some(i) => Ok(Value::Mat3(i)),
+            None => Err("singular matrix".into()),
+        },
+        (Builtin::Inv, Value::CMat2(m)) => {
+            // scaled by 1/det, so an exactly singular matrix is an error
+            let di = cmath::div(&cmath::real(like.one()), &m.det())?;
+            let adj = Mat2([
+                [m.0[1][1].clone(), -m.0[0][1].clone()],
+                [-m.0[1][0].clone(), m.0[0][0].clone()],
+            ]);
+            Ok(Value::CMat2(Mat2::from_fn(|i, j| {
+                adj.0[i][j].clone() * di.clone()
+            })))
+        }
+        (Builtin::Inv, Value::Real(_) | Value::Complex(_)) => Value::Real(like.one()).div(x),
+        (_, v) => not_defined(v),
+    }
+}
+
+fn pauli<T: Num>(z: &T, k: i64) -> Result<Value<T>, String> {
+    let (o, n, i) = (cmath::real(z.one()), cmath::real(z.zero()), cmath::i(z));
+    match k {
+        1 => Ok(Value::CMat2(Mat2([[n.clone(), o.clone()], [o, n]]))),
+        2 => Ok(Value::CMat2(Mat2([[n.clone(), -i.clone()], [i, n]]))),
+        3 => Ok(Value::CMat2(Mat2([[o.clone(), n.clone()], [n, -o]]))),
+        _ => Err(format!("pauli({k}): index must be 1, 2 or 3")),
+    }
+}

@@ -1,0 +1,224 @@
+//! `existence`: the equations have a solution (in the stated set).  At each sample an
+//! f64 solution is found by Newton's method from up to `tries` sampled starts; at every
+//! rung Newton is run again from it at that precision, with the Jacobian by automatic
+//! differentiation, and the residual enters the usual ladder.  A failure to converge is
+//! inconclusive: existence cannot be refuted numerically.
+
+use super::context::{at_rung, collect, eval, AtRung, Ctx, Sides};
+use super::ladder;
+use super::result::{Cause, Evidence, Failure};
+use crate::claims::ast::{Expr, ExprKind, Span};
+use crate::claims::catalogue::PExpr;
+use crate::claims::eval::{Backend, Evaluator};
+use crate::claims::kind::Verdict;
+use crate::claims::sampler::{Point, Sampler, Stream};
+use crate::claims::value::Value;
+use crate::linalg::newton::{newton, Limits, System};
+
+/// The existence claim's fields.
+#[derive(Clone, Copy)]
+pub struct Spec<'a> {
+    /// Unknown names.
+    pub unknowns: &'a [String],
+    /// Equations (= 0).
+    pub equations: &'a [PExpr],
+    /// Start expressions (sampling context).
+    pub start: &'a [PExpr],
+    /// Membership predicate.
+    pub in_set: Option<&'a PExpr>,
+    /// Attempts per sample.
+    pub tries: usize,
+}
+
+/// The equations at a sample, with the unknowns bound on top of the point and `let`s.
+struct Equations<'e, 'c, T> {
+    base: &'e Evaluator<'c, T>,
+    spec: Spec<'e>,
+    jacobian: &'e [Vec<Expr>],
+    last: Option<Evaluator<'c, T>>,
+}
+
+impl<'c, T: Backend> Equations<'_, 'c, T> {
+    fn bound(&self, x: &[T]) -> Evaluator<'c, T> {
+        let mut ev = self.base.clone();
+        for (u, v) in self.spec.unknowns.iter().zip(x) {
+            ev.bind(u, Value::Real(v.clone()));
+        }
+        ev
+    }
+}
+
+impl<T: Backend> System<T> for Equations<'_, '_, T> {
+    type Error = String;
+    fn residual(&mut self, x: &[T]) -> Result<Vec<T>, String> {
+        let ev = self.bound(x);
+        let f = self
+            .spec
+            .equations
+            .iter()
+            .map(|e| eval(&ev, e)?.as_real())
+            .collect::<Result<_, _>>()?;
+        self.last = Some(ev);
+        Ok(f)
+    }
+    fn jacobian(&mut self, x: &[T]) -> Result<Vec<Vec<T>>, String> {
+        let ev = match self.last.take() {
+            Some(ev) => ev,
+            None => self.bound(x),
+        };
+        let mut a = Vec::with_capacity(self.jacobian.len());
+        for row in self.jacobian {
+            let mut r = Vec::with_capacity(row.len());
+            for d in row {
+                r.push(ev.eval(d).map_err(|e| e.message)?.as_real()?);
+            }
+            a.push(r);
+        }
+        Ok(a)
+    }
+}
+
+/// `d(equation_i, unknown_j)` for every pair.
+fn jacobian_exprs(spec: Spec<'_>) -> Vec<Vec<Expr>> {
+    let d = |e: &PExpr, u: &String| Expr {
+        kind: ExprKind::Deriv {
+            body: Box::new(e.expr.clone()),
+            var: u.clone(),
+            component: None,
+        },
+        span: Span::default(),
+    };
+    spec.equations
+        .iter()
+        .map(|e| spec.unknowns.iter().map(|u| d(e, u)).collect())
+        .collect()
+}
+
+/// Newton at one rung from an f64 start: the solution in f64, the log2 residual
+/// relative to the scale, and whether the solution is in the stated set.
+struct Solve<'a> {
+    ctx: Ctx<'a>,
+    spec: Spec<'a>,
+    point: &'a Point,
+    start: &'a [f64],
+}
+
+impl AtRung for Solve<'_> {
+    type Output = Result<(Vec<f64>, f64, bool), String>;
+    fn run<T: Backend>(&self, like: T) -> Self::Output {
+        let base = self.ctx.setup(self.point, like.clone())?;
+        let s = self.ctx.log2_scale(&base, self.point)?;
+        let jacobian = jacobian_exprs(self.spec);
+        let mut system = Equations {
+            base: &base,
+            spec: self.spec,
+            jacobian: &jacobian,
+            last: None,
+        };
+        let limits = Limits {
+            bits: like.precision().unwrap_or(53),
+            ..Limits::default()
+        };
+        let x0 = self.start.iter().map(|s| like.from_f64(*s)).collect();
+        let run = newton(&mut system, x0, limits).map_err(|e| e.to_string())?;
+        let inside = match self.spec.in_set {
+            Some(p) => eval(&system.bound(&run.x), p)?.as_bool()?,
+            None => true,
+        };
+        let x = run.x.iter().map(|v| v.to_f64()).collect();
+        Ok((x, run.best_log2 - s, inside))
+    }
+}
+
+/// An f64 solution at `p` from up to `tries` sampled starts.
+fn find_start(
+    ctx: Ctx<'_>,
+    spec: Spec<'_>,
+    starts: &mut Sampler<'_>,
+    p: &Point,
+) -> Result<Vec<f64>, Cause> {
+    let mut last = String::from("no start converged");
+    for _ in 0..spec.tries {
+        let ev = match ctx.setup(p, 0.0f64) {
+            Ok(ev) => ev,
+            Err(m) => {
+                last = m;
+                continue;
+            }
+        };
+        let st: Result<Vec<f64>, String> = spec
+            .start
+            .iter()
+            .map(|s| starts.eval_sampling(&s.expr, &ev)?.as_real())
+            .collect();
+        let st = match st {
+            Ok(s) => s,
+            Err(m) => {
+                last = m;
+                continue;
+            }
+        };
+        let job = Solve {
+            ctx,
+            spec,
+            point: p,
+            start: &st,
+        };
+        match job.run(0.0f64) {
+            Ok((x, r, true)) if r <= -53.0 + ctx.claim.max_loss_bits => return Ok(x),
+            Ok((_, r, inside)) => {
+                last = format!("Newton stalled at log2 residual {r:.1} (in set: {inside})")
+            }
+            Err(m) => last = m,
+        }
+    }
+    Err(Cause::NoSolution(last))
+}
+
+/// The ladder of an existence claim.
+pub fn run(ctx: Ctx<'_>, spec: Spec<'_>, bits: &[u32]) -> Result<Evidence, Failure> {
+    let mut sampler = ctx.sampler(Stream::Samples).map_err(Failure::bare)?;
+    let mut starts = ctx.sampler(Stream::Starts).map_err(Failure::bare)?;
+    let mut failures = Vec::new();
+    let draw = || {
+        let p = sampler.draw().map_err(Cause::Sampling)?;
+        let x = find_start(ctx, spec, &mut starts, &p)?;
+        Ok(((p.clone(), x), p))
+    };
+    let at = |(point, start): &(Point, Vec<f64>), b: u32| {
+        let job = Solve {
+            ctx,
+            spec,
+            point,
+            start,
+        };
+        let (x, r, inside) = at_rung(b, &job)?;
+        if !inside {
+            return Err(format!(
+                "the solution at {b} bits is outside the stated set"
+            ));
+        }
+        let sol = spec
+            .unknowns
+            .iter()
+            .zip(&x)
+            .map(|(u, v)| format!("{u} = {v:e}"))
+            .collect::<Vec<_>>()
+            .join(", ");
+        Ok(Sides {
+            log2: r,
+            lhs: sol,
+            rhs: "0".into(),
+        })
+    };
+    let samples = match collect(ctx.claim, bits, &mut failures, draw, at) {
+        Ok(s) => s,
+        Err(cause) => return Err(Failure::with_failures(cause, failures)),
+    };
+    let mut ev = ladder::finish(ctx.claim, bits, &samples, failures);
+    if ev.verdict == Verdict::Refuted {
+        ev.verdict = Verdict::Inconclusive;
+        ev.reason = "Newton did not converge to working precision (existence cannot be refuted numerically)".into();
+    }
+    Ok(ev)
+}

@@ -1,0 +1,193 @@
+//! The verdict engine: evaluates each claim on a precision ladder (and exactly, for
+//! rational claims) and decides holds / refuted / proved / inconclusive, with evidence.
+//!
+//! One module per kind ([`identity`], [`independence`], [`asymptotic`], [`existence`],
+//! [`negation`], and [`exact`] for the rational evaluation of identities); each returns
+//! its [`Evidence`] or a typed [`Failure`].  The ladder rule shared by the residual kinds
+//! is in [`ladder`].  This module runs the right kind and builds the [`ClaimResult`] once.
+//!
+//! Samples that cannot be evaluated are reported as failures and replaced, never counted.
+
+pub mod asymptotic;
+pub mod context;
+pub mod exact;
+pub mod existence;
+pub mod identity;
+pub mod independence;
+pub mod ladder;
+pub mod negation;
+pub mod result;
+
+pub use crate::claims::kind::Verdict;
+pub use result::{
+    Cause, ClaimResult, Counterexample, Evidence, ExactInfo, FailedSample, Failure, Named, Rung,
+};
+
+use crate::claims::catalogue::{Body, Catalogue, Claim};
+use context::Ctx;
+use rayon::prelude::*;
+
+/// The default precision ladder.
+pub const DEFAULT_BITS: [u32; 5] = [53, 128, 256, 512, 1024];
+
+/// Verification options.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// The precision ladder (53 = f64; others MPFR).
+    pub bits: Vec<u32>,
+    /// Run exact evaluations of `exact = true` claims.
+    pub exact: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            bits: DEFAULT_BITS.to_vec(),
+            exact: true,
+        }
+    }
+}
+
+/// Verifies the claims selected by `select`, in parallel, calling `done` as each finishes.
+/// Results are in catalogue order.  With the environment variable `EULERTOP_TIMING`
+/// set, per-claim wall times are printed on standard error.
+pub fn verify(
+    cat: &Catalogue,
+    opts: &Options,
+    select: &(dyn Fn(&Claim) -> bool + Sync),
+    done: &(dyn Fn(&ClaimResult) + Sync),
+) -> Vec<ClaimResult> {
+    let chosen: Vec<&Claim> = cat.claims.iter().filter(|c| select(c)).collect();
+    // Opt-in per-claim timings on standard error (never part of the results).
+    let timing = std::env::var_os("EULERTOP_TIMING").is_some();
+    chosen
+        .par_iter()
+        .map(|c| {
+            let t0 = std::time::Instant::now();
+            let r = run_claim(cat, c, opts);
+            if timing {
+                eprintln!(
+                    "timing {:8.1} ms  {}",
+                    t0.elapsed().as_secs_f64() * 1e3,
+                    c.id
+                );
+            }
+            done(&r);
+            r
+        })
+        .collect()
+}
+
+/// Verifies one claim.  A panic in another layer (a bug there) does not take the run
+/// down: the claim is inconclusive with the panic message as the reason.
+///
+/// ```
+/// use eulertop::claims::catalogue::load_sources;
+/// use eulertop::claims::registry::Registry;
+/// use eulertop::claims::verdict::{run_claim, Options, Verdict};
+///
+/// let toml = r#"
+/// [[claim]]
+/// id = "pythagoras"
+/// location = "anywhere"
+/// printed = 'sin^2 x + cos^2 x = 1'
+/// kind = "identity"
+/// expect = "holds"
+/// vars = [["x", "uniform(-3, 3)"]]
+/// lhs = "sin(x)^2 + cos(x)^2"
+/// rhs = "1"
+/// "#;
+/// let cat = load_sources(&[("t.toml".into(), toml.into())], Registry::new()).unwrap();
+/// let opts = Options { bits: vec![53, 128], exact: true };
+/// let r = run_claim(&cat, &cat.claims[0], &opts);
+/// assert_eq!(r.verdict, Verdict::Holds);
+/// assert!(r.as_expected && r.samples == 8);
+/// ```
+pub fn run_claim(cat: &Catalogue, claim: &Claim, opts: &Options) -> ClaimResult {
+    let ctx = Ctx { cat, claim };
+    let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| judge(ctx, opts)))
+        .unwrap_or_else(|p| {
+            let msg = p
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| p.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown panic".into());
+            Err(Failure::bare(Cause::Panic(msg)))
+        });
+    let evidence = outcome.unwrap_or_else(Failure::into_evidence);
+    ClaimResult::new(claim, evidence)
+}
+
+/// Runs the claim's kind.
+fn judge(ctx: Ctx<'_>, opts: &Options) -> Result<Evidence, Failure> {
+    let bits = &opts.bits;
+    if bits.is_empty() {
+        return Err(Failure::bare(Cause::EmptyLadder));
+    }
+    match &ctx.claim.body {
+        Body::Definition(_) => Ok(Evidence::new(Verdict::Defined, "definition: no verdict")),
+        Body::Identity { lhs, rhs } => {
+            let ladder = identity::ladder(ctx, lhs, rhs, bits)?;
+            match (ctx.claim.exact, opts.exact) {
+                (Some(spec), true) => exact::refine(ctx, lhs, rhs, spec, ladder),
+                _ => Ok(ladder),
+            }
+        }
+        Body::Independence { expr, wrt, redraws } => {
+            independence::run(ctx, expr, wrt, *redraws, bits)
+        }
+        Body::Asymptotic {
+            expr,
+            var,
+            order,
+            h0,
+            steps,
+            slope_tol,
+        } => {
+            let spec = asymptotic::Spec {
+                expr,
+                var,
+                order: *order,
+                h0: *h0,
+                steps: *steps,
+                slope_tol: *slope_tol,
+            };
+            asymptotic::run(ctx, spec, bits)
+        }
+        Body::Existence {
+            unknowns,
+            equations,
+            start,
+            in_set,
+            tries,
+        } => {
+            let spec = existence::Spec {
+                unknowns,
+                equations,
+                start,
+                in_set: in_set.as_ref(),
+                tries: *tries,
+            };
+            existence::run(ctx, spec, bits)
+        }
+        Body::Negation(inner) => Ok(negation::judge(&run_claim(ctx.cat, inner, opts))),
+    }
+}
+
+/// Labels → claim ids with verdicts, for `--coverage`.
+pub fn coverage_table(
+    labels: &[String],
+    results: &[ClaimResult],
+) -> Vec<(String, Vec<(String, Verdict)>)> {
+    labels
+        .iter()
+        .map(|l| {
+            let ids = results
+                .iter()
+                .filter(|r| r.labels.contains(l))
+                .map(|r| (r.id.clone(), r.verdict))
+                .collect();
+            (l.clone(), ids)
+        })
+        .collect()
+}
