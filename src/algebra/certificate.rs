@@ -1,0 +1,164 @@
+//! Certificates: a plain-text derivation that a second system (SymPy, through
+//! `scripts/recheck-certificates.py`) rechecks step by step.
+//!
+//! When a ring records certificates, every value keeps the operation that made it
+//! (a DAG of [`Node`]s).  The certificate lists, one statement a line:
+//!
+//! ```text
+//! field A                          # an indeterminate (or sn of a base, a named symbol, …)
+//! root r_1 = A - C                 # a root symbol: r_1**2 = A - C
+//! named k = (expression)           # a named quantity's definition (for derivatives)
+//! base b_1 k=(…) s=sn_1 c=(…) d=(…) arg=(…)   # an elliptic base argument
+//! period K k=(…) kp=(…) halfK=(s, c, d) halfiKp=(s, c, d) # quarter-period data
+//! node t3 = t1 * t2 -> (N)/(D)     # an operation and, where it reduces, its normal form
+//! node t9 = sqrt t8 -> +1 (N)/(D)  # a square root: nf² = t8; the sign is an assumption
+//! node t12 = sn b_1:2,b_2:-1 K:1 iKp:0 k=(…) -> …  # sn(2b₁ − b₂ + K/2) by DLMF 22.8, 22.4, 22.5
+//! node t15 = d t14 x -> …          # derivative; `dvar x v = …` lines give d v/d x
+//! claim t20 = t31
+//! ```
+//!
+//! The checker recomputes every operation from its arguments, reduces modulo the root
+//! relations, and compares with the stated normal form; elliptic nodes are recomputed
+//! from the base symbols with its own addition formulae; the claim is checked last.
+
+use super::flint::Poly;
+use super::ring::Ring;
+use super::sym::{Sym, Val};
+use std::collections::HashMap;
+use std::fmt::Write;
+use std::sync::Arc;
+
+/// An operation of the derivation DAG.
+#[derive(Clone, Debug)]
+pub(crate) enum Op {
+    /// A symbol of the ring.
+    Symbol(String),
+    /// An exact rational constant.
+    Const(String),
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Neg,
+    Pow(i32),
+    /// A square root with the sign chosen from the shadows.
+    Sqrt(i32),
+    /// `f` ∈ {sn, cn, dn} of `Σ nⱼ bⱼ + p·K/2 + q·iK'/2` of table `table`.
+    Elliptic { f: &'static str, table: usize, combo: Vec<(usize, i64)>, half_k: i64, half_kp: i64 },
+    /// The derivative with respect to an indeterminate.
+    Deriv(String),
+}
+
+/// A node of the derivation DAG: the operation, its arguments, and (for operations
+/// that reduce or introduce symbols) the normal form of the result.
+#[derive(Debug)]
+pub(crate) struct Node {
+    pub op: Op,
+    pub args: Vec<Arc<Node>>,
+    pub nf: Option<(Poly, Poly)>,
+}
+
+impl Node {
+    pub fn new(op: Op, args: Vec<Arc<Node>>) -> Arc<Node> {
+        Arc::new(Node { op, args, nf: None })
+    }
+    pub fn symbol(name: &str) -> Arc<Node> {
+        Node::new(Op::Symbol(name.to_string()), Vec::new())
+    }
+    pub fn constant(q: &rug::Rational) -> Arc<Node> {
+        Node::new(Op::Const(q.to_string()), Vec::new())
+    }
+    pub fn with_nf(op: Op, args: Vec<Arc<Node>>, v: &Val) -> Arc<Node> {
+        Arc::new(Node { op, args, nf: Some((v.num.clone(), v.den.clone())) })
+    }
+    pub fn sqrt(arg: &Arc<Node>, v: &Val, _ring: &Ring, sigma: i32) -> Arc<Node> {
+        Node::with_nf(Op::Sqrt(sigma), vec![arg.clone()], v)
+    }
+}
+
+fn nf_text(num: &Poly, den: &Poly, names: &[String]) -> String {
+    format!("({})/({})", num.render(names), den.render(names))
+}
+
+struct Emitter<'a> {
+    names: &'a [String],
+    ids: HashMap<*const Node, usize>,
+    out: String,
+}
+
+impl Emitter<'_> {
+    fn visit(&mut self, n: &Arc<Node>) -> usize {
+        let key = Arc::as_ptr(n);
+        if let Some(&i) = self.ids.get(&key) {
+            return i;
+        }
+        let args: Vec<usize> = n.args.iter().map(|a| self.visit(a)).collect();
+        let id = self.ids.len() + 1;
+        self.ids.insert(key, id);
+        let t = |i: usize| format!("t{}", args[i]);
+        let body = match &n.op {
+            Op::Symbol(s) => s.clone(),
+            Op::Const(q) => q.clone(),
+            Op::Add => format!("{} + {}", t(0), t(1)),
+            Op::Sub => format!("{} - {}", t(0), t(1)),
+            Op::Mul => format!("{} * {}", t(0), t(1)),
+            Op::Div => format!("{} / {}", t(0), t(1)),
+            Op::Neg => format!("- {}", t(0)),
+            Op::Pow(e) => format!("{} ^ {e}", t(0)),
+            Op::Sqrt(s) => format!("sqrt {} sign {s}", t(0)),
+            Op::Elliptic { f, table, combo, half_k, half_kp } => {
+                let c: Vec<String> = combo.iter().map(|(b, m)| format!("b_{}_{}:{m}", table + 1, b + 1)).collect();
+                format!("{f} table {} combo {} halfK {half_k} halfiKp {half_kp}", table + 1, c.join(","))
+            }
+            Op::Deriv(x) => format!("d {} {x}", t(0)),
+        };
+        let nf = n.nf.as_ref().map(|(a, b)| format!(" -> {}", nf_text(a, b, self.names))).unwrap_or_default();
+        let _ = writeln!(self.out, "node t{id} = {body}{nf}");
+        id
+    }
+}
+
+impl Ring {
+    /// The certificate of `lhs = rhs` (see the module doc), or `None` when the ring does
+    /// not record derivations.
+    pub fn certificate(&self, lhs: &Sym, rhs: &Sym, title: &str) -> Option<String> {
+        let (ln, rn) = (lhs.node.as_ref()?, rhs.node.as_ref()?);
+        let names = self.inner.names();
+        let mut out = String::new();
+        let _ = writeln!(out, "# eulertop certificate 1");
+        let _ = writeln!(out, "# claim: {}", title.replace('\n', " "));
+        out.push_str(&self.symbol_lines(&names));
+        let mut em = Emitter { names: &names, ids: HashMap::new(), out: String::new() };
+        let a = em.visit(ln);
+        let b = em.visit(rn);
+        out.push_str(&em.out);
+        let _ = writeln!(out, "claim t{a} = t{b}");
+        for a in self.assumptions() {
+            let _ = writeln!(out, "# assumption ({:?}): {}", a.origin, a.statement);
+        }
+        Some(out)
+    }
+
+    fn symbol_lines(&self, names: &[String]) -> String {
+        let st = self.state();
+        let mut out = String::new();
+        for v in &st.vars {
+            let what = super::sym::describe_kind(&v.kind);
+            let _ = writeln!(out, "field {}  # {what}", v.name);
+            if let super::ring::VarKind::Named(def) = &v.kind {
+                let _ = writeln!(out, "named {} = {}", v.name, nf_text(&def.num, &def.den, names));
+            }
+        }
+        for r in &st.roots {
+            let _ = writeln!(out, "root {} = {}  # {}", r.name, r.radicand.render(names), r.note);
+        }
+        for (ti, t) in st.tables.iter().enumerate() {
+            out.push_str(&t.certificate_lines(ti, names));
+        }
+        for line in &st.derivation_lines {
+            out.push_str(line);
+            out.push('\n');
+        }
+        out
+    }
+}

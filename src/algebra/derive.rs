@@ -1,0 +1,225 @@
+//! The exact derivative: a derivation of the tower.
+//!
+//! `d/dx` of a normal form `N/D` is `(N'D − ND')/D²` with `P' = Σ_v ∂P/∂v · v'` over
+//! the variables of `P`, and for each symbol `v`:
+//!
+//! * an indeterminate: `x' = 1`, others 0; a named quantity: the derivative of its
+//!   definition; an opaque constant: 0;
+//! * a root `r² = a`: `r' = a'/(2r) = a'·r/(2a)`;
+//! * `s = sn b` of a base argument: `s' = c·d·b' + ∂s/∂k · k'(x)` (DLMF 22.13.1), and
+//!   when the modulus depends on `x`, with `Z = E(am b, k) − k'²b` (one more symbol per
+//!   base): `∂s/∂k = −c d Z/(k k'²) + k s c²/k'²`,
+//!   `∂Z/∂k = k s c d/k'² − k c² Z/k'² + k b`, `Z' = k² c² b' + ∂Z/∂k · k'(x)`;
+//! * `K`, `K'`: 0 when the modulus does not depend on `x` (otherwise an error).
+
+use super::certificate::{Node, Op};
+use super::error::{AlgResult, AlgebraError};
+use super::flint::Poly;
+use super::ring::{Ring, VarKind};
+use super::shadow::Shadow;
+use super::sym::{Sym, Val};
+use crate::numbers::Dual;
+use crate::special::sncndn;
+use rug::{Complex, Float, Rational};
+
+impl Sym {
+    /// The exact derivative with respect to an indeterminate `x`.
+    ///
+    /// ```
+    /// use eulertop::algebra::{Ring, RingOptions};
+    /// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
+    /// let u = ring.indeterminate_f64("u", &[0.3, 0.9]).unwrap();
+    /// let k = ring.indeterminate_f64("k", &[0.6, 0.3]).unwrap();
+    /// let (s, c, d) = u.sncndn(&k).unwrap();
+    /// let ds = s.derivative(&u).unwrap();
+    /// assert!(ring.prove(&ds, &(c * d)).is_proved()); // DLMF 22.13.1
+    /// ```
+    pub fn derivative(&self, x: &Sym) -> AlgResult<Sym> {
+        let ring = &self.ring;
+        if !ring.same(&x.ring) {
+            return Err(AlgebraError::RingMismatch);
+        }
+        let jx = x
+            .as_field_var()
+            .filter(|&j| matches!(ring.state().vars[j].kind, VarKind::Indeterminate))
+            .ok_or_else(|| AlgebraError::Derivative(format!("{} is not an indeterminate", x.render_short(60))))?;
+        let v = ring.val_derivative(&self.val, jx)?;
+        let name = ring.state().vars[jx].name.clone();
+        let node = self.node.as_ref().map(|n| Node::with_nf(Op::Deriv(name), vec![n.clone()], &v));
+        Ok(Sym::from_val(ring, v, node))
+    }
+}
+
+impl Ring {
+    fn poly_val(&self, p: &Poly) -> Val {
+        let one = Poly::from_i64(&self.inner.ctx, 1);
+        let sh = self.shadow_of(p, &one);
+        Val { num: p.clone(), den: one, sh }
+    }
+
+    /// `d/dx` of a polynomial (as a value).
+    fn poly_derivative(&self, p: &Poly, jx: usize) -> AlgResult<Val> {
+        let inner = &self.inner;
+        let mut acc = inner.const_val(&Rational::new());
+        for idx in p.used_vars() {
+            let dv = self.var_derivative(idx, jx)?;
+            if dv.num.is_zero() {
+                continue;
+            }
+            let part = self.poly_val(&p.derivative(idx));
+            acc = inner.v_add(&acc, &inner.v_mul(&part, &dv)?, false)?;
+        }
+        Ok(acc)
+    }
+
+    pub(crate) fn val_derivative(&self, v: &Val, jx: usize) -> AlgResult<Val> {
+        let inner = &self.inner;
+        let dn = self.poly_derivative(&v.num, jx)?;
+        let dd = self.poly_derivative(&v.den, jx)?;
+        let n = self.poly_val(&v.num);
+        let d = self.poly_val(&v.den);
+        let top = inner.v_add(&inner.v_mul(&dn, &d)?, &inner.v_mul(&n, &dd)?, true)?;
+        let out = inner.v_div(&top, &inner.v_mul(&d, &d)?)?;
+        Ok(out)
+    }
+
+    /// `d v/d x` for FLINT variable `idx` (cached).
+    fn var_derivative(&self, idx: usize, jx: usize) -> AlgResult<Val> {
+        if let Some(v) = self.state().dcache.get(&(idx, jx)) {
+            return Ok(v.clone());
+        }
+        let inner = &self.inner;
+        let v = match inner.root_of_var(idx) {
+            Some(i) => self.root_derivative(i, jx)?,
+            None => self.field_var_derivative(idx - inner.opts.max_roots, jx)?,
+        };
+        let names = inner.names();
+        let line = format!(
+            "dvar {} {} = ({})/({})",
+            names[inner.kvar(jx)],
+            names[idx],
+            v.num.render(&names),
+            v.den.render(&names)
+        );
+        let mut st = self.state();
+        st.dcache.insert((idx, jx), v.clone());
+        st.derivation_lines.push(line);
+        Ok(v)
+    }
+
+    fn root_derivative(&self, i: usize, jx: usize) -> AlgResult<Val> {
+        let inner = &self.inner;
+        let a = self.state().roots[i].radicand.clone();
+        let da = self.poly_derivative(&a, jx)?;
+        if da.num.is_zero() {
+            return Ok(da);
+        }
+        let r = self.root_sym(i).val;
+        let two_a = inner.v_mul(&inner.const_val(&Rational::from(2)), &self.poly_val(&a))?;
+        inner.v_div(&inner.v_mul(&da, &r)?, &two_a)
+    }
+
+    fn field_var_derivative(&self, j: usize, jx: usize) -> AlgResult<Val> {
+        let kind = self.state().vars[j].kind.clone();
+        let zero = self.inner.const_val(&Rational::new());
+        match kind {
+            VarKind::Indeterminate => Ok(self.inner.const_val(&Rational::from(i64::from(j == jx)))),
+            VarKind::Named(def) => self.val_derivative(&def, jx),
+            VarKind::Opaque { constant: true } => Ok(zero),
+            VarKind::Opaque { constant: false } => {
+                let name = self.state().vars[j].name.clone();
+                Err(AlgebraError::Derivative(format!("the derivative of {name} is unknown")))
+            }
+            VarKind::QuarterK { table } | VarKind::QuarterKp { table } => {
+                let k = self.state().tables[table].k.clone();
+                if self.val_derivative(&k, jx)?.num.is_zero() {
+                    Ok(zero)
+                } else {
+                    Err(AlgebraError::Derivative("of a quarter period whose modulus varies (needs E(k))".into()))
+                }
+            }
+            VarKind::Sn { table, base } => self.sn_derivative(table, base, jx, false),
+            VarKind::Zeta { table, base } => self.sn_derivative(table, base, jx, true),
+        }
+    }
+
+    /// `s'` (or `Z'` when `zeta`) of base `base` of table `table`.
+    fn sn_derivative(&self, table: usize, base: usize, jx: usize, zeta: bool) -> AlgResult<Val> {
+        let inner = &self.inner;
+        let (k, arg, c, d, sj) = {
+            let st = self.state();
+            let b = &st.tables[table].bases[base];
+            (st.tables[table].k.clone(), b.arg.clone(), b.c.clone(), b.d.clone(), b.s_var)
+        };
+        let s = self.var_sym(sj).val;
+        let du = self.val_derivative(&arg, jx)?;
+        let dk = self.val_derivative(&k, jx)?;
+        let m = |a: &Val, b: &Val| inner.v_mul(a, b);
+        let cd = m(&c, &d)?;
+        let k2 = m(&k, &k)?;
+        let along = if zeta { m(&m(&k2, &m(&c, &c)?)?, &du)? } else { m(&cd, &du)? };
+        if dk.num.is_zero() {
+            return Ok(along);
+        }
+        let z = self.zeta_symbol(table, base)?;
+        let one = inner.const_val(&Rational::from(1));
+        let kp2 = inner.v_add(&one, &k2, true)?;
+        let c2 = m(&c, &c)?;
+        let partial = if zeta {
+            // k s c d/k'² − k c² Z/k'² + k u
+            let t1 = m(&m(&k, &s)?, &cd)?;
+            let t2 = m(&m(&k, &c2)?, &z)?;
+            let t = inner.v_div(&inner.v_add(&t1, &t2, true)?, &kp2)?;
+            inner.v_add(&t, &m(&k, &arg)?, false)?
+        } else {
+            // −c d Z/(k k'²) + k s c²/k'²
+            let t1 = inner.v_div(&m(&cd, &z)?, &m(&k, &kp2)?)?;
+            let t2 = inner.v_div(&m(&m(&k, &s)?, &c2)?, &kp2)?;
+            inner.v_add(&t2, &t1, true)?
+        };
+        inner.v_add(&along, &m(&partial, &dk)?, false)
+    }
+
+    /// The symbol `Z = E(am b, k) − k'² b` of a base (values from the k-derivative of sn
+    /// by automatic differentiation).
+    fn zeta_symbol(&self, table: usize, base: usize) -> AlgResult<Val> {
+        if let Some(j) = self.state().tables[table].bases[base].z_var {
+            return Ok(self.var_sym(j).val);
+        }
+        let (k, arg) = {
+            let st = self.state();
+            (st.tables[table].k.clone(), st.tables[table].bases[base].arg.clone())
+        };
+        let prec = self.precision();
+        let mut values = Vec::new();
+        for p in 0..self.points() {
+            if !arg.sh.is_real_at(p, prec) {
+                return Err(AlgebraError::Derivative("in the modulus at a complex argument".into()));
+            }
+            values.push(zeta_value(&arg.sh, &k.sh, p, prec)?);
+        }
+        let n = self.state().vars.len();
+        let j = self.inner.add_var(format!("Z_{}", n + 1), VarKind::Zeta { table, base }, values)?;
+        self.state().tables[table].bases[base].z_var = Some(j);
+        Ok(self.var_sym(j).val)
+    }
+}
+
+/// `Z = E(am u, k) − k'²u` at point `p`, from `∂am/∂k` (dual numbers in `k`):
+/// `Z = (k s c/k'² − ∂am/∂k)·k k'²/d`.
+fn zeta_value(u: &Shadow, k: &Shadow, p: usize, prec: u32) -> AlgResult<Complex> {
+    let uf = Float::with_val(prec, u.v[p].real());
+    let kf = Float::with_val(prec, k.v[p].real());
+    let ud = Dual::constant(uf);
+    let kd = Dual::var(kf.clone());
+    let (s, c, d) = sncndn(&ud, &kd).map_err(|e| AlgebraError::Derivative(format!("numeric sn: {e}")))?;
+    let damk = if Float::with_val(prec, c.v.abs_ref()) >= Float::with_val(prec, s.v.abs_ref()) {
+        Float::with_val(prec, &s.d / &c.v)
+    } else {
+        -Float::with_val(prec, &c.d / &s.v)
+    };
+    let kp2 = Float::with_val(prec, 1) - Float::with_val(prec, &kf * &kf);
+    let first = Float::with_val(prec, &kf * &s.v) * &c.v / &kp2;
+    let z = (first - damk) * &kf * &kp2 / &d.v;
+    Ok(Complex::with_val(prec, (z, 0)))
+}

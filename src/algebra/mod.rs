@@ -1,0 +1,73 @@
+//! The symbolic algebra layer: exact proofs of identities by normal forms in a tower of
+//! quadratic extensions of ℚ(x₁…xₙ), on FLINT 3.
+//!
+//! It sits between `special`/`linalg` and `claims` and imports neither claims, nor
+//! report, nor cli.
+//!
+//! # Design
+//!
+//! * **Field.**  The claim's indeterminates and transcendental symbols (`sn` of base
+//!   arguments, quarter periods, opaque symbols) generate K = ℚ(x₁…xₙ); polynomials are
+//!   FLINT `fmpz_mpoly` in one context (module [`flint`], the only `unsafe` code).
+//! * **Tower.**  Square roots adjoin symbols `rᵢ` with relations `rᵢ² = aᵢ`, `aᵢ` a
+//!   polynomial in K's variables and earlier roots.  In the lexicographic order with
+//!   later roots first, the leading terms `rᵢ²` are pairwise coprime, so the relations
+//!   are a Gröbner basis and the normal form (degree < 2 in every root, a root-free
+//!   denominator, gcd 1) is unique.  Radicands in K are factored and each irreducible
+//!   factor gets one root shared by the ring, with GF(2)-independent classes modulo
+//!   squares, so the tower over K is a field (module [`roots`]).
+//! * **Shadows.**  Every value carries its value at a few domain points (complex MPFR,
+//!   256 bits by default), computed alongside.  Signs, branches of square roots and
+//!   comparisons are decided from them and recorded as [`Assumption`]s; disagreeing
+//!   points give [`AlgebraError::CannotDecide`]; an exact 0 with a non-zero shadow is an
+//!   internal error.
+//! * **Elliptic functions.**  `sn`, `cn`, `dn` of arguments that are integer
+//!   combinations of base arguments and of `K/2`, `iK'/2` are expanded by DLMF 22.8,
+//!   22.4.3 and 22.5.1 (module [`elliptic`]); each base has symbols `s`, `c`, `d` with
+//!   `c² = 1 − s²`, `d² = 1 − k²s²`.
+//! * **Derivatives** are a derivation of the tower (module [`derive`]), including the
+//!   derivative in the modulus through one more symbol `Z = E(am u, k) − k'²u`.
+//! * **Proofs** ([`prove_identity`], [`Ring::prove`]): the normal form of `lhs − rhs`
+//!   is 0.  A non-zero normal form proves nothing.  Named quantities (such as `k`, `ν`)
+//!   are free symbols first and replaced by their definitions only if needed.
+//!   Certificates (module [`certificate`]) are rechecked by SymPy with
+//!   `scripts/recheck-certificates.py`.
+//!
+//! # Example
+//!
+//! The addition formula for `sn` (DLMF 22.8.1):
+//!
+//! ```
+//! use eulertop::algebra::{prove_identity, RingOptions};
+//! let proof = prove_identity(RingOptions::default(), "DLMF 22.8.1", |r| {
+//!     let u = r.indeterminate_f64("u", &[0.3, -0.8, 1.2])?;
+//!     let v = r.indeterminate_f64("v", &[0.5, 0.4, -1.7])?;
+//!     let k = r.indeterminate_f64("k", &[0.5, 0.9, 0.1])?;
+//!     let (su, cu, du) = u.sncndn(&k)?;
+//!     let (sv, cv, dv) = v.sncndn(&k)?;
+//!     let lhs = (&u + &v).sn(&k)?;
+//!     let num = &(&su * &cv) * &dv + &(&sv * &cu) * &du;
+//!     let den = r.integer(1) - &(&(&k * &k) * &(&su * &su)) * &(&sv * &sv);
+//!     Ok((lhs, num / den))
+//! });
+//! assert!(proof.is_proved(), "{:?}", proof.outcome);
+//! ```
+
+pub mod certificate;
+mod derive;
+pub mod elliptic;
+mod error;
+pub mod flint;
+mod order;
+mod proof;
+mod ring;
+pub mod roots;
+mod scalar;
+pub mod shadow;
+mod sym;
+
+pub use elliptic::BaseHint;
+pub use error::{AlgResult, AlgebraError};
+pub use proof::{prove_identity, Outcome, Proof};
+pub use ring::{Assumption, Origin, Ring, RingOptions};
+pub use sym::Sym;

@@ -1,0 +1,76 @@
+//! Signs and comparisons decided from the shadows.
+//!
+//! A sign is *exact* when the value is an exact rational (or exactly zero); otherwise it
+//! is decided from the shadows when every domain point gives the same sign, and the
+//! decision is recorded as an assumption of the proof (with its origin: a definition
+//! or the claim's own text).  Points that disagree, a value that vanishes at a point,
+//! or a value that is not real give [`AlgebraError::CannotDecide`].
+
+use super::error::{AlgResult, AlgebraError};
+use super::sym::Sym;
+use std::cmp::Ordering;
+
+impl Sym {
+    /// The sign (−1, 0, +1) of a real value on the domain.
+    ///
+    /// ```
+    /// use eulertop::algebra::{Ring, RingOptions};
+    /// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
+    /// let a = ring.indeterminate_f64("a", &[2.0, 3.0]).unwrap();
+    /// let c = ring.indeterminate_f64("c", &[1.0, 0.5]).unwrap();
+    /// assert_eq!((a - c).sign().unwrap(), 1);
+    /// assert_eq!(ring.assumptions().len(), 1); // "a - c > 0" rests on the domain
+    /// ```
+    pub fn sign(&self) -> AlgResult<i32> {
+        if self.is_exact_zero() {
+            return Ok(0);
+        }
+        if let Some(q) = self.as_rational() {
+            return Ok(if q < 0 { -1 } else { 1 });
+        }
+        let ring = &self.ring;
+        let prec = ring.precision();
+        let what = self.render_short(160);
+        let mut sign = 0;
+        for p in 0..ring.points() {
+            let s = self.val.sh.real_sign(p, prec).ok_or_else(|| {
+                AlgebraError::CannotDecide(format!("the sign of {what}: zero or not real at a domain point"))
+            })?;
+            if sign != 0 && s != sign {
+                return Err(AlgebraError::CannotDecide(format!(
+                    "the sign of {what}: it differs between domain points"
+                )));
+            }
+            sign = s;
+        }
+        let rel = if sign > 0 { ">" } else { "<" };
+        ring.record_assumption(format!("{what} {rel} 0"), sign);
+        Ok(sign)
+    }
+
+    /// Compares two real values on the domain (see [`Sym::sign`]).
+    pub fn compare(&self, o: &Sym) -> AlgResult<Ordering> {
+        let d = self.try_sub(o)?;
+        Ok(match d.sign()? {
+            s if s < 0 => Ordering::Less,
+            0 => Ordering::Equal,
+            _ => Ordering::Greater,
+        })
+    }
+
+    /// `|self|` for a real value whose sign is decided on the domain.
+    pub fn abs(&self) -> AlgResult<Sym> {
+        Ok(if self.sign()? < 0 { self.negate() } else { self.clone() })
+    }
+}
+
+impl super::ring::Ring {
+    pub(crate) fn record_assumption(&self, statement: String, sign: i32) {
+        let mut st = self.state();
+        let origin = st.origin.clone();
+        let a = super::ring::Assumption { statement, sign, origin };
+        if !st.assumptions.contains(&a) {
+            st.assumptions.push(a);
+        }
+    }
+}

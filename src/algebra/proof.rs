@@ -1,0 +1,190 @@
+//! The zero test and the proof record.
+//!
+//! `lhs = rhs` is *proved* when the normal form of `lhs − rhs` is 0: then the
+//! numerator lies in the ideal of the root relations, so it vanishes wherever the
+//! symbols take values satisfying the relations — in particular at every point of the
+//! domain where the recorded assumptions (branches, signs, comparisons) hold and no
+//! denominator vanishes.  A non-zero normal form proves nothing (the tower may not be a
+//! field, a named quantity may need its definition); the reason says which case it is.
+
+use super::elliptic::BaseHint;
+use super::error::{AlgResult, AlgebraError};
+use super::ring::{Assumption, Ring, RingOptions, VarKind};
+use super::sym::Sym;
+use std::time::Instant;
+
+/// The outcome of a zero test.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Outcome {
+    /// The normal form of `lhs − rhs` is 0.
+    Proved,
+    /// Not proved, with the reason.
+    NotProved(String),
+}
+
+/// A proof attempt: outcome and the facts it rests on.
+#[derive(Clone, Debug)]
+pub struct Proof {
+    /// Proved or not (with the reason).
+    pub outcome: Outcome,
+    /// The symbols: name and what each stands for.
+    pub symbols: Vec<(String, String)>,
+    /// The relations `r² = a` of the root symbols.
+    pub relations: Vec<String>,
+    /// The decisions taken from the domain (branches, signs, comparisons).
+    pub assumptions: Vec<Assumption>,
+    /// Addition-theorem instances and other steps, for the reader.
+    pub notes: Vec<String>,
+    /// Terms of the numerators of `lhs` and `rhs` (the size of the identity).
+    pub terms: usize,
+    /// Wall time in milliseconds (all attempts, including evaluation).
+    pub ms: f64,
+    /// The number of evaluations (restarts for refined bases or expanded names).
+    pub attempts: usize,
+    /// Whether named quantities had to be replaced by their definitions.
+    pub expanded_named: bool,
+    /// The certificate, when the ring recorded derivations.
+    pub certificate: Option<String>,
+}
+
+impl Proof {
+    /// Did the zero test succeed?
+    pub fn is_proved(&self) -> bool {
+        self.outcome == Outcome::Proved
+    }
+
+    fn failed(reason: String, ms: f64, attempts: usize) -> Proof {
+        Proof {
+            outcome: Outcome::NotProved(reason),
+            symbols: Vec::new(),
+            relations: Vec::new(),
+            assumptions: Vec::new(),
+            notes: Vec::new(),
+            terms: 0,
+            ms,
+            attempts,
+            expanded_named: false,
+            certificate: None,
+        }
+    }
+}
+
+impl Ring {
+    /// The zero test of `lhs − rhs` on this ring (one evaluation; `ms` is the time of
+    /// the test itself).
+    pub fn prove(&self, lhs: &Sym, rhs: &Sym) -> Proof {
+        let t0 = Instant::now();
+        let outcome = match self.zero_test(lhs, rhs) {
+            Ok(o) => o,
+            Err(e) => Outcome::NotProved(e.to_string()),
+        };
+        let certificate = match outcome {
+            Outcome::Proved => self.certificate(lhs, rhs, "lhs = rhs"),
+            Outcome::NotProved(_) => None,
+        };
+        Proof {
+            outcome,
+            symbols: self.symbols(),
+            relations: self.relations(),
+            assumptions: self.assumptions(),
+            notes: self.notes(),
+            terms: lhs.terms() + rhs.terms(),
+            ms: t0.elapsed().as_secs_f64() * 1e3,
+            attempts: 1,
+            expanded_named: self.options().expand_named,
+            certificate,
+        }
+    }
+
+    fn zero_test(&self, lhs: &Sym, rhs: &Sym) -> AlgResult<Outcome> {
+        if let Some(e) = self.error() {
+            return Err(e);
+        }
+        let d = lhs.try_sub(rhs)?;
+        let prec = self.precision();
+        if d.val.sh.has_non_finite() {
+            return Err(AlgebraError::Internal("a value is not finite at a domain point".into()));
+        }
+        if d.is_exact_zero() {
+            if !d.val.sh.all_small(prec) {
+                return Err(AlgebraError::Internal(
+                    "the normal form is 0 but the numeric values differ (a bug in the prover)".into(),
+                ));
+            }
+            return Ok(Outcome::Proved);
+        }
+        let n = d.terms();
+        let reason = match (0..self.points()).find(|&p| !d.val.sh.is_small(p, prec)) {
+            Some(p) => format!(
+                "the normal form of lhs - rhs has {n} terms, and the two sides differ at domain point {}",
+                p + 1
+            ),
+            None => {
+                let named = self.state().vars.iter().any(|v| matches!(v.kind, VarKind::Named(_)));
+                let why = if named {
+                    "named quantities may need their definitions"
+                } else {
+                    "the tower may have zero divisors, or the identity needs a relation the prover does not know"
+                };
+                format!("the normal form of lhs - rhs has {n} terms but vanishes numerically at every domain point ({why})")
+            }
+        };
+        Ok(Outcome::NotProved(reason))
+    }
+}
+
+/// Proves `lhs = rhs` built by `build` on a fresh ring, restarting when the elliptic
+/// base arguments must be refined, and once more with named quantities replaced by
+/// their definitions if the normal form is not 0.  `ms` covers every evaluation.
+///
+/// ```
+/// use eulertop::algebra::{prove_identity, RingOptions};
+/// let proof = prove_identity(RingOptions::default(), "sn(2u) by doubling", |r| {
+///     let u = r.indeterminate_f64("u", &[0.3, 0.6, 1.1])?;
+///     let k = r.indeterminate_f64("k", &[0.5, 0.7, 0.2])?;
+///     let (s, c, d) = u.sncndn(&k)?;
+///     let two = r.integer(2);
+///     let lhs = (&two * &u).sn(&k)?;
+///     let den = r.integer(1) - &(&k * &k) * &s.try_powi(4)?;
+///     Ok((lhs, &(&(&two * &s) * &c) * &d / den))
+/// });
+/// assert!(proof.is_proved(), "{:?}", proof.outcome);
+/// ```
+pub fn prove_identity<F>(opts: RingOptions, title: &str, build: F) -> Proof
+where
+    F: Fn(&Ring) -> AlgResult<(Sym, Sym)>,
+{
+    let t0 = Instant::now();
+    let mut opts = opts;
+    let mut attempts = 0;
+    let ms = |t0: &Instant| t0.elapsed().as_secs_f64() * 1e3;
+    loop {
+        attempts += 1;
+        let ring = Ring::new(opts.clone());
+        let built = build(&ring);
+        let rebase: Option<Vec<BaseHint>> = ring.state().rebase.take();
+        if let Some(hints) = rebase {
+            if attempts < 4 {
+                opts.base_hints = hints;
+                continue;
+            }
+            return Proof::failed("the elliptic base arguments could not be settled".into(), ms(&t0), attempts);
+        }
+        let (lhs, rhs) = match built {
+            Ok(p) => p,
+            Err(e) => return Proof::failed(e.to_string(), ms(&t0), attempts),
+        };
+        let mut proof = ring.prove(&lhs, &rhs);
+        let named = ring.state().vars.iter().any(|v| matches!(v.kind, VarKind::Named(_)));
+        if !proof.is_proved() && named && !opts.expand_named && attempts < 6 {
+            opts.expand_named = true;
+            continue;
+        }
+        if let Some(c) = proof.certificate.as_mut() {
+            *c = c.replacen("# claim: lhs = rhs", &format!("# claim: {}", title.replace('\n', " ")), 1);
+        }
+        proof.ms = ms(&t0);
+        proof.attempts = attempts;
+        return proof;
+    }
+}

@@ -1,0 +1,528 @@
+//! The ring: a FLINT context, the symbol table (indeterminates, transcendental symbols,
+//! square-root symbols with their relations), the domain points of the shadows, and
+//! the record of assumptions a proof rests on.
+//!
+//! Variables of the FLINT context are laid out so that the relations form a Gröbner
+//! basis in the lexicographic order: root symbol `i` (the `i`-th square root adjoined)
+//! is variable `R − 1 − i`, so every root is more significant than the roots and
+//! field variables its radicand uses, and field variable `j` (indeterminates and
+//! transcendental symbols such as `sn` of a base argument) is variable `R + j`.  The
+//! leading monomial of `rᵢ² − aᵢ` is then `rᵢ²`, and these are pairwise coprime.
+
+use super::certificate::Node;
+use super::error::{AlgResult, AlgebraError};
+use super::flint::{Ctx, Poly};
+use super::roots::FactorBasis;
+use super::shadow::Shadow;
+use super::sym::{Sym, Val};
+use rug::{Complex, Float, Rational};
+use std::sync::{Arc, Mutex, MutexGuard};
+
+/// Options of a [`Ring`].
+#[derive(Clone, Debug)]
+pub struct RingOptions {
+    /// Number of domain points at which every value carries its numeric shadow.
+    pub points: usize,
+    /// MPFR precision of the shadows, in bits.
+    pub precision: u32,
+    /// Capacity for square-root symbols.
+    pub max_roots: usize,
+    /// Capacity for field variables (indeterminates and transcendental symbols).
+    pub max_vars: usize,
+    /// Record the derivation of every value, for certificates.
+    pub certificate: bool,
+    /// Replace named quantities by their definitions instead of free symbols.
+    pub expand_named: bool,
+    /// Base arguments of the elliptic functions to start from (see
+    /// [`crate::algebra::prove_identity`], which fills this in on a restart).
+    pub base_hints: Vec<super::elliptic::BaseHint>,
+}
+
+impl Default for RingOptions {
+    fn default() -> Self {
+        RingOptions {
+            points: 3,
+            precision: 256,
+            max_roots: 32,
+            max_vars: 32,
+            certificate: false,
+            expand_named: false,
+            base_hints: Vec::new(),
+        }
+    }
+}
+
+/// Where a decision came from: a definition the claim uses, or the claim's own text.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Origin {
+    /// The claim's own formulas.
+    Claim,
+    /// A named definition (e.g. `nu`), whose branch the definition fixes.
+    Definition(String),
+}
+
+/// A decision taken from the shadows, on which a proof rests.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Assumption {
+    /// The statement, e.g. `sqrt(A - C) = +r_1` or `E/M2 - 1/B > 0`.
+    pub statement: String,
+    /// The sign chosen (+1 or −1), or 0 for a comparison result stated in full.
+    pub sign: i32,
+    /// Where the decided expression came from.
+    pub origin: Origin,
+}
+
+/// What a field variable stands for.
+#[derive(Clone, Debug)]
+pub(crate) enum VarKind {
+    /// An independent indeterminate of the claim.
+    Indeterminate,
+    /// A named quantity kept as a free symbol; its definition serves for derivatives.
+    Named(Box<Val>),
+    /// `sn` of base argument `base` of elliptic table `table`.
+    Sn { table: usize, base: usize },
+    /// `E(am u, k) − k'² u` of a base argument (for derivatives in the modulus).
+    Zeta { table: usize, base: usize },
+    /// The quarter period `K(k)` of a table.
+    QuarterK { table: usize },
+    /// The complementary quarter period `K'(k)` of a table.
+    QuarterKp { table: usize },
+    /// A symbol the prover cannot expand (constant: derivative 0, else unknown).
+    Opaque { constant: bool },
+}
+
+#[derive(Clone, Debug)]
+pub(crate) struct VarInfo {
+    pub name: String,
+    pub kind: VarKind,
+    pub values: Vec<Complex>,
+}
+
+#[derive(Clone, Debug)]
+pub(crate) struct RootInfo {
+    pub name: String,
+    /// The radicand, a polynomial in field variables and earlier roots.
+    pub radicand: Poly,
+    /// `r² − radicand`.
+    pub relation: Arc<Poly>,
+    pub values: Vec<Complex>,
+    /// This root and every root its radicand depends on (transitively).
+    pub closure: Vec<usize>,
+    /// What the root is, for the reader (e.g. `cn(phi)`).
+    pub note: String,
+}
+
+/// The mutable part of a ring.
+pub(crate) struct State {
+    pub vars: Vec<VarInfo>,
+    pub roots: Vec<RootInfo>,
+    pub basis: FactorBasis,
+    pub tables: Vec<super::elliptic::Table>,
+    pub assumptions: Vec<Assumption>,
+    pub notes: Vec<String>,
+    pub error: Option<AlgebraError>,
+    pub origin: Origin,
+    pub i_root: Option<usize>,
+    pub tower_roots: bool,
+    pub rebase: Option<Vec<super::elliptic::BaseHint>>,
+    pub dcache: std::collections::HashMap<(usize, usize), Val>,
+    pub derivation_lines: Vec<String>,
+}
+
+pub(crate) struct Inner {
+    pub ctx: Arc<Ctx>,
+    pub opts: RingOptions,
+    pub state: Mutex<State>,
+}
+
+/// A tower of fields ℚ(x₁…xₙ)(r₁)…(rₘ), rᵢ² = aᵢ, with numeric shadows at domain
+/// points; the factory of [`Sym`] values.  Cloning gives another handle to the same
+/// ring.
+///
+/// ```
+/// use eulertop::algebra::{Ring, RingOptions};
+/// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
+/// let x = ring.indeterminate_f64("x", &[0.5, 2.0]).unwrap();
+/// let one = ring.integer(1);
+/// let lhs = (x.clone() + one.clone()) * (x.clone() - one.clone());
+/// let rhs = x.clone() * x - one;
+/// assert!(ring.prove(&lhs, &rhs).is_proved());
+/// ```
+#[derive(Clone)]
+pub struct Ring {
+    pub(crate) inner: Arc<Inner>,
+}
+
+impl std::fmt::Debug for Ring {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Ring({} points)", self.inner.opts.points)
+    }
+}
+
+/// Is `name` acceptable for a user symbol (letters and digits, starting with a letter)?
+pub(crate) fn valid_name(name: &str) -> bool {
+    let mut it = name.chars();
+    matches!(it.next(), Some(c) if c.is_ascii_alphabetic()) && it.all(|c| c.is_ascii_alphanumeric())
+}
+
+impl Ring {
+    /// A new ring with no symbols.
+    pub fn new(opts: RingOptions) -> Ring {
+        let ctx = Ctx::new(opts.max_roots + opts.max_vars);
+        let state = State {
+            vars: Vec::new(),
+            roots: Vec::new(),
+            basis: FactorBasis::default(),
+            tables: Vec::new(),
+            assumptions: Vec::new(),
+            notes: Vec::new(),
+            error: None,
+            origin: Origin::Claim,
+            i_root: None,
+            tower_roots: false,
+            rebase: None,
+            dcache: std::collections::HashMap::new(),
+            derivation_lines: Vec::new(),
+        };
+        Ring { inner: Arc::new(Inner { ctx, opts, state: Mutex::new(state) }) }
+    }
+
+    /// The options the ring was made with.
+    pub fn options(&self) -> &RingOptions {
+        &self.inner.opts
+    }
+
+    pub(crate) fn state(&self) -> MutexGuard<'_, State> {
+        self.inner.state()
+    }
+
+    /// Number of domain points.
+    pub fn points(&self) -> usize {
+        self.inner.opts.points
+    }
+
+    /// Shadow precision in bits.
+    pub fn precision(&self) -> u32 {
+        self.inner.opts.precision
+    }
+
+    /// Is this the same ring as `other`?
+    pub fn same(&self, other: &Ring) -> bool {
+        Arc::ptr_eq(&self.inner, &other.inner)
+    }
+
+    /// An independent indeterminate with its values at the domain points.
+    pub fn indeterminate(&self, name: &str, values: &[Complex]) -> AlgResult<Sym> {
+        self.check_new_name(name)?;
+        self.check_values(name, values)?;
+        let prec = self.precision();
+        let v = values.iter().map(|z| Complex::with_val(prec, z)).collect();
+        let j = self.inner.add_var(name.to_string(), VarKind::Indeterminate, v)?;
+        Ok(self.var_sym(j))
+    }
+
+    /// An indeterminate with real values given as `f64`.
+    pub fn indeterminate_f64(&self, name: &str, values: &[f64]) -> AlgResult<Sym> {
+        let prec = self.precision();
+        let v: Vec<Complex> = values.iter().map(|&x| Complex::with_val(prec, (x, 0))).collect();
+        self.indeterminate(name, &v)
+    }
+
+    /// An indeterminate with exact rational values (written `3/2`, `-7`, …).
+    pub fn indeterminate_rational(&self, name: &str, values: &[&str]) -> AlgResult<Sym> {
+        let prec = self.precision();
+        let mut v = Vec::with_capacity(values.len());
+        for s in values {
+            let q: Rational = s
+                .parse()
+                .map_err(|_| AlgebraError::Domain(format!("malformed rational '{s}' for {name}")))?;
+            v.push(Complex::with_val(prec, (Float::with_val(prec, &q), 0)));
+        }
+        self.indeterminate(name, &v)
+    }
+
+    /// A symbol the prover cannot expand (such as `u0` given by an inverse function),
+    /// with its values; `constant` says whether its derivative with respect to every
+    /// indeterminate is 0 (otherwise a derivative through it is an error).
+    pub fn opaque(&self, name: &str, values: &[Complex], constant: bool) -> AlgResult<Sym> {
+        self.check_new_name(name)?;
+        self.check_values(name, values)?;
+        let prec = self.precision();
+        let v = values.iter().map(|z| Complex::with_val(prec, z)).collect();
+        let j = self.inner.add_var(name.to_string(), VarKind::Opaque { constant }, v)?;
+        Ok(self.var_sym(j))
+    }
+
+    /// A named quantity (`k`, `nu`, …): a free symbol standing for `definition` (with the
+    /// definition's values, and its derivative for the chain rule), or the definition
+    /// itself when the ring expands named quantities.  Proving with free symbols first
+    /// keeps expressions small; an identity proved so holds for every value of the
+    /// symbol, in particular for the definition.
+    pub fn named(&self, name: &str, definition: &Sym) -> AlgResult<Sym> {
+        if self.inner.opts.expand_named {
+            return Ok(definition.clone());
+        }
+        self.check_new_name(name)?;
+        if !definition.ring.same(self) {
+            return Err(AlgebraError::RingMismatch);
+        }
+        let values = definition.val.sh.v.clone();
+        let kind = VarKind::Named(Box::new(definition.val.clone()));
+        let j = self.inner.add_var(name.to_string(), kind, values)?;
+        Ok(self.var_sym(j))
+    }
+
+    fn check_new_name(&self, name: &str) -> AlgResult<()> {
+        if !valid_name(name) {
+            return Err(AlgebraError::Domain(format!(
+                "symbol name '{name}' must be letters and digits, starting with a letter"
+            )));
+        }
+        let st = self.state();
+        if st.vars.iter().any(|v| v.name == name) || st.roots.iter().any(|r| r.name == name) {
+            return Err(AlgebraError::Domain(format!("symbol '{name}' defined twice")));
+        }
+        Ok(())
+    }
+
+    fn check_values(&self, name: &str, values: &[Complex]) -> AlgResult<()> {
+        if values.len() != self.points() {
+            return Err(AlgebraError::Domain(format!(
+                "{name}: {} values for {} domain points",
+                values.len(),
+                self.points()
+            )));
+        }
+        if values.iter().any(|z| !z.real().is_finite() || !z.imag().is_finite()) {
+            return Err(AlgebraError::Domain(format!("{name}: non-finite value")));
+        }
+        Ok(())
+    }
+
+    /// The exact integer `n`.
+    pub fn integer(&self, n: i64) -> Sym {
+        self.rational(&Rational::from(n))
+    }
+
+    /// The exact rational `q`.
+    pub fn rational(&self, q: &Rational) -> Sym {
+        Sym::from_val(self, self.inner.const_val(q), Some(Node::constant(q)))
+    }
+
+    /// The imaginary unit, a root symbol with `i² = −1` (shared by the whole ring).
+    pub fn i(&self) -> AlgResult<Sym> {
+        let m1 = self.integer(-1);
+        m1.sqrt()
+    }
+
+    pub(crate) fn var_sym(&self, j: usize) -> Sym {
+        let (p, values, name) = {
+            let st = self.state();
+            let idx = self.inner.kvar(j);
+            (Poly::var(&self.inner.ctx, idx), st.vars[j].values.clone(), st.vars[j].name.clone())
+        };
+        let val = Val { num: p, den: Poly::from_i64(&self.inner.ctx, 1), sh: Shadow::leaf(values) };
+        Sym::from_val(self, val, Some(Node::symbol(&name)))
+    }
+
+    pub(crate) fn root_sym(&self, i: usize) -> Sym {
+        let (p, values, name) = {
+            let st = self.state();
+            let idx = self.inner.root_var(i);
+            (Poly::var(&self.inner.ctx, idx), st.roots[i].values.clone(), st.roots[i].name.clone())
+        };
+        let val = Val { num: p, den: Poly::from_i64(&self.inner.ctx, 1), sh: Shadow::leaf(values) };
+        Sym::from_val(self, val, Some(Node::symbol(&name)))
+    }
+
+    /// Sets where the following decisions come from (a definition or the claim).
+    pub fn set_origin(&self, origin: Origin) {
+        self.state().origin = origin;
+    }
+
+    /// Runs `f` with decisions attributed to `origin`, then restores the previous one.
+    pub fn with_origin<T>(&self, origin: Origin, f: impl FnOnce() -> T) -> T {
+        let prev = std::mem::replace(&mut self.state().origin, origin);
+        let out = f();
+        self.state().origin = prev;
+        out
+    }
+
+    /// The assumptions recorded so far.
+    pub fn assumptions(&self) -> Vec<Assumption> {
+        self.state().assumptions.clone()
+    }
+
+    /// The first error met inside an operator (`+`, `*`, comparisons, …), which cannot
+    /// return a `Result`; the value it produced is meaningless.
+    pub fn error(&self) -> Option<AlgebraError> {
+        self.state().error.clone()
+    }
+
+    pub(crate) fn poison(&self, e: AlgebraError) {
+        let mut st = self.state();
+        if st.error.is_none() {
+            st.error = Some(e);
+        }
+    }
+
+    /// The symbols: `(name, what it is)` for field variables and roots.
+    pub fn symbols(&self) -> Vec<(String, String)> {
+        let st = self.state();
+        let mut out: Vec<(String, String)> = st
+            .vars
+            .iter()
+            .map(|v| (v.name.clone(), super::sym::describe_kind(&v.kind)))
+            .collect();
+        out.extend(st.roots.iter().map(|r| (r.name.clone(), r.note.clone())));
+        out
+    }
+
+    /// The relations `r² = a` of the root symbols, rendered.
+    pub fn relations(&self) -> Vec<String> {
+        let names = self.inner.names();
+        let st = self.state();
+        st.roots.iter().map(|r| format!("{}**2 = {}", r.name, r.radicand.render(&names))).collect()
+    }
+
+    /// Notes on the derivation (addition-theorem instances, period shifts used).
+    pub fn notes(&self) -> Vec<String> {
+        self.state().notes.clone()
+    }
+
+    pub(crate) fn note(&self, s: String) {
+        let mut st = self.state();
+        if !st.notes.contains(&s) {
+            st.notes.push(s);
+        }
+    }
+}
+
+impl Inner {
+    pub(crate) fn state(&self) -> MutexGuard<'_, State> {
+        self.state.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    /// FLINT variable of root `i`.
+    pub(crate) fn root_var(&self, i: usize) -> usize {
+        self.opts.max_roots - 1 - i
+    }
+
+    /// FLINT variable of field variable `j`.
+    pub(crate) fn kvar(&self, j: usize) -> usize {
+        self.opts.max_roots + j
+    }
+
+    /// The root index of FLINT variable `idx`, if it is a root.
+    pub(crate) fn root_of_var(&self, idx: usize) -> Option<usize> {
+        (idx < self.opts.max_roots).then(|| self.opts.max_roots - 1 - idx)
+    }
+
+    pub(crate) fn const_val(&self, q: &Rational) -> Val {
+        let num = Poly::from_integer(&self.ctx, q.numer());
+        let den = Poly::from_integer(&self.ctx, q.denom());
+        let prec = self.opts.precision;
+        let z = Complex::with_val(prec, (Float::with_val(prec, q), 0));
+        Val { num, den, sh: Shadow::leaf(vec![z; self.opts.points]) }
+    }
+
+    pub(crate) fn add_var(&self, name: String, kind: VarKind, values: Vec<Complex>) -> AlgResult<usize> {
+        let mut st = self.state();
+        if st.vars.len() >= self.opts.max_vars {
+            return Err(AlgebraError::Capacity(format!(
+                "more than {} field variables (adding {name})",
+                self.opts.max_vars
+            )));
+        }
+        st.vars.push(VarInfo { name, kind, values });
+        Ok(st.vars.len() - 1)
+    }
+
+    /// Adjoins a root with relation `r² = radicand` and the given values.
+    pub(crate) fn add_root(&self, name: String, radicand: Poly, values: Vec<Complex>, note: String) -> AlgResult<usize> {
+        let mut st = self.state();
+        let i = st.roots.len();
+        if i >= self.opts.max_roots {
+            return Err(AlgebraError::Capacity(format!("more than {} square roots", self.opts.max_roots)));
+        }
+        let r = Poly::var(&self.ctx, self.root_var(i));
+        let relation = Arc::new(r.mul(&r).sub(&radicand));
+        let mut closure = vec![i];
+        for idx in radicand.used_vars() {
+            if let Some(j) = self.root_of_var(idx) {
+                closure.extend(st.roots[j].closure.iter().copied());
+            }
+        }
+        closure.sort_unstable();
+        closure.dedup();
+        st.roots.push(RootInfo { name, radicand, relation, values, closure, note });
+        Ok(i)
+    }
+
+    /// Names of all FLINT variables, for rendering.
+    pub(crate) fn names(&self) -> Vec<String> {
+        let st = self.state();
+        let n = self.ctx.nvars();
+        let mut names: Vec<String> = (0..n).map(|i| format!("unused_{i}")).collect();
+        for (j, v) in st.vars.iter().enumerate() {
+            names[self.kvar(j)] = v.name.clone();
+        }
+        for (i, r) in st.roots.iter().enumerate() {
+            names[self.root_var(i)] = r.name.clone();
+        }
+        names
+    }
+
+    /// The values of every FLINT variable at every point (`[var][point]`; unused
+    /// variables are 0).
+    pub(crate) fn var_values(&self) -> Vec<Vec<Complex>> {
+        let st = self.state();
+        let prec = self.opts.precision;
+        let zero = Complex::with_val(prec, 0);
+        let mut vals = vec![vec![zero; self.opts.points]; self.ctx.nvars()];
+        for (j, v) in st.vars.iter().enumerate() {
+            vals[self.kvar(j)] = v.values.clone();
+        }
+        for (i, r) in st.roots.iter().enumerate() {
+            vals[self.root_var(i)] = r.values.clone();
+        }
+        vals
+    }
+
+    /// Evaluates a polynomial at every point from the variables' values.
+    pub(crate) fn eval_poly(&self, p: &Poly, vals: &[Vec<Complex>]) -> Vec<Complex> {
+        let prec = self.opts.precision;
+        let npts = self.opts.points;
+        let mut out = vec![Complex::with_val(prec, 0); npts];
+        p.for_each_term(|c, e| {
+            for (pt, acc) in out.iter_mut().enumerate() {
+                let mut t = Complex::with_val(prec, (Float::with_val(prec, c), 0));
+                for (idx, &k) in e.iter().enumerate() {
+                    if k > 0 {
+                        let mut pw = Complex::with_val(prec, &vals[idx][pt]);
+                        for _ in 1..k {
+                            pw *= &vals[idx][pt];
+                        }
+                        t *= pw;
+                    }
+                }
+                *acc += t;
+            }
+        });
+        out
+    }
+
+    /// Relations of the roots that occur in `p` and of the roots those depend on.
+    pub(crate) fn relations_for(&self, p: &Poly) -> Vec<Arc<Poly>> {
+        let st = self.state();
+        let mut need: Vec<usize> = Vec::new();
+        for idx in p.used_vars() {
+            if let Some(i) = self.root_of_var(idx) {
+                need.extend(st.roots[i].closure.iter().copied());
+            }
+        }
+        need.sort_unstable();
+        need.dedup();
+        need.iter().map(|&i| st.roots[i].relation.clone()).collect()
+    }
+}

@@ -1,0 +1,502 @@
+//! Square roots: one root symbol per irreducible factor, shared by the whole ring.
+//!
+//! A radicand `x = N/D` of the field ℚ(x) is factored (FLINT) as
+//! `±Π pᵢ^eᵢ · Π fⱼ^eⱼ` (primes, irreducible polynomials); its class modulo squares is
+//! the vector over GF(2) of odd exponents (with a coordinate for −1).  Each root symbol
+//! adjoined so far has such a vector, and the vectors are kept linearly independent
+//! (Gaussian elimination over GF(2)), so ℚ(x)(r₁…rₘ) is a field of degree 2ᵐ and normal
+//! forms are unique.  `√x` is written as `σ · q · Π_{i∈I} rᵢ` with `q ∈ ℚ(x)` and the set
+//! `I` found by elimination; factors not yet covered get new roots (of `−f` rather than
+//! `f` when `f < 0` at every domain point, so real claims stay real; of `−1` only when
+//! the value is not real).  The sign `σ` comes from the shadows (the principal branch
+//! at every point) and is recorded as an assumption.
+//!
+//! A radicand with roots in it is first stripped of its content (in the field) and then
+//! tested for being a square in the tower by denesting `(a + b r)² = P + Q r`
+//! (`a² = (P ± √(P² − a_r Q²))/2`); otherwise it gets a root of its own.
+
+use super::error::{AlgResult, AlgebraError};
+use super::flint::{factor_integer, Poly};
+use super::ring::Ring;
+use super::shadow::Shadow;
+use super::sym::{Sym, Val};
+use rug::{Complex, Integer};
+
+/// Values a new root must take at the domain points (instead of the principal branch),
+/// with its name and description.
+pub(crate) struct Prescribed<'a> {
+    pub values: &'a [Complex],
+    pub name: &'a str,
+    pub note: &'a str,
+}
+
+/// A bit vector over GF(2).
+#[derive(Clone, Default, PartialEq, Eq, Debug)]
+pub(crate) struct Bits(Vec<u64>);
+
+impl Bits {
+    pub fn get(&self, i: usize) -> bool {
+        self.0.get(i / 64).is_some_and(|w| w >> (i % 64) & 1 == 1)
+    }
+    pub fn flip(&mut self, i: usize) {
+        if self.0.len() <= i / 64 {
+            self.0.resize(i / 64 + 1, 0);
+        }
+        self.0[i / 64] ^= 1 << (i % 64);
+    }
+    pub fn xor(&mut self, o: &Bits) {
+        if self.0.len() < o.0.len() {
+            self.0.resize(o.0.len(), 0);
+        }
+        for (a, b) in self.0.iter_mut().zip(&o.0) {
+            *a ^= b;
+        }
+    }
+    pub fn is_zero(&self) -> bool {
+        self.0.iter().all(|&w| w == 0)
+    }
+    pub fn ones(&self) -> Vec<usize> {
+        let mut out = Vec::new();
+        for (k, &w) in self.0.iter().enumerate() {
+            for b in 0..64 {
+                if w >> b & 1 == 1 {
+                    out.push(k * 64 + b);
+                }
+            }
+        }
+        out
+    }
+}
+
+/// A coordinate of the GF(2) vectors: −1, a prime, or an irreducible polynomial.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum Factor {
+    MinusOne,
+    Prime(Integer),
+    Poly(Poly),
+}
+
+#[derive(Clone, Debug)]
+struct Row {
+    v: Bits,
+    combo: Bits,
+    pivot: usize,
+}
+
+/// The factors met so far and the reduced echelon form of the roots' vectors.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct FactorBasis {
+    factors: Vec<Factor>,
+    rows: Vec<Row>,
+}
+
+impl FactorBasis {
+    fn index_of(&mut self, f: Factor) -> usize {
+        if let Some(i) = self.factors.iter().position(|g| *g == f) {
+            return i;
+        }
+        self.factors.push(f);
+        self.factors.len() - 1
+    }
+
+    /// `(residual, combination)`: `t = residual + Σ_{roots in combination} vector`.
+    fn reduce(&self, t: &Bits) -> (Bits, Bits) {
+        let mut r = t.clone();
+        let mut combo = Bits::default();
+        for row in &self.rows {
+            if r.get(row.pivot) {
+                r.xor(&row.v);
+                combo.xor(&row.combo);
+            }
+        }
+        (r, combo)
+    }
+
+    /// Records root `root` with vector `v`; false if `v` depends on earlier roots.
+    fn add(&mut self, v: &Bits, root: usize) -> bool {
+        let (r, mut combo) = self.reduce(v);
+        if r.is_zero() {
+            return false;
+        }
+        combo.flip(root);
+        let pivot = r.ones()[0];
+        for row in &mut self.rows {
+            if row.v.get(pivot) {
+                row.v.xor(&r);
+                row.combo.xor(&combo);
+            }
+        }
+        self.rows.push(Row { v: r, combo, pivot });
+        true
+    }
+}
+
+/// The class of a polynomial modulo squares: its GF(2) vector (over the ring's basis).
+struct Class {
+    t: Bits,
+}
+
+impl Ring {
+    fn class_of(&self, p: &Poly) -> AlgResult<Class> {
+        let fac = p.factor()?;
+        let (sign, primes) = factor_integer(&fac.constant)?;
+        let mut st = self.state();
+        let mut t = Bits::default();
+        if sign < 0 {
+            let i = st.basis.index_of(Factor::MinusOne);
+            t.flip(i);
+        }
+        for (q, e) in primes {
+            if e % 2 == 1 {
+                let i = st.basis.index_of(Factor::Prime(q));
+                t.flip(i);
+            }
+        }
+        for (f, e) in fac.factors {
+            if e % 2 == 1 {
+                let i = st.basis.index_of(Factor::Poly(f));
+                t.flip(i);
+            }
+        }
+        Ok(Class { t })
+    }
+
+    fn factor_poly(&self, i: usize) -> (Factor, Poly) {
+        let st = self.state();
+        let f = st.basis.factors[i].clone();
+        let ctx = &self.inner.ctx;
+        let p = match &f {
+            Factor::MinusOne => Poly::from_i64(ctx, -1),
+            Factor::Prime(q) => Poly::from_integer(ctx, q),
+            Factor::Poly(p) => p.clone(),
+        };
+        (f, p)
+    }
+
+    /// Adjoins a root for one coordinate of a residual vector (see the module doc).
+    fn adjoin_for(&self, residual: &Bits) -> AlgResult<()> {
+        let ones = residual.ones();
+        let pick = {
+            let st = self.state();
+            let rank = |i: &&usize| match st.basis.factors[**i] {
+                Factor::Poly(_) => 0,
+                Factor::Prime(_) => 1,
+                Factor::MinusOne => 2,
+            };
+            *ones.iter().min_by_key(rank).ok_or_else(|| AlgebraError::Internal("empty residual".into()))?
+        };
+        let (factor, p) = self.factor_poly(pick);
+        let mut v = Bits::default();
+        v.flip(pick);
+        let mut radicand = p.clone();
+        if matches!(factor, Factor::Poly(_)) {
+            let vals = self.inner.var_values();
+            let sv = Shadow::leaf(self.inner.eval_poly(&p, &vals));
+            let prec = self.precision();
+            let negative = (0..self.points()).all(|i| sv.real_sign(i, prec) == Some(-1));
+            if negative {
+                let mut flipped = v.clone();
+                let m1 = self.state().basis.index_of(Factor::MinusOne);
+                flipped.flip(m1);
+                if !self.state().basis.reduce(&flipped).0.is_zero() {
+                    v = flipped;
+                    radicand = p.neg();
+                }
+            }
+        }
+        let is_i = matches!(factor, Factor::MinusOne);
+        self.new_field_root(radicand, v, None, is_i).map(|_| ())
+    }
+
+    /// Adjoins a root of a radicand in the field with GF(2) vector `v` and optional
+    /// prescribed values (default: the principal square root at every point).
+    fn new_field_root(&self, radicand: Poly, v: Bits, values: Option<Vec<Complex>>, is_i: bool) -> AlgResult<usize> {
+        let names = self.inner.names();
+        let note = format!("sqrt({})", radicand.render(&names));
+        let values = match values {
+            Some(v) => v,
+            None => {
+                let vals = self.inner.var_values();
+                Shadow::leaf(self.inner.eval_poly(&radicand, &vals)).sqrt().v
+            }
+        };
+        let n = self.state().roots.len();
+        let name = if is_i { "i_".to_string() } else { format!("r_{}", n + 1) };
+        let i = self.inner.add_root(name, radicand, values, note)?;
+        let mut st = self.state();
+        if !st.basis.add(&v, i) {
+            return Err(AlgebraError::Internal("dependent root vector".into()));
+        }
+        if is_i {
+            st.i_root = Some(i);
+        }
+        Ok(i)
+    }
+
+    /// `√(nd)` for a polynomial `nd` of the field as `q · Π rᵢ` (up to sign), adjoining
+    /// roots for uncovered factors when `adjoin` is set (else `None` if not a square in
+    /// the tower).  With `prescribed`, uncovered factors get a single root whose values
+    /// are fixed later.
+    fn field_sqrt_poly(&self, nd: &Poly, adjoin: bool, special: Option<(&str, &str)>) -> AlgResult<Option<(Val, Option<usize>)>> {
+        let class = self.class_of(nd)?;
+        let mut fresh = None;
+        loop {
+            let (res, combo) = self.state().basis.reduce(&class.t);
+            if res.is_zero() {
+                return self.assemble(nd, &combo).map(|v| Some((v, fresh)));
+            }
+            if !adjoin {
+                return Ok(None);
+            }
+            match special {
+                Some((name, note)) => {
+                    let mut rad = Poly::from_i64(&self.inner.ctx, 1);
+                    for i in res.ones() {
+                        rad = rad.mul(&self.factor_poly(i).1);
+                    }
+                    let i = self.new_field_root(rad, res.clone(), None, false)?;
+                    let mut st = self.state();
+                    st.roots[i].note = note.to_string();
+                    st.roots[i].name = name.to_string();
+                    fresh = Some(i);
+                }
+                None => self.adjoin_for(&res)?,
+            }
+        }
+    }
+
+    /// `q · Π_{combo} rᵢ` with `q = √(nd / Π aᵢ)` exact in the field.
+    fn assemble(&self, nd: &Poly, combo: &Bits) -> AlgResult<Val> {
+        let ctx = self.inner.ctx.clone();
+        let mut r = Poly::from_i64(&ctx, 1);
+        let roots: Vec<usize> = combo.ones();
+        for &i in &roots {
+            r = r.mul(&self.state().roots[i].radicand);
+        }
+        let (yn, yd) = self.inner.normalise(nd.clone(), r)?;
+        let (Some(sn), Some(sd)) = (yn.sqrt(), yd.sqrt()) else {
+            return Err(AlgebraError::Internal("square class mismatch in sqrt".into()));
+        };
+        let (num, den) = self.inner.normalise(sn, sd)?;
+        let sh = self.shadow_of(&num, &den);
+        let mut v = Val { num, den, sh };
+        for &i in &roots {
+            let rv = self.root_sym(i).val;
+            v = self.inner.v_mul(&v, &rv)?;
+        }
+        Ok(v)
+    }
+
+    pub(crate) fn shadow_of(&self, num: &Poly, den: &Poly) -> Shadow {
+        let vals = self.inner.var_values();
+        let n = Shadow::leaf(self.inner.eval_poly(num, &vals));
+        let d = Shadow::leaf(self.inner.eval_poly(den, &vals));
+        n.div(&d)
+    }
+
+    /// The sign σ with `target = σ · candidate` at every point.
+    fn decide_sign(&self, target: &Shadow, cand: &Shadow, what: &str) -> AlgResult<i32> {
+        let prec = self.precision();
+        let mut sigma = 0;
+        for i in 0..self.points() {
+            let ratio = Shadow::with_scale(vec![target.v[i].clone()], vec![target.lscale[i]])
+                .div(&Shadow::with_scale(vec![cand.v[i].clone()], vec![cand.lscale[i]]));
+            if cand.is_small(i, prec) {
+                return Err(AlgebraError::CannotDecide(format!("the branch of {what}: it vanishes at a domain point")));
+            }
+            let s = ratio.real_sign(0, prec).ok_or_else(|| {
+                AlgebraError::Internal(format!("the square of the root of {what} differs from its radicand"))
+            })?;
+            if sigma != 0 && s != sigma {
+                return Err(AlgebraError::CannotDecide(format!(
+                    "the branch of {what}: the sign differs between domain points"
+                )));
+            }
+            sigma = s;
+        }
+        Ok(sigma)
+    }
+
+}
+
+impl Sym {
+    /// The square root (principal branch at the domain points), exact in the tower:
+    /// `σ · q · Π rᵢ` with root symbols shared across the ring.  The sign σ is decided
+    /// from the shadows and recorded as an assumption; an error if the domain points
+    /// disagree.
+    ///
+    /// ```
+    /// use eulertop::algebra::{Ring, RingOptions};
+    /// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
+    /// let a = ring.indeterminate_f64("a", &[2.0, 3.0]).unwrap();
+    /// let b = ring.indeterminate_f64("b", &[0.5, 0.25]).unwrap();
+    /// let r = (a.clone() * b.clone() * b.clone()).sqrt().unwrap(); // b·√a, b > 0
+    /// let back = r.clone() * r;
+    /// assert!(ring.prove(&back, &(a * b.clone() * b)).is_proved());
+    /// ```
+    pub fn sqrt(&self) -> AlgResult<Sym> {
+        self.sqrt_with(None)
+    }
+
+    /// A square root whose values at the points are prescribed (e.g. `cn u` for
+    /// `√(1 − sn²u)`): new roots take those values instead of the principal branch.
+    pub(crate) fn sqrt_with(&self, prescribed: Option<Prescribed<'_>>) -> AlgResult<Sym> {
+        let ring = &self.ring;
+        if self.is_exact_zero() {
+            return Ok(self.clone());
+        }
+        let what = format!("sqrt({})", self.render_short(160));
+        let target = match &prescribed {
+            Some(p) => Shadow::leaf(p.values.to_vec()),
+            None => self.val.sh.sqrt(),
+        };
+        let inner = &ring.inner;
+        let nd = inner.reduce(self.val.num.mul(&self.val.den));
+        let (mut cand, fresh) = if self.has_roots() {
+            (self.tower_sqrt(&nd)?, None)
+        } else {
+            let special = prescribed.as_ref().map(|p| (p.name, p.note));
+            let (v, fresh) = ring
+                .field_sqrt_poly(&nd, true, special)?
+                .ok_or_else(|| AlgebraError::Internal("sqrt adjoined no root".into()))?;
+            (v, fresh)
+        };
+        // divide by D: √(N/D) = √(N·D)/D
+        let dval = Val { num: self.val.den.clone(), den: Poly::from_i64(&inner.ctx, 1), sh: ring.shadow_of(&self.val.den, &Poly::from_i64(&inner.ctx, 1)) };
+        cand = inner.v_div(&cand, &dval)?;
+        if let (Some(i), Some(_)) = (fresh, &prescribed) {
+            // fix the new root's values so that the product equals the prescribed values
+            let sigma = ring.pointwise_signs(&target, &cand.sh, &what)?;
+            let mut st = ring.state();
+            for (p, s) in sigma.iter().enumerate() {
+                if *s < 0 {
+                    let z = -st.roots[i].values[p].clone();
+                    st.roots[i].values[p] = z;
+                }
+            }
+            drop(st);
+            cand.sh = cand.sh.scale_by(&sigma.iter().map(|&s| Complex::with_val(ring.precision(), s)).collect::<Vec<_>>());
+            let node = self.node.as_ref().map(|n| super::certificate::Node::sqrt(n, &cand, ring, 1));
+            return Ok(Sym::from_val(ring, cand, node));
+        }
+        let sigma = ring.decide_sign(&target, &cand.sh, &what)?;
+        if sigma < 0 {
+            cand = inner.v_neg(&cand);
+        }
+        let result = Sym::from_val(ring, cand, None);
+        if !(sigma > 0 && fresh.is_none() && result.is_single_root_of(self)) {
+            ring.record_assumption(format!("{what} = {}", result.render_short(160)), sigma);
+        }
+        let node = self.node.as_ref().map(|n| super::certificate::Node::sqrt(n, &result.val, ring, sigma));
+        Ok(result.with_node(node))
+    }
+
+    /// Is this value a single root symbol whose radicand is exactly `x` (the
+    /// definitional case, which needs no assumption)?
+    fn is_single_root_of(&self, x: &Sym) -> bool {
+        let used = self.val.num.used_vars();
+        if used.len() != 1 || !self.val.den.is_one() || self.val.num.len() != 1 {
+            return false;
+        }
+        let Some(i) = self.ring.inner.root_of_var(used[0]) else { return false };
+        let st = self.ring.state();
+        x.val.den.is_one() && st.roots[i].radicand == x.val.num && self.val.num.leading_coefficient() == 1
+    }
+
+    /// √ of a polynomial with roots (see the module doc), up to sign.
+    fn tower_sqrt(&self, nd: &Poly) -> AlgResult<Val> {
+        let ring = &self.ring;
+        let inner = &ring.inner;
+        let root_vars: Vec<usize> = (0..ring.state().roots.len()).map(|i| inner.root_var(i)).collect();
+        let g = nd.content_in(&root_vars)?;
+        let g = if nd.leading_coefficient() < 0 { g.neg() } else { g };
+        let rest = nd.divides(&g)?.ok_or_else(|| AlgebraError::Internal("content does not divide".into()))?;
+        let (gv, _) = ring
+            .field_sqrt_poly(&g, true, None)?
+            .ok_or_else(|| AlgebraError::Internal("sqrt adjoined no root".into()))?;
+        let rv = match ring.exact_tower_sqrt(&rest, 0)? {
+            Some(v) => v,
+            None => ring.tower_root(&rest)?,
+        };
+        inner.v_mul(&gv, &rv)
+    }
+}
+
+impl Ring {
+    /// Signs σₚ with `target = σₚ · cand` at each point.
+    fn pointwise_signs(&self, target: &Shadow, cand: &Shadow, what: &str) -> AlgResult<Vec<i32>> {
+        let prec = self.precision();
+        (0..self.points())
+            .map(|i| {
+                let t = Shadow::with_scale(vec![target.v[i].clone()], vec![target.lscale[i]]);
+                let c = Shadow::with_scale(vec![cand.v[i].clone()], vec![cand.lscale[i]]);
+                t.div(&c)
+                    .real_sign(0, prec)
+                    .ok_or_else(|| AlgebraError::Internal(format!("prescribed values do not square to the radicand of {what}")))
+            })
+            .collect()
+    }
+
+    /// A root of a radicand with roots (existing one reused, else adjoined).
+    fn tower_root(&self, rad: &Poly) -> AlgResult<Val> {
+        let existing = self.state().roots.iter().position(|r| r.radicand == *rad);
+        let i = match existing {
+            Some(i) => i,
+            None => {
+                let vals = self.inner.var_values();
+                let values = Shadow::leaf(self.inner.eval_poly(rad, &vals)).sqrt().v;
+                let names = self.inner.names();
+                let note = format!("sqrt({})", rad.render(&names));
+                let n = self.state().roots.len();
+                let i = self.inner.add_root(format!("r_{}", n + 1), rad.clone(), values, note)?;
+                self.state().tower_roots = true;
+                i
+            }
+        };
+        Ok(self.root_sym(i).val)
+    }
+
+    /// `√p` in the tower if `p` is a square there (no new roots), up to sign.
+    fn exact_tower_sqrt(&self, p: &Poly, depth: usize) -> AlgResult<Option<Val>> {
+        let inner = &self.inner;
+        if p.is_zero() {
+            return Ok(Some(Val { num: p.clone(), den: Poly::from_i64(&inner.ctx, 1), sh: self.shadow_of(p, &Poly::from_i64(&inner.ctx, 1)) }));
+        }
+        let top = p.used_vars().into_iter().find(|&i| inner.root_of_var(i).is_some());
+        let Some(idx) = top else {
+            return Ok(self.field_sqrt_poly(p, false, None)?.map(|(v, _)| v));
+        };
+        if depth > 2 * self.options().max_roots {
+            return Ok(None);
+        }
+        let root = inner.root_of_var(idx).ok_or_else(|| AlgebraError::Internal("root index".into()))?;
+        let f = self.state().roots[root].radicand.clone();
+        let one = Poly::from_i64(&inner.ctx, 1);
+        let pp = p.coefficient_in(idx, 0);
+        let qq = p.coefficient_in(idx, 1);
+        let norm = inner.reduce(pp.mul(&pp).sub(&f.mul(&qq).mul(&qq)));
+        let Some(m) = self.exact_tower_sqrt(&norm, depth + 1)? else { return Ok(None) };
+        let pv = Val { num: pp.clone(), den: one.clone(), sh: self.shadow_of(&pp, &one) };
+        let qv = Val { num: qq.clone(), den: one.clone(), sh: self.shadow_of(&qq, &one) };
+        let two = inner.const_val(&rug::Rational::from(2));
+        let rv = self.root_sym(root).val;
+        for sign in [1, -1] {
+            let ms = if sign > 0 { m.clone() } else { inner.v_neg(&m) };
+            let a2 = inner.v_div(&inner.v_add(&pv, &ms, false)?, &two)?;
+            if a2.num.is_zero() {
+                continue;
+            }
+            let a2nd = inner.reduce(a2.num.mul(&a2.den));
+            let Some(a) = self.exact_tower_sqrt(&a2nd, depth + 1)? else { continue };
+            let dv = Val { num: a2.den.clone(), den: one.clone(), sh: self.shadow_of(&a2.den, &one) };
+            let a = inner.v_div(&a, &dv)?;
+            let b = inner.v_div(&qv, &inner.v_mul(&two, &a)?)?;
+            let cand = inner.v_add(&a, &inner.v_mul(&b, &rv)?, false)?;
+            let sq = inner.v_mul(&cand, &cand)?;
+            if sq.den.is_one() && sq.num == *p {
+                return Ok(Some(cand));
+            }
+        }
+        Ok(None)
+    }
+}

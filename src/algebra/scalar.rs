@@ -1,0 +1,225 @@
+//! Operators and the numeric traits, so generic model code runs on [`Sym`].
+//!
+//! Operators cannot return errors: a failure (division by a zero divisor, an
+//! undecidable comparison, a transcendental function) is recorded in the ring
+//! ([`super::Ring::error`]) and the operation returns a meaningless value (exact 0 with
+//! NaN shadows); a proof on such a ring is never reported as proved.
+
+use super::error::AlgebraError;
+use super::sym::Sym;
+use crate::numbers::{NumError, Real, Scalar};
+use rug::{Complex, Float, Rational};
+use std::cmp::Ordering;
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+macro_rules! binop {
+    ($tr:ident, $m:ident, $try:ident) => {
+        impl $tr for Sym {
+            type Output = Sym;
+            fn $m(self, o: Sym) -> Sym {
+                let r = self.$try(&o);
+                Sym::or_poison(&self.ring, r)
+            }
+        }
+        impl $tr<&Sym> for &Sym {
+            type Output = Sym;
+            fn $m(self, o: &Sym) -> Sym {
+                let r = self.$try(o);
+                Sym::or_poison(&self.ring, r)
+            }
+        }
+    };
+}
+
+binop!(Add, add, try_add);
+binop!(Sub, sub, try_sub);
+binop!(Mul, mul, try_mul);
+binop!(Div, div, try_div);
+
+impl Neg for Sym {
+    type Output = Sym;
+    fn neg(self) -> Sym {
+        self.negate()
+    }
+}
+
+impl Neg for &Sym {
+    type Output = Sym;
+    fn neg(self) -> Sym {
+        self.negate()
+    }
+}
+
+/// Equality of exact normal forms (values of different rings are never equal).  Equal
+/// normal forms mean equal values; different ones prove nothing.
+impl PartialEq for Sym {
+    fn eq(&self, o: &Sym) -> bool {
+        self.ring.same(&o.ring) && self.val.num == o.val.num && self.val.den == o.val.den
+    }
+}
+
+/// Comparison decided on the domain (see [`Sym::compare`]); `None` (and an error in the
+/// ring) when the domain points disagree.
+impl PartialOrd for Sym {
+    fn partial_cmp(&self, o: &Sym) -> Option<Ordering> {
+        match self.compare(o) {
+            Ok(c) => Some(c),
+            Err(e) => {
+                self.ring.poison(e);
+                None
+            }
+        }
+    }
+}
+
+impl Sym {
+    fn not_algebraic(&self, what: &str) -> Sym {
+        self.ring.poison(AlgebraError::NotAlgebraic(what.to_string()));
+        self.ring.nan()
+    }
+
+    fn first_shadow_f64(&self) -> f64 {
+        self.val.sh.v.first().map_or(f64::NAN, |z| z.real().to_f64())
+    }
+}
+
+impl Scalar for Sym {
+    fn zero(&self) -> Self {
+        self.ring.integer(0)
+    }
+    fn one(&self) -> Self {
+        self.ring.integer(1)
+    }
+    fn from_i64(&self, n: i64) -> Self {
+        self.ring.integer(n)
+    }
+    fn from_f64(&self, x: f64) -> Self {
+        match Rational::from_f64(x) {
+            Some(q) => self.ring.rational(&q),
+            None => self.not_algebraic("a non-finite number"),
+        }
+    }
+    fn from_ratio(&self, n: i64, d: i64) -> Self {
+        if d == 0 {
+            self.ring.poison(AlgebraError::DivisionByZero);
+            return self.ring.nan();
+        }
+        self.ring.rational(&Rational::from((n, d)))
+    }
+    fn parse_like(&self, s: &str) -> Result<Self, NumError> {
+        let q = crate::numbers::parse_rational(s)?;
+        let q: Rational = format!("{}/{}", q.numer(), q.denom()).parse().map_err(|_| NumError::Parse(s.to_string()))?;
+        Ok(self.ring.rational(&q))
+    }
+    fn precision(&self) -> Option<u32> {
+        None
+    }
+    fn is_zero(&self) -> bool {
+        self.is_exact_zero()
+    }
+    fn magnitude(&self) -> f64 {
+        self.val.sh.v.first().map_or(f64::NAN, |z| Float::with_val(53, z.abs_ref()).to_f64())
+    }
+    fn try_sqrt(&self) -> Result<Self, NumError> {
+        self.sqrt().map_err(|e| {
+            self.ring.poison(e);
+            NumError::NotExact("a symbolic square root (the ring records why)")
+        })
+    }
+    fn to_decimal(&self, digits: usize) -> String {
+        match self.as_rational() {
+            Some(q) => q.to_string(),
+            None => format!("{} ≈ {}", self.render_short(80), Float::with_val(64, self.val.sh.v[0].real()).to_string_radix(10, Some(digits.max(1)))),
+        }
+    }
+}
+
+impl Real for Sym {
+    fn prec(&self) -> u32 {
+        self.ring.precision()
+    }
+    fn with_prec(&self, _bits: u32) -> Self {
+        self.clone()
+    }
+    fn to_f64(&self) -> f64 {
+        self.first_shadow_f64()
+    }
+    fn pi(&self) -> Self {
+        self.not_algebraic("pi")
+    }
+    fn mul_2si(&self, n: i32) -> Self {
+        let mut q = Rational::from(1);
+        if n >= 0 {
+            q <<= n.unsigned_abs();
+        } else {
+            q >>= n.unsigned_abs();
+        }
+        self * &self.ring.rational(&q)
+    }
+    fn abs(&self) -> Self {
+        let r = Sym::abs(self);
+        Sym::or_poison(&self.ring, r)
+    }
+    fn sqrt(&self) -> Self {
+        let r = Sym::sqrt(self);
+        Sym::or_poison(&self.ring, r)
+    }
+    fn exp(&self) -> Self {
+        self.not_algebraic("exp")
+    }
+    fn ln(&self) -> Self {
+        self.not_algebraic("ln")
+    }
+    fn sin(&self) -> Self {
+        self.not_algebraic("sin")
+    }
+    fn cos(&self) -> Self {
+        self.not_algebraic("cos")
+    }
+    fn atan(&self) -> Self {
+        self.not_algebraic("atan")
+    }
+    fn atan2(&self, _x: &Self) -> Self {
+        self.not_algebraic("atan2")
+    }
+    fn asin(&self) -> Self {
+        self.not_algebraic("asin")
+    }
+    fn sinh(&self) -> Self {
+        self.not_algebraic("sinh")
+    }
+    fn cosh(&self) -> Self {
+        self.not_algebraic("cosh")
+    }
+    fn tanh(&self) -> Self {
+        self.not_algebraic("tanh")
+    }
+    fn asinh(&self) -> Self {
+        self.not_algebraic("asinh")
+    }
+    fn atanh(&self) -> Self {
+        self.not_algebraic("atanh")
+    }
+    fn floor(&self) -> Self {
+        match self.as_rational() {
+            Some(q) => self.ring.rational(&Rational::from(q.floor_ref())),
+            None => self.not_algebraic("floor"),
+        }
+    }
+    fn round(&self) -> Self {
+        match self.as_rational() {
+            Some(q) => self.ring.rational(&Rational::from(q.round_ref())),
+            None => self.not_algebraic("round"),
+        }
+    }
+    fn is_finite(&self) -> bool {
+        !self.val.sh.has_non_finite()
+    }
+}
+
+impl Sym {
+    /// The value as a complex shadow at every point (for callers that print values).
+    pub fn values(&self) -> Vec<Complex> {
+        self.val.sh.v.clone()
+    }
+}

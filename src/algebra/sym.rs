@@ -1,0 +1,428 @@
+//! [`Sym`]: an exact element of the tower with its numeric shadow.
+//!
+//! **Normal form.**  A value is `N/D` where `N` is a polynomial over ℤ in the field
+//! variables and the root symbols, of degree < 2 in every root (reduced modulo the
+//! relations `rᵢ² = aᵢ`, a Gröbner basis), and `D` is a polynomial in the field
+//! variables only, with positive leading coefficient and `gcd(N, D) = 1`.  Division by
+//! a value with roots multiplies by conjugates until the denominator is root-free.
+//! Over the field ℚ(x) and roots of pairwise independent radicands the form is unique,
+//! so a value is zero exactly when `N = 0`.
+
+use super::certificate::{Node, Op};
+use super::error::{AlgResult, AlgebraError};
+use super::flint::Poly;
+use super::ring::{Inner, Ring, VarKind};
+use super::shadow::Shadow;
+use rug::Complex;
+use std::sync::Arc;
+
+/// The exact part of a value with its shadow, without the ring handle (so the symbol
+/// table can store values without reference cycles).
+#[derive(Clone, Debug)]
+pub(crate) struct Val {
+    pub num: Poly,
+    pub den: Poly,
+    pub sh: Shadow,
+}
+
+/// An exact element of a [`Ring`]'s tower, with its numeric values at the domain points.
+///
+/// Arithmetic goes through the standard operators (also on references); operations
+/// that can fail (`sqrt`, `sn`, derivatives, division by a zero divisor) have inherent
+/// methods returning [`AlgResult`]; inside operators a failure is recorded in the
+/// ring ([`Ring::error`]) and yields a meaningless value.
+#[derive(Clone)]
+pub struct Sym {
+    pub(crate) ring: Ring,
+    pub(crate) val: Val,
+    pub(crate) node: Option<Arc<Node>>,
+}
+
+impl std::fmt::Debug for Sym {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.render())
+    }
+}
+
+pub(crate) fn describe_kind(k: &VarKind) -> String {
+    match k {
+        VarKind::Indeterminate => "indeterminate".into(),
+        VarKind::Named(_) => "named quantity (free symbol)".into(),
+        VarKind::Sn { .. } => "sn of a base argument".into(),
+        VarKind::Zeta { .. } => "E(am u, k) - k'^2 u of a base argument".into(),
+        VarKind::QuarterK { .. } => "quarter period K(k)".into(),
+        VarKind::QuarterKp { .. } => "complementary quarter period K'(k)".into(),
+        VarKind::Opaque { .. } => "opaque symbol".into(),
+    }
+}
+
+impl Inner {
+    /// Reduces a polynomial modulo the root relations (only if some root has degree ≥ 2).
+    pub(crate) fn reduce(&self, p: Poly) -> Poly {
+        let degs = p.degrees();
+        let needs = (0..self.opts.max_roots).any(|idx| degs[idx] >= 2);
+        if !needs {
+            return p;
+        }
+        let rels = self.relations_for(&p);
+        let refs: Vec<&Poly> = rels.iter().map(|r| r.as_ref()).collect();
+        p.rem_ideal(&refs)
+    }
+
+    /// Cancels the gcd and makes the denominator's leading coefficient positive.
+    pub(crate) fn normalise(&self, num: Poly, den: Poly) -> AlgResult<(Poly, Poly)> {
+        if den.is_zero() {
+            return Err(AlgebraError::DivisionByZero);
+        }
+        if num.is_zero() {
+            return Ok((num, Poly::from_i64(&self.ctx, 1)));
+        }
+        let (mut n, mut d) = if den.is_one() {
+            (num, den)
+        } else {
+            let g = num.gcd(&den)?;
+            if g.is_one() {
+                (num, den)
+            } else {
+                (exact(&num, &g)?, exact(&den, &g)?)
+            }
+        };
+        if d.leading_coefficient() < 0 {
+            n = n.neg();
+            d = d.neg();
+        }
+        Ok((n, d))
+    }
+
+    pub(crate) fn v_add(&self, a: &Val, b: &Val, sub: bool) -> AlgResult<Val> {
+        let sh = if sub { a.sh.sub(&b.sh) } else { a.sh.add(&b.sh) };
+        let (n, d) = if a.den == b.den {
+            let n = if sub { a.num.sub(&b.num) } else { a.num.add(&b.num) };
+            (n, a.den.clone())
+        } else {
+            let g = a.den.gcd(&b.den)?;
+            let ad = exact(&a.den, &g)?;
+            let bd = exact(&b.den, &g)?;
+            let l = a.num.mul(&bd);
+            let r = b.num.mul(&ad);
+            (if sub { l.sub(&r) } else { l.add(&r) }, a.den.mul(&bd))
+        };
+        let (num, den) = self.normalise(n, d)?;
+        Ok(Val { num, den, sh })
+    }
+
+    pub(crate) fn v_mul(&self, a: &Val, b: &Val) -> AlgResult<Val> {
+        let sh = a.sh.mul(&b.sh);
+        // cancel crosswise before multiplying
+        let (an, bd) = cancel(&a.num, &b.den)?;
+        let (bn, ad) = cancel(&b.num, &a.den)?;
+        let prod = an.mul(&bn);
+        let reduced = self.reduce(prod.clone());
+        let changed = reduced != prod;
+        let den = ad.mul(&bd);
+        let (num, den) = if changed || !den.is_one() {
+            self.normalise(reduced, den)?
+        } else {
+            (reduced, den)
+        };
+        Ok(Val { num, den, sh })
+    }
+
+    pub(crate) fn v_neg(&self, a: &Val) -> Val {
+        Val { num: a.num.neg(), den: a.den.clone(), sh: a.sh.neg() }
+    }
+
+    /// `1/a`: conjugates until the denominator is free of roots.
+    pub(crate) fn v_inv(&self, a: &Val) -> AlgResult<Val> {
+        if a.num.is_zero() {
+            return Err(AlgebraError::DivisionByZero);
+        }
+        let one = Poly::from_i64(&self.ctx, 1);
+        let sh = Shadow::leaf(vec![Complex::with_val(self.opts.precision, 1); self.opts.points]).div(&a.sh);
+        let (conj, norm) = self.rationalise(&a.num)?;
+        // 1/(N/D) = D·conj/norm
+        let num = self.reduce(a.den.mul(&conj));
+        let (num, den) = self.normalise(num, norm)?;
+        let _ = one;
+        Ok(Val { num, den, sh })
+    }
+
+    /// For `n` with roots, returns `(c, m)` with `n·c = m` free of roots.
+    pub(crate) fn rationalise(&self, n: &Poly) -> AlgResult<(Poly, Poly)> {
+        let mut conj = Poly::from_i64(&self.ctx, 1);
+        let mut cur = n.clone();
+        loop {
+            let top = cur.used_vars().into_iter().find(|&idx| self.root_of_var(idx).is_some());
+            let Some(idx) = top else { break };
+            let r = Poly::var(&self.ctx, idx);
+            let p0 = cur.coefficient_in(idx, 0);
+            let p1 = cur.coefficient_in(idx, 1);
+            let c = p0.sub(&p1.mul(&r));
+            cur = self.reduce(cur.mul(&c));
+            if cur.is_zero() {
+                return Err(AlgebraError::ZeroDivisor(
+                    "a non-zero value has norm 0 (the tower is not a field here)".into(),
+                ));
+            }
+            conj = self.reduce(conj.mul(&c));
+        }
+        Ok((conj, cur))
+    }
+
+    pub(crate) fn v_div(&self, a: &Val, b: &Val) -> AlgResult<Val> {
+        if b.num.is_zero() {
+            return Err(AlgebraError::DivisionByZero);
+        }
+        let sh = a.sh.div(&b.sh);
+        let has_roots = b.num.used_vars().iter().any(|&i| self.root_of_var(i).is_some());
+        let mut v = if has_roots {
+            let inv = self.v_inv(b)?;
+            self.v_mul(a, &inv)?
+        } else {
+            // (an/ad) / (bn/bd) = an·bd / (ad·bn)
+            let flipped = Val { num: b.den.clone(), den: b.num.clone(), sh: b.sh.clone() };
+            let (n, d) = self.normalise(flipped.num, flipped.den)?;
+            self.v_mul(a, &Val { num: n, den: d, sh: flipped.sh })?
+        };
+        v.sh = sh;
+        Ok(v)
+    }
+
+    pub(crate) fn v_powi(&self, a: &Val, n: i32) -> AlgResult<Val> {
+        let base = if n < 0 { self.v_inv(a)? } else { a.clone() };
+        let mut e = n.unsigned_abs();
+        let mut acc: Option<Val> = None;
+        let mut b = base;
+        while e > 0 {
+            if e & 1 == 1 {
+                acc = Some(match acc {
+                    None => b.clone(),
+                    Some(x) => self.v_mul(&x, &b)?,
+                });
+            }
+            e >>= 1;
+            if e > 0 {
+                b = self.v_mul(&b, &b)?;
+            }
+        }
+        Ok(match acc {
+            Some(x) => x,
+            None => self.const_val(&rug::Rational::from(1)),
+        })
+    }
+}
+
+fn exact(a: &Poly, b: &Poly) -> AlgResult<Poly> {
+    a.divides(b)?.ok_or_else(|| AlgebraError::Internal("gcd does not divide".into()))
+}
+
+/// `(a/g, b/g)` for `g = gcd(a, b)`.
+fn cancel(a: &Poly, b: &Poly) -> AlgResult<(Poly, Poly)> {
+    if b.is_one() || a.is_zero() {
+        return Ok((a.clone(), b.clone()));
+    }
+    let g = a.gcd(b)?;
+    if g.is_one() {
+        return Ok((a.clone(), b.clone()));
+    }
+    Ok((exact(a, &g)?, exact(b, &g)?))
+}
+
+impl Sym {
+    pub(crate) fn from_val(ring: &Ring, val: Val, node: Option<Arc<Node>>) -> Sym {
+        let node = if ring.inner.opts.certificate { node } else { None };
+        Sym { ring: ring.clone(), val, node }
+    }
+
+    /// The ring of this value.
+    pub fn ring(&self) -> &Ring {
+        &self.ring
+    }
+
+    fn same_ring(&self, o: &Sym) -> AlgResult<()> {
+        if self.ring.same(&o.ring) {
+            Ok(())
+        } else {
+            Err(AlgebraError::RingMismatch)
+        }
+    }
+
+    fn node2(&self, op: Op, o: &Sym) -> Option<Arc<Node>> {
+        match (&self.node, &o.node) {
+            (Some(a), Some(b)) => Some(Node::new(op, vec![a.clone(), b.clone()])),
+            _ => None,
+        }
+    }
+
+    fn node1(&self, op: Op) -> Option<Arc<Node>> {
+        self.node.as_ref().map(|a| Node::new(op, vec![a.clone()]))
+    }
+
+    /// `self + o`, or an error.
+    pub fn try_add(&self, o: &Sym) -> AlgResult<Sym> {
+        self.same_ring(o)?;
+        let v = self.ring.inner.v_add(&self.val, &o.val, false)?;
+        Ok(Sym::from_val(&self.ring, v, self.node2(Op::Add, o)))
+    }
+
+    /// `self − o`, or an error.
+    pub fn try_sub(&self, o: &Sym) -> AlgResult<Sym> {
+        self.same_ring(o)?;
+        let v = self.ring.inner.v_add(&self.val, &o.val, true)?;
+        Ok(Sym::from_val(&self.ring, v, self.node2(Op::Sub, o)))
+    }
+
+    /// `self · o`, or an error.
+    pub fn try_mul(&self, o: &Sym) -> AlgResult<Sym> {
+        self.same_ring(o)?;
+        let v = self.ring.inner.v_mul(&self.val, &o.val)?;
+        Ok(Sym::from_val(&self.ring, v, self.node2(Op::Mul, o)))
+    }
+
+    /// `self / o`, or an error (division by zero or by a zero divisor).
+    pub fn try_div(&self, o: &Sym) -> AlgResult<Sym> {
+        self.same_ring(o)?;
+        let v = self.ring.inner.v_div(&self.val, &o.val)?;
+        Ok(Sym::from_val(&self.ring, v, self.node2(Op::Div, o)))
+    }
+
+    /// `self^n` for any integer `n` (negative powers invert), or an error.
+    pub fn try_powi(&self, n: i32) -> AlgResult<Sym> {
+        let v = self.ring.inner.v_powi(&self.val, n)?;
+        Ok(Sym::from_val(&self.ring, v, self.node1(Op::Pow(n))))
+    }
+
+    /// `−self`.
+    pub fn negate(&self) -> Sym {
+        let v = self.ring.inner.v_neg(&self.val);
+        Sym::from_val(&self.ring, v, self.node1(Op::Neg))
+    }
+
+    /// Is the normal form exactly zero?
+    pub fn is_exact_zero(&self) -> bool {
+        self.val.num.is_zero()
+    }
+
+    /// The value if it is an exact rational number.
+    pub fn as_rational(&self) -> Option<rug::Rational> {
+        let n = self.val.num.as_constant()?;
+        let d = self.val.den.as_constant()?;
+        Some(rug::Rational::from((n, d)))
+    }
+
+    /// Number of terms of the numerator of the normal form.
+    pub fn terms(&self) -> usize {
+        self.val.num.len()
+    }
+
+    /// The shadow value at domain point `i`.
+    pub fn shadow(&self, i: usize) -> &Complex {
+        &self.val.sh.v[i]
+    }
+
+    /// The shadow values at all domain points.
+    pub fn shadows(&self) -> &[Complex] {
+        &self.val.sh.v
+    }
+
+    /// Evaluates the normal form (not the shadow) at every domain point from the
+    /// symbols' values: an independent check of the exact arithmetic.
+    pub fn eval_normal_form(&self) -> Vec<Complex> {
+        let inner = &self.ring.inner;
+        let vals = inner.var_values();
+        let n = inner.eval_poly(&self.val.num, &vals);
+        let d = inner.eval_poly(&self.val.den, &vals);
+        n.iter().zip(&d).map(|(a, b)| Complex::with_val(inner.opts.precision, a / b)).collect()
+    }
+
+    /// The normal form as `(numerator) / (denominator)` in SymPy syntax.
+    pub fn render(&self) -> String {
+        let names = self.ring.inner.names();
+        let n = self.val.num.render(&names);
+        if self.val.den.is_one() {
+            n
+        } else {
+            format!("({n})/({})", self.val.den.render(&names))
+        }
+    }
+
+    /// A rendering cut to about `max` characters, for messages and assumptions.
+    pub fn render_short(&self, max: usize) -> String {
+        let s = self.render();
+        if s.chars().count() <= max {
+            s
+        } else {
+            let cut: String = s.chars().take(max).collect();
+            format!("{cut}… ({} terms)", self.terms())
+        }
+    }
+
+    /// The FLINT variables that occur (in numerator or denominator).
+    pub(crate) fn used_vars(&self) -> Vec<usize> {
+        let mut u = self.val.num.used_vars();
+        u.extend(self.val.den.used_vars());
+        u.sort_unstable();
+        u.dedup();
+        u
+    }
+
+    /// Does the normal form contain root symbols?
+    pub fn has_roots(&self) -> bool {
+        self.val.num.used_vars().iter().any(|&i| self.ring.inner.root_of_var(i).is_some())
+    }
+
+    /// If the value is exactly one field variable, its index.
+    pub(crate) fn as_field_var(&self) -> Option<usize> {
+        if !self.val.den.is_one() || self.val.num.len() != 1 {
+            return None;
+        }
+        let used = self.val.num.used_vars();
+        if used.len() != 1 || self.ring.inner.root_of_var(used[0]).is_some() {
+            return None;
+        }
+        let p = Poly::var(&self.ring.inner.ctx, used[0]);
+        (p == self.val.num).then(|| used[0] - self.ring.inner.opts.max_roots)
+    }
+
+    /// A value with a new shadow (used where a value is known more accurately).
+    pub(crate) fn with_node(mut self, node: Option<Arc<Node>>) -> Sym {
+        if self.ring.inner.opts.certificate {
+            self.node = node;
+        }
+        self
+    }
+
+    /// Unwraps an operator result: on error, record it in the ring and return a NaN
+    /// value.
+    pub(crate) fn or_poison(ring: &Ring, r: AlgResult<Sym>) -> Sym {
+        match r {
+            Ok(s) => s,
+            Err(e) => {
+                ring.poison(e);
+                ring.nan()
+            }
+        }
+    }
+}
+
+impl Ring {
+    /// A meaningless value (exact 0 with NaN shadows), returned after an error.
+    pub(crate) fn nan(&self) -> Sym {
+        let prec = self.precision();
+        let mut z = Complex::new(prec);
+        z.mut_real().assign_nan();
+        let sh = Shadow::leaf(vec![z; self.points()]);
+        let ctx = &self.inner.ctx;
+        Sym::from_val(self, Val { num: Poly::zero(ctx), den: Poly::from_i64(ctx, 1), sh }, None)
+    }
+}
+
+trait AssignNan {
+    fn assign_nan(&mut self);
+}
+impl AssignNan for rug::Float {
+    fn assign_nan(&mut self) {
+        use rug::Assign;
+        self.assign(rug::float::Special::Nan);
+    }
+}
