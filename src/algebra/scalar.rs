@@ -126,6 +126,12 @@ impl Scalar for Sym {
             NumError::NotExact("a symbolic square root (the ring records why)")
         })
     }
+    fn to_f64(&self) -> f64 {
+        self.first_shadow_f64()
+    }
+    fn is_finite(&self) -> bool {
+        !self.val.sh.has_non_finite()
+    }
     fn to_decimal(&self, digits: usize) -> String {
         match self.as_rational() {
             Some(q) => q.to_string(),
@@ -135,14 +141,24 @@ impl Scalar for Sym {
 }
 
 impl Real for Sym {
+    const FIXED: bool = false;
+    const BY_RULE: bool = true;
+    fn sncndn_by_rule(u: &Self, k: &Self) -> Result<(Self, Self, Self), String> {
+        u.sncndn(k).map_err(|e| e.to_string())
+    }
+    fn quarter_period_by_rule(k: &Self, complementary: bool) -> Result<Self, String> {
+        let r = if complementary {
+            k.ring.quarter_period_prime(k)
+        } else {
+            k.ring.quarter_period(k)
+        };
+        r.map_err(|e| e.to_string())
+    }
     fn prec(&self) -> u32 {
         self.ring.precision()
     }
     fn with_prec(&self, _bits: u32) -> Self {
         self.clone()
-    }
-    fn to_f64(&self) -> f64 {
-        self.first_shadow_f64()
     }
     fn pi(&self) -> Self {
         self.not_algebraic("pi")
@@ -211,9 +227,6 @@ impl Real for Sym {
             Some(q) => self.ring.rational(&Rational::from(q.round_ref())),
             None => self.not_algebraic("round"),
         }
-    }
-    fn is_finite(&self) -> bool {
-        !self.val.sh.has_non_finite()
     }
 }
 

@@ -196,6 +196,12 @@ fn err(e: ModelError) -> String {
 impl GenericFunction for ModelFn {
     fn call<R: Real>(&self, a: &[Value<R>]) -> Result<Value<R>, String> {
         use ModelFn as F;
+        if R::BY_RULE && self.is_implicit() {
+            return Err(format!(
+                "uses the implicit map {}: its value is a root of the map's equations, not an expression",
+                self.name()
+            ));
+        }
         match self {
             f if f.spec().algebraic => self.call_algebraic(a),
             F::Kmod => Ok(Value::Real(params(a)?.1.k())),
@@ -264,6 +270,22 @@ impl GenericFunction for ModelFn {
 }
 
 impl ModelFn {
+    /// Is the value defined implicitly (by Newton's method on the map's equations)?
+    pub fn is_implicit(self) -> bool {
+        use ModelFn as F;
+        matches!(
+            self,
+            F::StepGamma0
+                | F::StepGamma1
+                | F::StepGamma2
+                | F::StepVm
+                | F::VmOmega
+                | F::Delta1
+                | F::Delta2
+                | F::DeltaVm
+        )
+    }
+
     /// One step of a discretization: `(M, h, A, B, C)`.
     fn step<R: Real>(&self, a: &[Value<R>]) -> Result<Value<R>, String> {
         let i = inertia(a, 2)?;

@@ -18,6 +18,7 @@ use super::registry::{HostCall, Registry, UserFn};
 use super::value::Value;
 use crate::linalg::{Mat2, Mat3, Vec3};
 use crate::numbers::{Dual, Rational};
+use crate::algebra::Sym;
 use rug::Float;
 use std::any::Any;
 use std::cell::{Cell, RefCell};
@@ -112,6 +113,44 @@ macro_rules! cannot_derive {
     )*};
 }
 cannot_derive!(Dual<f64>, Dual<Float>, Rational);
+
+/// Exact derivatives: the derivation of the prover's tower with respect to the
+/// indeterminate bound to `var` (every value already depends on it through the
+/// indeterminate, so `let` bindings need no re-evaluation).
+impl Differentiate for Sym {
+    fn derive(
+        ev: &Evaluator<'_, Self>,
+        body: &Expr,
+        var: &str,
+        comp: Option<i64>,
+    ) -> Result<Value<Self>, EvalError> {
+        let bound = ev
+            .lookup(var)
+            .ok_or_else(|| EvalError::new(format!("d(..., {var}): unknown variable '{var}'")))?;
+        let x = match (bound, comp) {
+            (Value::Real(x), None) => x.clone(),
+            (Value::Vec3(v), Some(j)) if (1..=3).contains(&j) => v.0[(j - 1) as usize].clone(),
+            _ => {
+                return Err(EvalError::new(format!(
+                    "d(..., {var}): not a real variable or a vec3 component"
+                )))
+            }
+        };
+        let value = ev.eval(body)?;
+        let mut failure = None;
+        let out = value.map(&mut |f: &Sym| match f.derivative(&x) {
+            Ok(d) => d,
+            Err(e) => {
+                failure.get_or_insert_with(|| e.to_string());
+                f.clone()
+            }
+        });
+        match failure {
+            Some(m) => Err(EvalError::new(format!("d(..., {var}): {m}"))),
+            None => Ok(out),
+        }
+    }
+}
 
 #[derive(Clone)]
 struct Bind<T> {

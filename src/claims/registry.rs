@@ -11,6 +11,7 @@ use super::ast::Binding;
 use super::backend::Num;
 use super::builtins::Builtin;
 use super::value::Value;
+use crate::algebra::Sym;
 use crate::numbers::{Dual, Rational, Real};
 use rug::Float;
 use std::collections::BTreeMap;
@@ -29,6 +30,8 @@ pub trait ExtFunction: Send + Sync {
     fn call_dual_mpfr(&self, args: &[Value<Dual<Float>>]) -> Result<Value<Dual<Float>>, String>;
     /// On exact rationals.
     fn call_exact(&self, args: &[Value<Rational>]) -> Result<Value<Rational>, String>;
+    /// On exact symbolic values (the prover's backend).
+    fn call_sym(&self, args: &[Value<Sym>]) -> Result<Value<Sym>, String>;
 }
 
 /// A function written once, generically over the backends.
@@ -59,6 +62,9 @@ impl<G: GenericFunction> ExtFunction for G {
     fn call_exact(&self, a: &[Value<Rational>]) -> Result<Value<Rational>, String> {
         self.call_algebraic(a)
     }
+    fn call_sym(&self, a: &[Value<Sym>]) -> Result<Value<Sym>, String> {
+        self.call(a)
+    }
 }
 
 /// How a backend calls a registered function: it picks its method of [`ExtFunction`].
@@ -83,6 +89,7 @@ host_call!(
     Dual<f64> => call_dual_f64,
     Dual<Float> => call_dual_mpfr,
     Rational => call_exact,
+    Sym => call_sym,
 );
 
 /// A registered function.

@@ -148,6 +148,22 @@ pub trait Real: Scalar + PartialOrd {
     /// assert!(!<rug::Float as Real>::FIXED);
     /// ```
     const FIXED: bool;
+    /// Does this type evaluate the elliptic functions by rules of its own instead of the
+    /// numerical algorithms of `special`?  A symbolic scalar does (it expands `sn`, `cn`,
+    /// `dn` by the addition theorems); then [`Real::sncndn_by_rule`] and
+    /// [`Real::quarter_period_by_rule`] answer, and every other function of `special`
+    /// (am, F, the inverse, complex arguments) is refused with a clear error rather than
+    /// iterated on symbols.  `false` for every numeric type.
+    const BY_RULE: bool = false;
+    /// `(sn, cn, dn)(u, k)` by the type's own rule (only called when [`Real::BY_RULE`]).
+    fn sncndn_by_rule(_u: &Self, _k: &Self) -> Result<(Self, Self, Self), String> {
+        Err("sn, cn, dn have no rule for this type".into())
+    }
+    /// The quarter period `K(k)` (or `K'(k)` when `complementary`) by the type's own rule
+    /// (only called when [`Real::BY_RULE`]).
+    fn quarter_period_by_rule(_k: &Self, _complementary: bool) -> Result<Self, String> {
+        Err("K has no rule for this type".into())
+    }
     /// Precision in bits (53 for `f64`).
     fn prec(&self) -> u32;
     /// The same value rounded to `bits` of precision (identity for `f64`).

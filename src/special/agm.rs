@@ -49,6 +49,9 @@ pub(crate) fn complementary<R: Real>(k: &R) -> R {
 /// assert!(ellipk(&1.0_f64).is_err());
 /// ```
 pub fn ellipk<R: Real>(k: &R) -> Result<R, SpecialError> {
+    if R::BY_RULE {
+        return R::quarter_period_by_rule(k, false).map_err(SpecialError::Rule);
+    }
     check_modulus_below_one(k)?;
     let n = k.prec();
     let kw = k.with_prec(n + GUARD);
@@ -73,6 +76,9 @@ pub fn ellipk<R: Real>(k: &R) -> Result<R, SpecialError> {
 /// assert!(ellipkp(&0.0_f64).is_err());
 /// ```
 pub fn ellipkp<R: Real>(k: &R) -> Result<R, SpecialError> {
+    if R::BY_RULE {
+        return R::quarter_period_by_rule(k, true).map_err(SpecialError::Rule);
+    }
     check_modulus_below_one(k)?;
     if k.is_zero() {
         return Err(SpecialError::Pole("K'(k) is infinite at k = 0".into()));

@@ -39,6 +39,7 @@ use crate::numbers::{ComplexScalar, Real, Scalar};
 /// assert!(e2.re.abs() < 1e-15 && e2.im.abs() < 1e-15);
 /// ```
 pub fn sncndn_complex<C: ComplexScalar>(u: &C, k: &C::R) -> Result<(C, C, C), SpecialError> {
+    super::refuse_by_rule::<C::R>("sn, cn, dn of a complex argument")?;
     check_modulus_below_one(k)?;
     let (x, y) = (u.re(), u.im());
     check_finite(&x, "Re u")?;

@@ -402,6 +402,9 @@ pub(crate) fn reduced<R: Real>(
 /// assert!(sncndn_many(&[0.1, f64::NAN], &0.8).unwrap_err().to_string().contains("u[1]"));
 /// ```
 pub fn sncndn_many<R: Real>(us: &[R], k: &R) -> Result<Vec<(R, R, R)>, SpecialError> {
+    if R::BY_RULE {
+        return us.iter().map(|u| sncndn(u, k)).collect();
+    }
     check_modulus(k)?;
     let name = |i: usize| format!("u[{i}]");
     if let Some(i) = us.iter().position(|u| !u.is_finite()) {
@@ -475,6 +478,9 @@ pub fn sncndn_many<R: Real>(us: &[R], k: &R) -> Result<Vec<(R, R, R)>, SpecialEr
 /// assert!(sncndn(&0.7_f64, &-0.5).is_err());
 /// ```
 pub fn sncndn<R: Real>(u: &R, k: &R) -> Result<(R, R, R), SpecialError> {
+    if R::BY_RULE {
+        return R::sncndn_by_rule(u, k).map_err(SpecialError::Rule);
+    }
     check_modulus(k)?;
     check_finite(u, "u")?;
     let n = u.prec().max(k.prec());
@@ -500,6 +506,7 @@ pub fn sncndn<R: Real>(u: &R, k: &R) -> Result<(R, R, R), SpecialError> {
 /// assert!((dn * dn - 0.5 * sn * sn - 1.0).abs() < 1e-15);
 /// ```
 pub fn sncndn_m<R: Real>(u: &R, m: &R) -> Result<(R, R, R), SpecialError> {
+    super::refuse_by_rule::<R>("sn, cn, dn of a parameter m")?;
     if !m.is_finite() {
         return Err(SpecialError::ModulusOutOfRange(format!(
             "parameter m = {} is not finite",
@@ -532,6 +539,7 @@ pub fn sncndn_m<R: Real>(u: &R, m: &R) -> Result<(R, R, R), SpecialError> {
 /// assert!((am(&(3.0 * kk), &k).unwrap() - 1.5 * std::f64::consts::PI).abs() < 1e-14);
 /// ```
 pub fn am<R: Real>(u: &R, k: &R) -> Result<R, SpecialError> {
+    super::refuse_by_rule::<R>("am")?;
     check_modulus(k)?;
     if *k > k.one() {
         return Err(SpecialError::ModulusOutOfRange(format!(

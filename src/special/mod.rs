@@ -129,6 +129,22 @@ pub enum SpecialError {
     /// Input values that are not sn, cn, dn of one real argument.
     #[error("inconsistent input: {0}")]
     Inconsistent(String),
+    /// The scalar type evaluates elliptic functions by rules of its own
+    /// ([`Real::BY_RULE`]), and the rule failed or this function has none.
+    #[error("{0}")]
+    Rule(String),
+}
+
+/// Refuses a function without a rule for a type that evaluates by rules
+/// ([`Real::BY_RULE`]): such a type must never run the numerical iterations.
+#[inline]
+pub(crate) fn refuse_by_rule<R: Real>(what: &str) -> Result<(), SpecialError> {
+    if R::BY_RULE {
+        return Err(SpecialError::Rule(format!(
+            "{what} is not algebraic: no exact rule for it"
+        )));
+    }
+    Ok(())
 }
 
 /// Checks that the modulus `k` is finite and `k ≥ 0` (the Jacobi functions of a real
