@@ -24,6 +24,7 @@
 use super::flint::Poly;
 use super::ring::Ring;
 use super::sym::{Sym, Val};
+
 use std::collections::HashMap;
 use std::fmt::Write;
 use std::sync::Arc;
@@ -121,18 +122,27 @@ impl Emitter<'_> {
 impl Ring {
     /// The certificate of `lhs = rhs` (see the module doc), or `None` when the ring does
     /// not record derivations.
-    pub fn certificate(&self, lhs: &Sym, rhs: &Sym, title: &str) -> Option<String> {
-        let (ln, rn) = (lhs.node.as_ref()?, rhs.node.as_ref()?);
+    pub fn certificate(&self, pairs: &[(Sym, Sym)], title: &str) -> Option<String> {
+        let mut nodes = Vec::new();
+        for (l, r) in pairs {
+            nodes.push((l.node.clone()?, r.node.clone()?));
+        }
         let names = self.inner.names();
         let mut out = String::new();
         let _ = writeln!(out, "# eulertop certificate 1");
         let _ = writeln!(out, "# claim: {}", title.replace('\n', " "));
         out.push_str(&self.symbol_lines(&names));
         let mut em = Emitter { names: &names, ids: HashMap::new(), out: String::new() };
-        let a = em.visit(ln);
-        let b = em.visit(rn);
+        let mut claims = Vec::new();
+        for (ln, rn) in &nodes {
+            let a = em.visit(ln);
+            let b = em.visit(rn);
+            claims.push((a, b));
+        }
         out.push_str(&em.out);
-        let _ = writeln!(out, "claim t{a} = t{b}");
+        for (a, b) in claims {
+            let _ = writeln!(out, "claim t{a} = t{b}");
+        }
         for a in self.assumptions() {
             let _ = writeln!(out, "# assumption ({:?}): {}", a.origin, a.statement);
         }

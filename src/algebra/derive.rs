@@ -183,7 +183,8 @@ impl Ring {
     /// The symbol `Z = E(am b, k) − k'² b` of a base (values from the k-derivative of sn
     /// by automatic differentiation).
     fn zeta_symbol(&self, table: usize, base: usize) -> AlgResult<Val> {
-        if let Some(j) = self.state().tables[table].bases[base].z_var {
+        let existing = self.state().tables[table].bases[base].z_var;
+        if let Some(j) = existing {
             return Ok(self.var_sym(j).val);
         }
         let (k, arg) = {

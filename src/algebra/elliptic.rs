@@ -86,12 +86,12 @@ fn pad(v: &mut Vec<Rational>, n: usize) {
 /// Solves `v = Σ nⱼ bⱼ` over ℚ (the bases are independent); `None` outside their span.
 fn solve(bases: &[Vec<Rational>], v: &[Rational]) -> Option<Vec<Rational>> {
     let m = bases.len();
-    let n = v.len();
+    let n = bases.iter().map(|b| b.len()).max().unwrap_or(0).max(v.len());
     // rows: directions; columns: bases, then v
     let mut a: Vec<Vec<Rational>> = (0..n)
         .map(|i| {
             let mut row: Vec<Rational> = bases.iter().map(|b| b.get(i).cloned().unwrap_or_default()).collect();
-            row.push(v[i].clone());
+            row.push(v.get(i).cloned().unwrap_or_default());
             row
         })
         .collect();
@@ -464,7 +464,8 @@ impl Ring {
         let (sv, cv, dv) = self.numeric_sncndn(&arg.sh, &k.sh)?;
         let nb: usize = self.state().tables.iter().map(|tb| tb.bases.len()).sum::<usize>() + 1;
         let argtext = Sym::from_val(self, arg.clone(), None).render_short(60);
-        let j = inner.add_var(format!("sn_{nb}"), VarKind::Sn { table: t, base: self.state().tables[t].bases.len() }, sv)?;
+        let base = self.state().tables[t].bases.len();
+        let j = inner.add_var(format!("sn_{nb}"), VarKind::Sn { table: t, base }, sv)?;
         let s = self.var_sym(j);
         let one = self.integer(1);
         let k2 = Sym::from_val(self, self.state().tables[t].k2.clone(), None);
@@ -757,5 +758,8 @@ mod tests {
         let b1 = vec![vec![q(1, 1), q(0, 1)]];
         assert!(solve(&b1, &[q(0, 1), q(1, 1)]).is_none());
         assert_eq!(solve(&b1, &[q(3, 1), q(0, 1)]).unwrap(), vec![q(3, 1)]);
+        // a shorter right side means zeros in the directions it does not mention
+        let b2 = vec![vec![q(1, 1), q(1, 1)], vec![q(0, 1), q(1, 1)]];
+        assert_eq!(solve(&b2, &[q(1, 1)]).unwrap(), vec![q(1, 1), q(-1, 1)]);
     }
 }

@@ -68,6 +68,6 @@ mod sym;
 
 pub use elliptic::BaseHint;
 pub use error::{AlgResult, AlgebraError};
-pub use proof::{prove_identity, Outcome, Proof};
+pub use proof::{prove_components, prove_identity, Outcome, Proof};
 pub use ring::{Assumption, Origin, Ring, RingOptions};
 pub use sym::Sym;

@@ -73,13 +73,26 @@ impl Ring {
     /// The zero test of `lhs − rhs` on this ring (one evaluation; `ms` is the time of
     /// the test itself).
     pub fn prove(&self, lhs: &Sym, rhs: &Sym) -> Proof {
+        self.prove_all(&[(lhs.clone(), rhs.clone())])
+    }
+
+    /// The zero test of every component `lhsᵢ − rhsᵢ` (proved when all are 0).
+    pub fn prove_all(&self, pairs: &[(Sym, Sym)]) -> Proof {
         let t0 = Instant::now();
-        let outcome = match self.zero_test(lhs, rhs) {
-            Ok(o) => o,
-            Err(e) => Outcome::NotProved(e.to_string()),
-        };
+        let mut outcome = Outcome::Proved;
+        for (i, (l, r)) in pairs.iter().enumerate() {
+            let o = self.zero_test(l, r).unwrap_or_else(|e| Outcome::NotProved(e.to_string()));
+            if let Outcome::NotProved(why) = o {
+                let which = if pairs.len() > 1 { format!("component {}: ", i + 1) } else { String::new() };
+                outcome = Outcome::NotProved(format!("{which}{why}"));
+                break;
+            }
+        }
+        if pairs.is_empty() {
+            outcome = Outcome::NotProved("nothing to prove".into());
+        }
         let certificate = match outcome {
-            Outcome::Proved => self.certificate(lhs, rhs, "lhs = rhs"),
+            Outcome::Proved => self.certificate(pairs, "lhs = rhs"),
             Outcome::NotProved(_) => None,
         };
         Proof {
@@ -88,7 +101,7 @@ impl Ring {
             relations: self.relations(),
             assumptions: self.assumptions(),
             notes: self.notes(),
-            terms: lhs.terms() + rhs.terms(),
+            terms: pairs.iter().map(|(l, r)| l.terms() + r.terms()).sum(),
             ms: t0.elapsed().as_secs_f64() * 1e3,
             attempts: 1,
             expanded_named: self.options().expand_named,
@@ -154,6 +167,15 @@ pub fn prove_identity<F>(opts: RingOptions, title: &str, build: F) -> Proof
 where
     F: Fn(&Ring) -> AlgResult<(Sym, Sym)>,
 {
+    prove_components(opts, title, |r| Ok(vec![build(r)?]))
+}
+
+/// [`prove_identity`] for several components (a vector or matrix identity): proved
+/// when every component's normal form is 0.
+pub fn prove_components<F>(opts: RingOptions, title: &str, build: F) -> Proof
+where
+    F: Fn(&Ring) -> AlgResult<Vec<(Sym, Sym)>>,
+{
     let t0 = Instant::now();
     let mut opts = opts;
     let mut attempts = 0;
@@ -170,11 +192,11 @@ where
             }
             return Proof::failed("the elliptic base arguments could not be settled".into(), ms(&t0), attempts);
         }
-        let (lhs, rhs) = match built {
+        let pairs = match built {
             Ok(p) => p,
             Err(e) => return Proof::failed(e.to_string(), ms(&t0), attempts),
         };
-        let mut proof = ring.prove(&lhs, &rhs);
+        let mut proof = ring.prove_all(&pairs);
         let named = ring.state().vars.iter().any(|v| matches!(v.kind, VarKind::Named(_)));
         if !proof.is_proved() && named && !opts.expand_named && attempts < 6 {
             opts.expand_named = true;

@@ -173,39 +173,51 @@ impl Ring {
         (f, p)
     }
 
-    /// Adjoins a root for one coordinate of a residual vector (see the module doc).
-    fn adjoin_for(&self, residual: &Bits) -> AlgResult<()> {
-        let ones = residual.ones();
-        let pick = {
+    /// Adjoins roots for factors of the class `t` (irreducible polynomials first, then
+    /// primes, then −1), each independent of the roots so far, until `t` is in their
+    /// span (see the module doc).
+    fn adjoin_factors(&self, t: &Bits) -> AlgResult<()> {
+        let mut order = t.ones();
+        {
             let st = self.state();
-            let rank = |i: &&usize| match st.basis.factors[**i] {
+            order.sort_by_key(|&i| match st.basis.factors[i] {
                 Factor::Poly(_) => 0,
                 Factor::Prime(_) => 1,
                 Factor::MinusOne => 2,
-            };
-            *ones.iter().min_by_key(rank).ok_or_else(|| AlgebraError::Internal("empty residual".into()))?
-        };
-        let (factor, p) = self.factor_poly(pick);
-        let mut v = Bits::default();
-        v.flip(pick);
-        let mut radicand = p.clone();
-        if matches!(factor, Factor::Poly(_)) {
-            let vals = self.inner.var_values();
-            let sv = Shadow::leaf(self.inner.eval_poly(&p, &vals));
-            let prec = self.precision();
-            let negative = (0..self.points()).all(|i| sv.real_sign(i, prec) == Some(-1));
-            if negative {
-                let mut flipped = v.clone();
-                let m1 = self.state().basis.index_of(Factor::MinusOne);
-                flipped.flip(m1);
-                if !self.state().basis.reduce(&flipped).0.is_zero() {
-                    v = flipped;
-                    radicand = p.neg();
-                }
+            });
+        }
+        for pick in order {
+            if self.state().basis.reduce(t).0.is_zero() {
+                break;
+            }
+            let (factor, p) = self.factor_poly(pick);
+            let mut v = Bits::default();
+            v.flip(pick);
+            let (radicand, v) = if matches!(factor, Factor::Poly(_)) { self.prefer_positive(p, v) } else { (p, v) };
+            if self.state().basis.reduce(&v).0.is_zero() {
+                continue;
+            }
+            self.new_field_root(radicand, v, None, matches!(factor, Factor::MinusOne))?;
+        }
+        Ok(())
+    }
+
+    /// `(−p, v + [−1])` instead of `(p, v)` when `p < 0` at every domain point and the
+    /// flipped vector is still independent of the roots (so the new root is real).
+    fn prefer_positive(&self, p: Poly, v: Bits) -> (Poly, Bits) {
+        let vals = self.inner.var_values();
+        let sv = Shadow::leaf(self.inner.eval_poly(&p, &vals));
+        let prec = self.precision();
+        let negative = (0..self.points()).all(|i| sv.real_sign(i, prec) == Some(-1));
+        if negative {
+            let mut flipped = v.clone();
+            let m1 = self.state().basis.index_of(Factor::MinusOne);
+            flipped.flip(m1);
+            if !self.state().basis.reduce(&flipped).0.is_zero() {
+                return (p.neg(), flipped);
             }
         }
-        let is_i = matches!(factor, Factor::MinusOne);
-        self.new_field_root(radicand, v, None, is_i).map(|_| ())
+        (p, v)
     }
 
     /// Adjoins a root of a radicand in the field with GF(2) vector `v` and optional
@@ -240,29 +252,32 @@ impl Ring {
     fn field_sqrt_poly(&self, nd: &Poly, adjoin: bool, special: Option<(&str, &str)>) -> AlgResult<Option<(Val, Option<usize>)>> {
         let class = self.class_of(nd)?;
         let mut fresh = None;
-        loop {
-            let (res, combo) = self.state().basis.reduce(&class.t);
-            if res.is_zero() {
-                return self.assemble(nd, &combo).map(|v| Some((v, fresh)));
-            }
+        if !self.state().basis.reduce(&class.t).0.is_zero() {
             if !adjoin {
                 return Ok(None);
             }
             match special {
                 Some((name, note)) => {
+                    // one root for the whole square-free part, so its values can be set
                     let mut rad = Poly::from_i64(&self.inner.ctx, 1);
-                    for i in res.ones() {
+                    for i in class.t.ones() {
                         rad = rad.mul(&self.factor_poly(i).1);
                     }
-                    let i = self.new_field_root(rad, res.clone(), None, false)?;
+                    let (rad, v) = self.prefer_positive(rad, class.t.clone());
+                    let i = self.new_field_root(rad, v, None, false)?;
                     let mut st = self.state();
                     st.roots[i].note = note.to_string();
                     st.roots[i].name = name.to_string();
                     fresh = Some(i);
                 }
-                None => self.adjoin_for(&res)?,
+                None => self.adjoin_factors(&class.t)?,
             }
         }
+        let (res, combo) = self.state().basis.reduce(&class.t);
+        if !res.is_zero() {
+            return Err(AlgebraError::Internal("a square root left its class uncovered".into()));
+        }
+        self.assemble(nd, &combo).map(|v| Some((v, fresh)))
     }
 
     /// `q · Π_{combo} rᵢ` with `q = √(nd / Π aᵢ)` exact in the field.

@@ -1,0 +1,101 @@
+//! The paper's identities proved through the algebra API (exact normal form 0), and
+//! deliberately wrong variants that must never be proved.
+
+mod algebra_identities;
+
+use algebra_identities::{addition, cayley, g0g1, g1_alphabeta, mm, sol_et, Regime, Variant};
+use eulertop::algebra::{prove_components, Proof, RingOptions};
+
+fn opts() -> RingOptions {
+    RingOptions { certificate: true, ..Default::default() }
+}
+
+fn assert_proved(p: &Proof, what: &str) {
+    assert!(p.is_proved(), "{what}: {:?}", p.outcome);
+    let cert = p.certificate.as_ref().expect("a certificate");
+    assert!(cert.contains("claim t"), "{what}: certificate without a claim");
+}
+
+#[test]
+fn dlmf_addition_formulae() {
+    for f in 0..3 {
+        let p = prove_components(opts(), "DLMF 22.8", |r| addition(r, f, Variant::True));
+        assert_proved(&p, &format!("addition formula {f}"));
+    }
+}
+
+#[test]
+fn wrong_addition_formulae_are_never_proved() {
+    for f in 0..3 {
+        for v in [Variant::SignFlipped, Variant::Scaled] {
+            let p = prove_components(opts(), "wrong", |r| addition(r, f, v));
+            assert!(!p.is_proved(), "{f} {v:?}");
+        }
+    }
+    let p = prove_components(opts(), "k for k²", |r| addition(r, 2, Variant::KForK2));
+    assert!(!p.is_proved());
+}
+
+#[test]
+fn g0g1_in_both_regimes() {
+    for regime in [Regime::Upper, Regime::Lower] {
+        let p = prove_components(opts(), "(G0G1)", |r| g0g1(r, regime, Variant::True, false));
+        assert_proved(&p, &format!("(G0G1) {regime:?}"));
+        assert!(!p.assumptions.is_empty(), "the roots' branches are assumptions");
+    }
+}
+
+#[test]
+fn g0g1_with_named_k_and_nu_needs_their_definitions() {
+    let p = prove_components(opts(), "(G0G1) named", |r| g0g1(r, Regime::Upper, Variant::True, true));
+    assert_proved(&p, "(G0G1) named");
+    assert!(p.expanded_named, "k and ν free cannot prove it");
+}
+
+#[test]
+fn wrong_g0g1_variants_are_never_proved() {
+    for v in [Variant::SignFlipped, Variant::KForK2, Variant::MissingSquare, Variant::Scaled] {
+        for regime in [Regime::Upper, Regime::Lower] {
+            let p = prove_components(opts(), "wrong (G0G1)", |r| g0g1(r, regime, v, false));
+            assert!(!p.is_proved(), "{v:?} {regime:?}");
+        }
+    }
+}
+
+#[test]
+fn g1_alpha_beta_in_both_regimes() {
+    for regime in [Regime::Upper, Regime::Lower] {
+        let p = prove_components(opts(), "(MV alphabeta)", |r| g1_alphabeta(r, regime));
+        assert_proved(&p, &format!("G1 = k²ν²(1 + α sn² − β sn⁴) {regime:?}"));
+    }
+}
+
+#[test]
+fn mm_differences_and_sums_from_the_addition_formulae() {
+    for regime in [Regime::Upper, Regime::Lower] {
+        let p = prove_components(opts(), "(M-M 1-3)", |r| mm(r, regime, false));
+        assert_proved(&p, &format!("(M-M) {regime:?}"));
+    }
+}
+
+#[test]
+fn mm_from_phi_and_phi_hat_refines_the_base_arguments() {
+    let p = prove_components(opts(), "(M-M 1-3) from phi, phih", |r| mm(r, Regime::Upper, true));
+    assert_proved(&p, "(M-M) from φ, φ̂");
+    assert!(p.attempts >= 2);
+}
+
+#[test]
+fn the_solution_solves_the_euler_top() {
+    for regime in [Regime::Upper, Regime::Lower] {
+        let p = prove_components(opts(), "(sol) solves (ET)", |r| sol_et(r, regime));
+        assert_proved(&p, &format!("(sol) {regime:?}"));
+    }
+}
+
+#[test]
+fn lemma_2_cayley_form() {
+    let p = prove_components(opts(), "Lemma 2", cayley);
+    assert_proved(&p, "Lemma 2");
+    assert!(p.assumptions.iter().any(|a| a.statement.starts_with("sqrt(")), "{:?}", p.assumptions);
+}
