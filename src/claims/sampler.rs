@@ -98,6 +98,8 @@ pub enum Stream {
     Redraws,
     /// The Newton starts of an existence claim.
     Starts,
+    /// The domain points at which the prover's symbols carry numeric values.
+    Proof,
 }
 
 impl Stream {
@@ -108,6 +110,7 @@ impl Stream {
             Stream::Exact => 1,
             Stream::Redraws => 2,
             Stream::Starts => 3,
+            Stream::Proof => 4,
         }
     }
 }
@@ -147,6 +150,11 @@ impl<'c> Sampler<'c> {
             wheres,
             stats: DrawStats::default(),
         })
+    }
+
+    /// The sampled variables in draw order, with their defining expressions.
+    pub fn variables(&self) -> &[(String, &'c PExpr)] {
+        &self.vars
     }
 
     /// Draws one point satisfying every constraint.

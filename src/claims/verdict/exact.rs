@@ -109,13 +109,7 @@ pub fn refine(
         (true, None) => "exactly 0, but a non-uniform primitive (normal) was sampled: no Schwartz–Zippel bound".into(),
         (false, _) => "exact evaluation found lhs ≠ rhs".into(),
     });
-    if pts.all_zero && set_size.is_some() && ev.verdict == Verdict::Holds {
-        ev.verdict = Verdict::Proved;
-        ev.reason = format!(
-            "exactly zero at {n} rational points (Schwartz–Zippel bound {:.3e}) and holds numerically",
-            overall.unwrap_or(1.0)
-        );
-    } else if pts.all_zero && ev.verdict == Verdict::Refuted {
+    if pts.all_zero && ev.verdict == Verdict::Refuted {
         ev.verdict = Verdict::Inconclusive;
         ev.reason =
             "exact evaluation is zero but the float ladder refutes: engine inconsistency".into();

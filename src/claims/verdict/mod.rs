@@ -17,11 +17,13 @@ pub mod independence;
 pub mod ladder;
 pub mod negation;
 pub mod result;
+pub mod symbolic;
 
 pub use crate::claims::kind::Verdict;
 pub use result::{
     Cause, ClaimResult, Counterexample, Evidence, ExactInfo, FailedSample, Failure, Named, Rung,
 };
+pub use symbolic::{ProofInfo, ProofMethod};
 
 use crate::claims::catalogue::{Body, Catalogue, Claim};
 use context::Ctx;
@@ -35,7 +37,8 @@ pub const DEFAULT_BITS: [u32; 5] = [53, 128, 256, 512, 1024];
 pub struct Options {
     /// The precision ladder (53 = f64; others MPFR).
     pub bits: Vec<u32>,
-    /// Run exact evaluations of `exact = true` claims.
+    /// Exact work: symbolic proofs of identities, and the rational points of
+    /// `exact = true` claims.
     pub exact: bool,
 }
 
@@ -128,10 +131,14 @@ fn judge(ctx: Ctx<'_>, opts: &Options) -> Result<Evidence, Failure> {
         Body::Definition(_) => Ok(Evidence::new(Verdict::Defined, "definition: no verdict")),
         Body::Identity { lhs, rhs } => {
             let ladder = identity::ladder(ctx, lhs, rhs, bits)?;
-            match (ctx.claim.exact, opts.exact) {
-                (Some(spec), true) => exact::refine(ctx, lhs, rhs, spec, ladder),
-                _ => Ok(ladder),
+            let mut ev = match (ctx.claim.exact, opts.exact) {
+                (Some(spec), true) => exact::refine(ctx, lhs, rhs, spec, ladder)?,
+                _ => ladder,
+            };
+            if opts.exact {
+                symbolic::judge(ctx, lhs, rhs, &mut ev);
             }
+            Ok(ev)
         }
         Body::Independence { expr, wrt, redraws } => {
             independence::run(ctx, expr, wrt, *redraws, bits)

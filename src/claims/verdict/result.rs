@@ -2,6 +2,7 @@
 //! the [`Evidence`] each kind returns, and the typed [`Failure`] of a kind that could not
 //! reach a verdict.
 
+use super::symbolic::ProofInfo;
 use crate::claims::catalogue::{Body, Claim};
 use crate::claims::kind::{Form, Kind, Verdict};
 use crate::claims::latex::{binding_to_latex, to_latex};
@@ -145,6 +146,8 @@ pub struct Evidence {
     pub counterexample: Option<Counterexample>,
     /// Exact evaluation.
     pub exact: Option<ExactInfo>,
+    /// The symbolic proof attempt (identities).
+    pub proof: Option<ProofInfo>,
 }
 
 impl Evidence {
@@ -159,6 +162,7 @@ impl Evidence {
             failures: Vec::new(),
             counterexample: None,
             exact: None,
+            proof: None,
         }
     }
 }
@@ -269,6 +273,8 @@ pub struct ClaimResult {
     pub counterexample: Option<Counterexample>,
     /// Exact evaluation evidence.
     pub exact: Option<ExactInfo>,
+    /// The symbolic proof, or why there is none.
+    pub proof: ProofInfo,
     /// Catalogue note.
     pub note: Option<String>,
     /// Why this verdict, in one line.
@@ -303,9 +309,21 @@ impl ClaimResult {
             failures: ev.failures,
             counterexample: ev.counterexample,
             exact: ev.exact,
+            proof: ev
+                .proof
+                .unwrap_or_else(|| ProofInfo::none(not_attempted(claim.kind))),
             note: claim.note.clone(),
             reason: ev.reason,
         }
+    }
+}
+
+/// Why a claim of this kind has no symbolic proof attempt.
+fn not_attempted(kind: Kind) -> &'static str {
+    match kind {
+        Kind::Definition => "a definition",
+        Kind::Identity => "not attempted",
+        _ => "only identities are proved symbolically",
     }
 }
 

@@ -1,0 +1,417 @@
+//! Symbolic proofs of identities: the claim's formulas evaluated exactly in the prover's
+//! tower ([`crate::algebra`]), and `lhs − rhs` reduced to its normal form.  A claim is
+//! `proved` when that normal form is 0, and only then.
+//!
+//! **Variables.**  A sampled variable whose definition draws a continuous primitive
+//! (`uniform`, `randint`, `normal`) becomes an indeterminate (one per component of a
+//! vec3): an identity proved for independent indeterminates holds in particular on the
+//! sampled domain.  A variable drawn only by `sign()` or `choice(…)` takes finitely many
+//! values: the proof enumerates them as cases and every case must be proved.  A variable
+//! without primitives is evaluated symbolically from the earlier ones.
+//!
+//! **Decisions.**  Comparisons, `abs`, the sign of a square root and the choice of a
+//! regime are decided at domain points of the claim (the prover's shadows) and recorded
+//! as assumptions.  A claim whose own formulas compare, take `abs`, `sign`, `min`, `max`
+//! or branch with `if` states a condition, which a normal form cannot prove: it is not
+//! attempted.
+//!
+//! ```
+//! use eulertop::bindings::euler_top::registry;
+//! use eulertop::claims::catalogue::load_sources;
+//! use eulertop::claims::verdict::{run_claim, Options, ProofMethod, Verdict};
+//! let toml = r#"
+//! [[claim]]
+//! id = "double-angle"
+//! labels = []
+//! location = "a doc example"
+//! printed = 'sn(2u)'
+//! kind = "identity"
+//! expect = "proved"
+//! vars = [["u", "uniform(-1, 1)"], ["k", "uniform(0.1, 0.9)"]]
+//! lhs = "sn(2*u, k)"
+//! rhs = "2*sn(u, k)*cn(u, k)*dn(u, k) / (1 - k^2*sn(u, k)^4)"
+//! "#;
+//! let cat = load_sources(&[("doc.toml".into(), toml.into())], registry().unwrap()).unwrap();
+//! let r = run_claim(&cat, &cat.claims[0], &Options::default());
+//! assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+//! assert_eq!(r.proof.method, ProofMethod::Symbolic);
+//! ```
+
+use super::context::{eval, Ctx};
+use super::result::Evidence;
+use crate::algebra::{
+    prove_components, AlgResult, AlgebraError, Outcome, Proof, Ring, RingOptions, Sym,
+};
+use crate::claims::ast::{BinOp, Expr, ExprKind};
+use crate::claims::builtins::Primitive;
+use crate::claims::catalogue::PExpr;
+use crate::claims::eval::Evaluator;
+use crate::claims::kind::Verdict;
+use crate::claims::sampler::{Point, Stream};
+use crate::claims::value::{Layout, Value};
+use crate::linalg::Vec3;
+use crate::numbers::Scalar;
+use rug::Complex;
+use serde::Serialize;
+use std::collections::BTreeMap;
+use std::time::Instant;
+
+/// Domain points per case at which the symbols carry numeric values.
+const POINTS: usize = 3;
+/// Draws spent looking for points of every case.
+const MAX_DRAWS: usize = 256;
+
+/// How a claim was proved.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ProofMethod {
+    /// The symbolic normal form of lhs − rhs is 0.
+    Symbolic,
+    /// Not proved (the reason says why).
+    None,
+}
+
+/// The evidence of a proof attempt, as reported.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ProofInfo {
+    /// Proved symbolically, or not.
+    pub method: ProofMethod,
+    /// Why not, when not proved.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
+    /// The symbols: "name: what it stands for".
+    pub symbols: Vec<String>,
+    /// The relations of the square-root symbols.
+    pub relations: Vec<String>,
+    /// The decisions taken from the domain.
+    pub assumptions: Vec<String>,
+    /// The cases of the finitely-valued variables ("sa = 1, sc = -1"), if any.
+    pub cases: Vec<String>,
+    /// Terms of the numerators of both sides (the size of the identity).
+    pub terms: usize,
+    /// Wall time in milliseconds.
+    pub ms: f64,
+    /// The certificate (SymPy-recheckable), when requested.
+    #[serde(skip)]
+    pub certificate: Option<String>,
+}
+
+impl ProofInfo {
+    /// No proof, for `reason`.
+    pub fn none(reason: impl Into<String>) -> ProofInfo {
+        ProofInfo {
+            method: ProofMethod::None,
+            reason: Some(reason.into()),
+            symbols: Vec::new(),
+            relations: Vec::new(),
+            assumptions: Vec::new(),
+            cases: Vec::new(),
+            terms: 0,
+            ms: 0.0,
+            certificate: None,
+        }
+    }
+
+    /// Was the claim proved?
+    pub fn is_proved(&self) -> bool {
+        self.method == ProofMethod::Symbolic
+    }
+}
+
+/// How a sampled variable enters the proof.
+#[derive(Clone, Debug, PartialEq)]
+enum Role {
+    /// An indeterminate (per component).
+    Free,
+    /// Finitely many values, enumerated as cases.
+    Case,
+    /// Evaluated from the earlier variables.
+    Computed,
+}
+
+fn role_of(p: &PExpr) -> Role {
+    let (mut finite, mut continuous) = (false, false);
+    p.expr.walk(&mut |e| {
+        if let ExprKind::Call(name, _) = &e.kind {
+            match Primitive::from_name(name) {
+                Some(Primitive::Sign | Primitive::Choice) => finite = true,
+                Some(_) => continuous = true,
+                None => {}
+            }
+        }
+    });
+    match (continuous, finite) {
+        (true, _) => Role::Free,
+        (false, true) => Role::Case,
+        _ => Role::Computed,
+    }
+}
+
+/// Why the claim's own formulas state a condition rather than an identity, if they do.
+fn states_condition(ctx: Ctx<'_>, sides: &[&PExpr]) -> Option<String> {
+    let mut found: Option<String> = None;
+    let mut look = |e: &Expr| {
+        e.walk(&mut |x| {
+            let what = match &x.kind {
+                ExprKind::If(..) => Some("if".to_string()),
+                ExprKind::Binary(op, ..) if is_comparison(*op) => Some(op.symbol().to_string()),
+                ExprKind::Call(n, _)
+                    if ["abs", "sign", "min", "max", "floor"].contains(&n.as_str()) =>
+                {
+                    Some(n.clone())
+                }
+                _ => None,
+            };
+            if found.is_none() {
+                found = what;
+            }
+        })
+    };
+    for s in sides {
+        look(&s.expr);
+    }
+    for b in &ctx.claim.lets {
+        look(&b.body);
+    }
+    found.map(|w| {
+        format!("the claim's own formulas use '{w}': it states a condition, which a normal form does not prove")
+    })
+}
+
+fn is_comparison(op: BinOp) -> bool {
+    matches!(
+        op,
+        BinOp::Lt | BinOp::Gt | BinOp::Le | BinOp::Ge | BinOp::Eq | BinOp::Ne
+    )
+}
+
+/// The points of each case, keyed by the case values.
+type Cases = BTreeMap<Vec<String>, Vec<Point>>;
+
+/// Draws points until every case has [`POINTS`] of them (or the draws run out).
+fn case_points(ctx: Ctx<'_>, roles: &[(String, Role)]) -> Result<Cases, String> {
+    let mut sampler = ctx.sampler(Stream::Proof).map_err(|c| c.to_string())?;
+    let case_vars: Vec<&String> = roles
+        .iter()
+        .filter(|(_, r)| *r == Role::Case)
+        .map(|(n, _)| n)
+        .collect();
+    let mut cases = Cases::new();
+    for _ in 0..MAX_DRAWS {
+        let p = sampler.draw()?;
+        let key: Vec<String> = case_vars
+            .iter()
+            .map(|n| {
+                let v = p
+                    .get(n)
+                    .map_or(String::new(), |v| v.render(17, Layout::Inline));
+                format!("{n} = {v}")
+            })
+            .collect();
+        let group = cases.entry(key).or_default();
+        if group.len() < POINTS {
+            group.push(p);
+        }
+        let full = cases.values().all(|g| g.len() >= POINTS);
+        if full && (case_vars.is_empty() || cases.len() >= 1 << case_vars.len().min(6)) {
+            break;
+        }
+    }
+    cases.retain(|_, g| g.len() >= POINTS);
+    Ok(cases)
+}
+
+/// The shadow values of one scalar component across the points.
+fn shadows(points: &[Point], name: &str, comp: Option<usize>) -> Vec<Complex> {
+    points
+        .iter()
+        .map(|p| {
+            let x = match (p.get(name), comp) {
+                (Some(Value::Real(x)), None) => *x,
+                (Some(Value::Vec3(v)), Some(j)) => v.0[j],
+                _ => f64::NAN,
+            };
+            Complex::with_val(256, x)
+        })
+        .collect()
+}
+
+/// Binds the sampled variables as symbols in a fresh evaluator on `ring`.
+fn bind_variables<'c>(
+    ctx: Ctx<'c>,
+    ring: &Ring,
+    roles: &[(String, Role, &PExpr)],
+    points: &[Point],
+) -> AlgResult<Evaluator<'c, Sym>> {
+    let mut ev = Evaluator::new(&ctx.cat.registry, ring.integer(0));
+    let fail = |m: String| AlgebraError::NotAlgebraic(m);
+    for (name, role, def) in roles {
+        let first = points[0].get(name).cloned();
+        let value = match (role, first) {
+            (Role::Free, Some(Value::Real(_))) => {
+                Value::Real(ring.indeterminate(name, &shadows(points, name, None))?)
+            }
+            (Role::Free, Some(Value::Vec3(_))) => {
+                let c = |j: usize| {
+                    ring.indeterminate(&format!("{name}{}", j + 1), &shadows(points, name, Some(j)))
+                };
+                Value::Vec3(Vec3::new(c(0)?, c(1)?, c(2)?))
+            }
+            (Role::Case, Some(v)) => v.map(&mut |x: &f64| {
+                let q = rug::Rational::from_f64(*x).unwrap_or_default();
+                ring.rational(&q)
+            }),
+            (Role::Computed, _) => eval(&ev, def).map_err(fail)?,
+            (_, other) => {
+                return Err(fail(format!(
+                    "variable '{name}' of type {:?} cannot be a symbol",
+                    other.map(|v| v.type_name())
+                )))
+            }
+        };
+        ev.bind(name, value);
+    }
+    for b in &ctx.claim.lets {
+        ev.bind_let(b)
+            .map_err(|e| fail(format!("let {}: {}", b.name, e.message)))?;
+    }
+    Ok(ev)
+}
+
+/// Both sides as pairs of scalar components (every component of lhs − rhs against 0).
+fn sides(ev: &Evaluator<'_, Sym>, lhs: &PExpr, rhs: &PExpr) -> AlgResult<Vec<(Sym, Sym)>> {
+    let fail = AlgebraError::NotAlgebraic;
+    let l = eval(ev, lhs).map_err(fail)?;
+    let r = eval(ev, rhs).map_err(fail)?;
+    let d = l
+        .sub(&r)
+        .map_err(|m| fail(format!("lhs and rhs have different types: {m}")))?;
+    let zero = ev.like().zero();
+    Ok(d.components()
+        .into_iter()
+        .map(|c| (c, zero.clone()))
+        .collect())
+}
+
+/// One case: the zero test of every component (the prover restarts when the elliptic
+/// bases must be refined, and expands named quantities if the first test is not 0).
+fn prove_case(
+    ctx: Ctx<'_>,
+    roles: &[(String, Role, &PExpr)],
+    points: &[Point],
+    sides_of: (&PExpr, &PExpr),
+    certificate: bool,
+) -> Proof {
+    let opts = RingOptions {
+        points: points.len(),
+        certificate,
+        ..RingOptions::default()
+    };
+    prove_components(opts, &ctx.claim.id, |ring| {
+        let ev = bind_variables(ctx, ring, roles, points)?;
+        sides(&ev, sides_of.0, sides_of.1)
+    })
+}
+
+/// Attempts a symbolic proof of `lhs = rhs` on the claim's domain.
+pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> ProofInfo {
+    let t0 = Instant::now();
+    if let Some(why) = states_condition(ctx, &[lhs, rhs]) {
+        return ProofInfo::none(why);
+    }
+    let sampler = match ctx.sampler(Stream::Proof) {
+        Ok(s) => s,
+        Err(c) => return ProofInfo::none(c.to_string()),
+    };
+    let roles: Vec<(String, Role, &PExpr)> = sampler
+        .variables()
+        .iter()
+        .map(|(n, p)| (n.clone(), role_of(p), *p))
+        .collect();
+    let plain: Vec<(String, Role)> = roles
+        .iter()
+        .map(|(n, r, _)| (n.clone(), r.clone()))
+        .collect();
+    let cases = match case_points(ctx, &plain) {
+        Ok(c) if !c.is_empty() => c,
+        Ok(_) => return ProofInfo::none("no case of the domain has enough points"),
+        Err(m) => return ProofInfo::none(m),
+    };
+    let mut info = ProofInfo::none("");
+    info.reason = None;
+    info.method = ProofMethod::Symbolic;
+    for (key, points) in &cases {
+        let p = prove_case(ctx, &roles, points, (lhs, rhs), certificate);
+        merge(&mut info, key, p);
+        if !info.is_proved() {
+            break;
+        }
+    }
+    info.ms = t0.elapsed().as_secs_f64() * 1e3;
+    info
+}
+
+/// Adds one case's proof to the record; a case that is not proved ends the proof.
+fn merge(info: &mut ProofInfo, key: &[String], p: Proof) {
+    let label = key.join(", ");
+    if let Outcome::NotProved(r) = &p.outcome {
+        info.method = ProofMethod::None;
+        info.reason = Some(if label.is_empty() {
+            r.clone()
+        } else {
+            format!("case {label}: {r}")
+        });
+    }
+    if !label.is_empty() {
+        info.cases.push(label);
+    }
+    let add = |dst: &mut Vec<String>, src: Vec<String>| {
+        for s in src {
+            if !dst.contains(&s) {
+                dst.push(s);
+            }
+        }
+    };
+    add(
+        &mut info.symbols,
+        p.symbols.iter().map(|(n, w)| format!("{n}: {w}")).collect(),
+    );
+    add(&mut info.relations, p.relations.clone());
+    add(
+        &mut info.assumptions,
+        p.assumptions.iter().map(|a| a.statement.clone()).collect(),
+    );
+    info.terms = info.terms.max(p.terms);
+    if let Some(c) = p.certificate {
+        let prev = info.certificate.take().unwrap_or_default();
+        info.certificate = Some(prev + &c);
+    }
+}
+
+/// Turns a numerical `holds` into `proved` when the symbolic proof succeeds.  A claim
+/// the ladder refutes (or cannot judge) is never passed to the prover as true.
+pub fn judge(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, ev: &mut Evidence) {
+    if ev.verdict != Verdict::Holds {
+        ev.proof = Some(ProofInfo::none(format!(
+            "not attempted: the numerical verdict is {}",
+            ev.verdict.name()
+        )));
+        return;
+    }
+    let info = prove(ctx, lhs, rhs, false);
+    if info.is_proved() {
+        ev.verdict = Verdict::Proved;
+        ev.reason = format!(
+            "the symbolic normal form of lhs − rhs is 0 ({} symbols, {} relations, {} assumptions{}); holds numerically",
+            info.symbols.len(),
+            info.relations.len(),
+            info.assumptions.len(),
+            if info.cases.is_empty() {
+                String::new()
+            } else {
+                format!(", {} cases", info.cases.len())
+            }
+        );
+    }
+    ev.proof = Some(info);
+}
