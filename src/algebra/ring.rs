@@ -127,6 +127,8 @@ pub(crate) struct State {
     pub rebase: Option<Vec<super::elliptic::BaseHint>>,
     pub dcache: std::collections::HashMap<(usize, usize), Val>,
     pub derivation_lines: Vec<String>,
+    /// Opaque function values already made: `f(args)` (rendered) → the symbol.
+    pub opaque_calls: std::collections::BTreeMap<String, Val>,
 }
 
 pub(crate) struct Inner {
@@ -183,6 +185,7 @@ impl Ring {
             rebase: None,
             dcache: std::collections::HashMap::new(),
             derivation_lines: Vec::new(),
+            opaque_calls: std::collections::BTreeMap::new(),
         };
         Ring {
             inner: Arc::new(Inner {

@@ -215,7 +215,16 @@ impl Real for Sym {
         self.not_algebraic("atan2")
     }
     fn asin(&self) -> Self {
-        self.not_algebraic("asin")
+        let r = Sym::opaque_call("asin", &[self], |z| Some(z[0].clone().asin()));
+        Sym::or_poison(&self.ring, r)
+    }
+    fn ellipf_by_rule(phi: &Self, k: &Self) -> Result<Self, String> {
+        Sym::opaque_call("F", &[phi, k], |z| {
+            let real = |c: &Complex| c.imag().is_zero().then(|| c.real().clone());
+            let f = crate::special::ellipf(&real(&z[0])?, &real(&z[1])?).ok()?;
+            Some(Complex::with_val(f.prec(), (f, 0)))
+        })
+        .map_err(|e| e.to_string())
     }
     fn sinh(&self) -> Self {
         self.not_algebraic("sinh")

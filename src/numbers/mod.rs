@@ -164,6 +164,11 @@ pub trait Real: Scalar + PartialOrd {
     fn quarter_period_by_rule(_k: &Self, _complementary: bool) -> Result<Self, String> {
         Err("K has no rule for this type".into())
     }
+    /// The incomplete elliptic integral `F(φ, k)` by the type's own rule (only called
+    /// when [`Real::BY_RULE`]).
+    fn ellipf_by_rule(_phi: &Self, _k: &Self) -> Result<Self, String> {
+        Err("F has no rule for this type".into())
+    }
     /// Precision in bits (53 for `f64`).
     fn prec(&self) -> u32;
     /// The same value rounded to `bits` of precision (identity for `f64`).

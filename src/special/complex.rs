@@ -39,7 +39,9 @@ use crate::numbers::{ComplexScalar, Real, Scalar};
 /// assert!(e2.re.abs() < 1e-15 && e2.im.abs() < 1e-15);
 /// ```
 pub fn sncndn_complex<C: ComplexScalar>(u: &C, k: &C::R) -> Result<(C, C, C), SpecialError> {
-    super::refuse_by_rule::<C::R>("sn, cn, dn of a complex argument")?;
+    if <C::R as Real>::BY_RULE {
+        return by_rule(u, k);
+    }
     check_modulus_below_one(k)?;
     let (x, y) = (u.re(), u.im());
     check_finite(&x, "Re u")?;
@@ -89,5 +91,35 @@ pub fn sncndn_complex<C: ComplexScalar>(u: &C, k: &C::R) -> Result<(C, C, C), Sp
         -(s.clone() * d.clone() * s1.clone() * d1.clone() / den.clone()),
     )?;
     let dn = out(d * c1 * d1 / den.clone(), -(k2 * s * c * s1 / den))?;
+    Ok((sn, cn, dn))
+}
+
+/// [`sncndn_complex`] for a type that evaluates by rules ([`Real::BY_RULE`]): the same
+/// imaginary transformation (A&S 16.21.1–4) on the rule's `sn, cn, dn` of `Re u` with
+/// modulus `k` and of `Im u` with modulus `k' = √(1 − k²)`; a real argument directly.
+fn by_rule<C: ComplexScalar>(u: &C, k: &C::R) -> Result<(C, C, C), SpecialError> {
+    let (x, y) = (u.re(), u.im());
+    let (s, c, d) = super::sncndn(&x, k)?;
+    if y.is_zero() {
+        let z = || x.zero();
+        return Ok((
+            C::from_parts(s, z()),
+            C::from_parts(c, z()),
+            C::from_parts(d, z()),
+        ));
+    }
+    let k2 = k.sqr();
+    let kp = (k.one() - k2.clone()).sqrt();
+    let (s1, c1, d1) = super::sncndn(&y, &kp)?;
+    let den = c1.sqr() + k2.clone() * s.sqr() * s1.sqr();
+    let sn = C::from_parts(
+        s.clone() * d1.clone() / den.clone(),
+        c.clone() * d.clone() * s1.clone() * c1.clone() / den.clone(),
+    );
+    let cn = C::from_parts(
+        c.clone() * c1.clone() / den.clone(),
+        -(s.clone() * d.clone() * s1.clone() * d1.clone() / den.clone()),
+    );
+    let dn = C::from_parts(d * c1 * d1 / den.clone(), -(k2 * s * c * s1 / den));
     Ok((sn, cn, dn))
 }

@@ -86,7 +86,9 @@ fn f_agm<R: Real>(q0: i64, r0: &R, kp: &R) -> Result<R, SpecialError> {
 /// assert!((f3 - 3.0 * kk).abs() < 1e-14);
 /// ```
 pub fn ellipf<R: Real>(phi: &R, k: &R) -> Result<R, SpecialError> {
-    super::refuse_by_rule::<R>("F")?;
+    if R::BY_RULE {
+        return R::ellipf_by_rule(phi, k).map_err(SpecialError::Rule);
+    }
     check_modulus_below_one(k)?;
     check_finite(phi, "phi")?;
     let n = phi.prec().max(k.prec());

@@ -50,6 +50,7 @@ use crate::claims::kind::Verdict;
 use crate::claims::sampler::{Point, Stream};
 use crate::claims::value::{Layout, Value};
 use crate::linalg::Vec3;
+use crate::numbers::Cplx;
 use crate::numbers::Scalar;
 use rug::Complex;
 use serde::Serialize;
@@ -178,6 +179,38 @@ fn states_condition(ctx: Ctx<'_>, sides: &[&PExpr]) -> Option<String> {
     })
 }
 
+/// Why the claim is not an analytic function of its complex variables, if it is not
+/// (then an indeterminate does not stand for every complex value).
+fn not_analytic(ctx: Ctx<'_>, sides: &[&PExpr]) -> Option<String> {
+    let complex_var = ctx.claim.vars.iter().any(|(_, p)| p.text.contains("cplx("))
+        || ctx
+            .claim
+            .domain
+            .as_ref()
+            .and_then(|d| ctx.cat.domains.get(d))
+            .is_some_and(|d| d.vars.iter().any(|(_, p)| p.text.contains("cplx(")));
+    if !complex_var {
+        return None;
+    }
+    let mut found = None;
+    let mut look = |e: &Expr| {
+        e.walk(&mut |x| {
+            if let ExprKind::Call(n, _) = &x.kind {
+                if ["re", "im", "conj", "arg"].contains(&n.as_str()) && found.is_none() {
+                    found = Some(n.clone());
+                }
+            }
+        })
+    };
+    for s in sides {
+        look(&s.expr);
+    }
+    for b in &ctx.claim.lets {
+        look(&b.body);
+    }
+    found.map(|n| format!("'{n}' of a complex variable is not analytic: an indeterminate does not stand for every complex value"))
+}
+
 fn is_comparison(op: BinOp) -> bool {
     matches!(
         op,
@@ -236,6 +269,17 @@ fn shadows(points: &[Point], name: &str, comp: Option<usize>) -> Vec<Complex> {
         .collect()
 }
 
+/// The complex shadow values of a complex variable across the points.
+fn complex_shadows(points: &[Point], name: &str) -> Vec<Complex> {
+    points
+        .iter()
+        .map(|p| match p.get(name) {
+            Some(Value::Complex(z)) => Complex::with_val(256, (z.re, z.im)),
+            _ => Complex::with_val(256, f64::NAN),
+        })
+        .collect()
+}
+
 /// Binds the sampled variables as symbols in a fresh evaluator on `ring`.
 fn bind_variables<'c>(
     ctx: Ctx<'c>,
@@ -250,6 +294,12 @@ fn bind_variables<'c>(
         let value = match (role, first) {
             (Role::Free, Some(Value::Real(_))) => {
                 Value::Real(ring.indeterminate(name, &shadows(points, name, None))?)
+            }
+            (Role::Free, Some(Value::Complex(_))) => {
+                // an analytic identity in a complex variable holds for all complex values
+                // once it holds for an indeterminate (the claim may not use re/im/conj)
+                let z = ring.indeterminate(name, &complex_shadows(points, name))?;
+                Value::Complex(Cplx::new(z, ring.integer(0)))
             }
             (Role::Free, Some(Value::Vec3(_))) => {
                 let c = |j: usize| {
@@ -317,6 +367,9 @@ fn prove_case(
 pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> ProofInfo {
     let t0 = Instant::now();
     if let Some(why) = states_condition(ctx, &[lhs, rhs]) {
+        return ProofInfo::none(why);
+    }
+    if let Some(why) = not_analytic(ctx, &[lhs, rhs]) {
         return ProofInfo::none(why);
     }
     let sampler = match ctx.sampler(Stream::Proof) {
