@@ -17,6 +17,8 @@ struct Cli {
 enum Command {
     /// Verify the claim catalogue on a precision ladder.
     Verify(eulertop::cli::verify::Args),
+    /// The symbolic proof of one identity, step by step (and its certificate).
+    Prove(eulertop::cli::prove::Args),
     /// Residual of one claim against precision, up to thousands of bits.
     Audit(eulertop::cli::audit::Args),
     /// Evaluate an expression of the catalogue language.
@@ -43,6 +45,7 @@ fn main() -> ExitCode {
     };
     let result: Result<i32, eulertop::cli::CliError> = match cli.command {
         Command::Verify(a) => eulertop::cli::verify::run(a),
+        Command::Prove(a) => eulertop::cli::prove::run(a),
         Command::Audit(a) => eulertop::cli::audit::run(a),
         Command::Eval(a) => eulertop::cli::eval::run(a),
         Command::Jacobi(a) => eulertop::cli::jacobi::run(a),

@@ -71,5 +71,6 @@ pub fn parse_list<T: std::str::FromStr>(s: &str, what: &str) -> Result<Vec<T>, C
 
 pub mod audit;
 pub mod eval;
+pub mod prove;
 pub mod report;
 pub mod verify;

@@ -86,6 +86,8 @@ pub struct ProofInfo {
     pub relations: Vec<String>,
     /// The decisions taken from the domain.
     pub assumptions: Vec<String>,
+    /// The steps for the reader: addition-theorem instances, symbols introduced.
+    pub notes: Vec<String>,
     /// The cases of the finitely-valued variables ("sa = 1, sc = -1"), if any.
     pub cases: Vec<String>,
     /// Terms of the numerators of both sides (the size of the identity).
@@ -106,6 +108,7 @@ impl ProofInfo {
             symbols: Vec::new(),
             relations: Vec::new(),
             assumptions: Vec::new(),
+            notes: Vec::new(),
             cases: Vec::new(),
             terms: 0,
             ms: 0.0,

@@ -1,0 +1,77 @@
+//! `eulertop prove ID`: the symbolic proof of one identity, as a derivation a reader can
+//! follow — the variables and how they enter, the symbols and their relations, the
+//! addition-theorem instances, the decisions taken from the domain, and the final normal
+//! form — with `--certificate FILE` a script of polynomial equalities that SymPy rechecks
+//! (`scripts/recheck-certificates.py`).
+
+use super::{stdout, write_error, CliError};
+use crate::claims::catalogue::Body;
+use crate::claims::verdict::context::Ctx;
+use crate::claims::verdict::symbolic::{prove, ProofInfo};
+use clap::Parser;
+use std::io::Write;
+
+/// Arguments of `eulertop prove`.
+#[derive(Parser, Debug)]
+pub struct Args {
+    /// The claim id (an identity).
+    pub id: String,
+    /// Catalogue directory.
+    #[arg(long, default_value = "identities")]
+    pub catalogue: String,
+    /// Write the certificate (a SymPy-recheckable script) to this file.
+    #[arg(long)]
+    pub certificate: Option<String>,
+}
+
+/// The derivation as text.
+pub fn derivation(id: &str, printed: &str, p: &ProofInfo) -> String {
+    let mut out = format!("claim {id}\n  printed: {}\n", printed.replace('\n', " "));
+    let list = |out: &mut String, title: &str, items: &[String]| {
+        if !items.is_empty() {
+            out.push_str(&format!("{title}:\n"));
+            for i in items {
+                out.push_str(&format!("  {i}\n"));
+            }
+        }
+    };
+    list(&mut out, "cases (each proved separately)", &p.cases);
+    list(&mut out, "symbols", &p.symbols);
+    list(&mut out, "relations", &p.relations);
+    list(&mut out, "steps", &p.notes);
+    list(&mut out, "assumptions (decided on the claim's domain)", &p.assumptions);
+    match &p.reason {
+        None => out.push_str(&format!(
+            "normal form of lhs - rhs: 0 (numerators of {} terms): proved\n",
+            p.terms
+        )),
+        Some(r) => out.push_str(&format!("not proved: {r}\n")),
+    }
+    out
+}
+
+/// Runs `eulertop prove`; exit status 0 if proved, 1 if not.
+pub fn run(args: Args) -> Result<i32, CliError> {
+    let cat = super::verify::load(&args.catalogue)?;
+    let claim = cat
+        .claims
+        .iter()
+        .find(|c| c.id == args.id)
+        .ok_or_else(|| CliError(format!("no claim with id '{}'", args.id)))?;
+    let Body::Identity { lhs, rhs } = &claim.body else {
+        return Err(CliError(format!(
+            "claim '{}' is a {}, and only identities are proved symbolically",
+            claim.id,
+            claim.kind.name()
+        )));
+    };
+    let p = prove(Ctx { cat: &cat, claim }, lhs, rhs, args.certificate.is_some());
+    if let (Some(path), Some(cert)) = (&args.certificate, &p.certificate) {
+        std::fs::write(path, cert).map_err(|e| CliError(format!("cannot write {path}: {e}")))?;
+    }
+    let mut out = stdout();
+    out.write_all(derivation(&claim.id, &claim.printed, &p).as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(write_error("standard output"))?;
+    Ok(i32::from(!p.is_proved()))
+}
