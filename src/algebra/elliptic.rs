@@ -5,8 +5,9 @@
 //! with rational coefficients, plus multiples of `K/2` and `iK'/2` when the quarter
 //! periods of this modulus occur; it must be an integer combination `Σ nⱼ bⱼ` of the
 //! bases.  An argument outside their rational span becomes a new base; one inside the
-//! span with non-integer coefficients (e.g. `φ/2` after `φ`) asks for a restart with a
-//! refined base table (a lattice basis of all arguments seen, by Hermite normal form).
+//! span with non-integer coefficients (e.g. `φ/2` after `φ`) gets a provisional base and
+//! asks for a restart with a refined base table (a lattice basis of all arguments seen,
+//! module [`super::lattice`]).
 //!
 //! Each base gets a transcendental `s = sn bⱼ` and roots `c`, `d` with `c² = 1 − s²`,
 //! `d² = 1 − k²s²` whose values at the points are `cn bⱼ`, `dn bⱼ` (computed by
@@ -18,7 +19,7 @@
 
 use super::certificate::{Node, Op};
 use super::error::{AlgResult, AlgebraError};
-use super::flint::{hnf_rows, Poly};
+use super::flint::Poly;
 use super::ring::{Origin, Ring, VarKind};
 use super::roots::Prescribed;
 use super::shadow::Shadow;
@@ -84,7 +85,7 @@ fn pad(v: &mut Vec<Rational>, n: usize) {
 }
 
 /// Solves `v = Σ nⱼ bⱼ` over ℚ (the bases are independent); `None` outside their span.
-fn solve(bases: &[Vec<Rational>], v: &[Rational]) -> Option<Vec<Rational>> {
+pub(crate) fn solve(bases: &[Vec<Rational>], v: &[Rational]) -> Option<Vec<Rational>> {
     let m = bases.len();
     let n = bases.iter().map(|b| b.len()).max().unwrap_or(0).max(v.len());
     // rows: directions; columns: bases, then v
@@ -347,7 +348,13 @@ impl Ring {
     fn coordinates(&self, t: usize, vec: &[Rational]) -> AlgResult<Vec<i64>> {
         self.activate_hints(t)?;
         let bases: Vec<Vec<Rational>> = self.state().tables[t].bases.iter().map(|b| b.vec.clone()).collect();
-        let x = match solve(&bases, vec) {
+        let mut x = solve(&bases, vec);
+        if x.as_ref().is_some_and(|x| x.iter().any(|q| *q.denom() != 1)) {
+            // finish this evaluation with a provisional base, then restart refined
+            self.state().rebase_wanted = true;
+            x = None;
+        }
+        let x = match x {
             Some(x) => x,
             None => {
                 self.new_base(t, vec.to_vec())?;
@@ -357,51 +364,36 @@ impl Ring {
                 x
             }
         };
-        if x.iter().any(|q| *q.denom() != 1) {
-            return Err(self.request_rebase());
-        }
         x.iter()
             .map(|q| q.numer().to_i64().ok_or_else(|| AlgebraError::Domain("argument multiple too large".into())))
             .collect()
     }
 
-    /// Computes the refined bases (lattice bases of everything seen), stores them for
-    /// the restart, and returns the error that asks for it.
-    fn request_rebase(&self) -> AlgebraError {
+    /// The refined bases for a restart: per table, a basis of the lattice of every
+    /// argument seen (see [`super::lattice`]).
+    pub(crate) fn rebase_hints(&self) -> Vec<BaseHint> {
         let st = self.state();
         let mut hints = Vec::new();
         for t in &st.tables {
             let n = t.dirs.len();
-            let mut rows: Vec<Vec<Rational>> = t.bases.iter().map(|b| b.vec.clone()).collect();
-            rows.extend(t.seen.iter().cloned());
+            let mut rows: Vec<Vec<Rational>> = t.seen.clone();
             for r in rows.iter_mut() {
                 pad(r, n);
             }
-            let mut l = Integer::from(1);
-            for r in &rows {
-                for q in r {
-                    l.lcm_mut(q.denom());
-                }
-            }
-            let ints: Vec<Vec<Integer>> =
-                rows.iter().map(|r| r.iter().map(|q| Rational::from(q * &l).numer().clone()).collect()).collect();
-            let basis = hnf_rows(&ints);
+            let basis = super::lattice::lattice_basis(&rows);
             let bases = basis
                 .iter()
                 .map(|row| {
                     row.iter()
                         .enumerate()
                         .filter(|(_, v)| **v != 0)
-                        .map(|(i, v)| (t.dirs[i].0.clone(), Rational::from((v.clone(), l.clone()))))
+                        .map(|(i, v)| (t.dirs[i].0.clone(), v.clone()))
                         .collect()
                 })
                 .collect();
             hints.push(BaseHint { modulus: (terms(&t.k.num), terms(&t.k.den)), bases });
         }
-        drop(st);
-        let n = hints.iter().map(|h| h.bases.len()).sum::<usize>();
-        self.state().rebase = Some(hints);
-        AlgebraError::Rebase(format!("{n} base arguments"))
+        hints
     }
 
     /// Turns pending hinted bases into bases once every symbol they use exists.

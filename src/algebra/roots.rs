@@ -193,6 +193,9 @@ impl Ring {
             let (factor, p) = self.factor_poly(pick);
             let mut v = Bits::default();
             v.flip(pick);
+            if !matches!(factor, Factor::MinusOne) && self.covered_up_to_sign(&v) {
+                continue;
+            }
             let (radicand, v) = if matches!(factor, Factor::Poly(_)) { self.prefer_positive(p, v) } else { (p, v) };
             if self.state().basis.reduce(&v).0.is_zero() {
                 continue;
@@ -200,6 +203,53 @@ impl Ring {
             self.new_field_root(radicand, v, None, matches!(factor, Factor::MinusOne))?;
         }
         Ok(())
+    }
+
+    /// The vector (and radicand) of a single new root that, with the roots so far,
+    /// covers the class `t`: its factors not covered up to sign if that works, else
+    /// the residual of `t`, else `t` itself.
+    fn special_vector(&self, t: &Bits) -> AlgResult<(Poly, Bits)> {
+        let mut uncovered = Bits::default();
+        for i in t.ones() {
+            let mut e = Bits::default();
+            e.flip(i);
+            let minus = matches!(self.state().basis.factors[i], Factor::MinusOne);
+            if !minus && !self.covered_up_to_sign(&e) {
+                uncovered.flip(i);
+            }
+        }
+        let residual = self.state().basis.reduce(t).0;
+        for cand in [uncovered, residual, t.clone()] {
+            if cand.is_zero() {
+                continue;
+            }
+            let mut rad = Poly::from_i64(&self.inner.ctx, 1);
+            for i in cand.ones() {
+                rad = rad.mul(&self.factor_poly(i).1);
+            }
+            let (rad, v) = self.prefer_positive(rad, cand);
+            let (mut trial, next) = {
+                let st = self.state();
+                (st.basis.clone(), st.roots.len())
+            };
+            if trial.add(&v, next) && trial.reduce(t).0.is_zero() {
+                return Ok((rad, v));
+            }
+        }
+        Err(AlgebraError::Internal("no single root covers the class".into()))
+    }
+
+    /// Is `v` or `v + [−1]` in the span of the roots (the factor is covered up to a
+    /// sign, which −1 settles)?
+    fn covered_up_to_sign(&self, v: &Bits) -> bool {
+        let mut st = self.state();
+        if st.basis.reduce(v).0.is_zero() {
+            return true;
+        }
+        let m1 = st.basis.index_of(Factor::MinusOne);
+        let mut w = v.clone();
+        w.flip(m1);
+        st.basis.reduce(&w).0.is_zero()
     }
 
     /// `(−p, v + [−1])` instead of `(p, v)` when `p < 0` at every domain point and the
@@ -258,12 +308,8 @@ impl Ring {
             }
             match special {
                 Some((name, note)) => {
-                    // one root for the whole square-free part, so its values can be set
-                    let mut rad = Poly::from_i64(&self.inner.ctx, 1);
-                    for i in class.t.ones() {
-                        rad = rad.mul(&self.factor_poly(i).1);
-                    }
-                    let (rad, v) = self.prefer_positive(rad, class.t.clone());
+                    // one root whose values can be set, for the uncovered factors
+                    let (rad, v) = self.special_vector(&class.t)?;
                     let i = self.new_field_root(rad, v, None, false)?;
                     let mut st = self.state();
                     st.roots[i].note = note.to_string();
