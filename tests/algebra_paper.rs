@@ -10,10 +10,17 @@ fn opts() -> RingOptions {
     RingOptions { certificate: true, ..Default::default() }
 }
 
+/// Asserts the proof and, when `EULERTOP_CERT_DIR` is set, writes its certificate there
+/// (for `scripts/recheck-certificates.py`).
 fn assert_proved(p: &Proof, what: &str) {
     assert!(p.is_proved(), "{what}: {:?}", p.outcome);
     let cert = p.certificate.as_ref().expect("a certificate");
     assert!(cert.contains("claim t"), "{what}: certificate without a claim");
+    if let Ok(dir) = std::env::var("EULERTOP_CERT_DIR") {
+        let file: String = what.chars().map(|c| if c.is_ascii_alphanumeric() { c } else { '_' }).collect();
+        std::fs::create_dir_all(&dir).expect("certificate directory");
+        std::fs::write(format!("{dir}/{file}.cert"), cert).expect("certificate written");
+    }
 }
 
 #[test]

@@ -5,7 +5,7 @@
 //! (a DAG of [`Node`]s).  The certificate lists, one statement a line:
 //!
 //! ```text
-//! field A                          # an indeterminate (or sn of a base, a named symbol, …)
+//! field A indeterminate            # a field variable and its kind (sn, zeta, K, Kp, named, …)
 //! root r_1 = A - C                 # a root symbol: r_1**2 = A - C
 //! named k = (expression)           # a named quantity's definition (for derivatives)
 //! base b_1 k=(…) s=sn_1 c=(…) d=(…) arg=(…)   # an elliptic base argument
@@ -77,6 +77,21 @@ impl Node {
     }
 }
 
+/// A machine-readable tag of a field variable's kind.
+fn kind_tag(k: &super::ring::VarKind) -> &'static str {
+    use super::ring::VarKind::*;
+    match k {
+        Indeterminate => "indeterminate",
+        Named(_) => "named",
+        Sn { .. } => "sn",
+        Zeta { .. } => "zeta",
+        QuarterK { .. } => "K",
+        QuarterKp { .. } => "Kp",
+        Opaque { constant: true } => "constant",
+        Opaque { constant: false } => "opaque",
+    }
+}
+
 fn nf_text(num: &Poly, den: &Poly, names: &[String]) -> String {
     format!("({})/({})", num.render(names), den.render(names))
 }
@@ -109,7 +124,7 @@ impl Emitter<'_> {
             Op::Sqrt(s) => format!("sqrt {} sign {s}", t(0)),
             Op::Elliptic { f, table, combo, half_k, half_kp } => {
                 let c: Vec<String> = combo.iter().map(|(b, m)| format!("b_{}_{}:{m}", table + 1, b + 1)).collect();
-                format!("{f} table {} combo {} halfK {half_k} halfiKp {half_kp}", table + 1, c.join(","))
+                format!("{f} {} table {} combo {} halfK {half_k} halfiKp {half_kp}", t(0), table + 1, c.join(","))
             }
             Op::Deriv(x) => format!("d {} {x}", t(0)),
         };
@@ -154,7 +169,7 @@ impl Ring {
         let mut out = String::new();
         for v in &st.vars {
             let what = super::sym::describe_kind(&v.kind);
-            let _ = writeln!(out, "field {}  # {what}", v.name);
+            let _ = writeln!(out, "field {} {}  # {what}", v.name, kind_tag(&v.kind));
             if let super::ring::VarKind::Named(def) = &v.kind {
                 let _ = writeln!(out, "named {} = {}", v.name, nf_text(&def.num, &def.den, names));
             }
@@ -162,8 +177,9 @@ impl Ring {
         for r in &st.roots {
             let _ = writeln!(out, "root {} = {}  # {}", r.name, r.radicand.render(names), r.note);
         }
+        let i_name = st.i_root.map_or("none".to_string(), |i| st.roots[i].name.clone());
         for (ti, t) in st.tables.iter().enumerate() {
-            out.push_str(&t.certificate_lines(ti, names));
+            out.push_str(&t.certificate_lines(ti, names, |j| self.inner.kvar(j), &i_name));
         }
         for line in &st.derivation_lines {
             out.push_str(line);

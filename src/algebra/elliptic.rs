@@ -153,13 +153,14 @@ impl Table {
         self.dirs.len() - 1
     }
 
-    pub fn certificate_lines(&self, ti: usize, names: &[String]) -> String {
+    pub fn certificate_lines(&self, ti: usize, names: &[String], kvar: impl Fn(usize) -> usize, i_name: &str) -> String {
         let nf = |v: &Val| format!("({})/({})", v.num.render(names), v.den.render(names));
         let mut out = String::new();
         for (bi, b) in self.bases.iter().enumerate() {
+            let z = b.z_var.map_or(String::new(), |j| format!(" z={}", names[kvar(j)]));
             let _ = writeln!(
                 out,
-                "base b_{}_{} k={} s={} c={} d={} arg={}",
+                "base b_{}_{} k={} s={} c={} d={} arg={}{z}",
                 ti + 1,
                 bi + 1,
                 nf(&self.k),
@@ -174,11 +175,14 @@ impl Table {
         };
         if self.kp.is_some() || self.half_kp.is_some() {
             let kp = self.kp.as_ref().map_or("none".to_string(), nf);
+            let name = |v: Option<usize>| v.map_or("none".to_string(), |j| names[kvar(j)].clone());
             let _ = writeln!(
                 out,
-                "period table {} k={} kp={kp} halfK={} halfiKp={}",
+                "period table {} k={} kp={kp} K={} Kp={} i={i_name} halfK={} halfiKp={}",
                 ti + 1,
                 nf(&self.k),
+                name(self.k_var),
+                name(self.kp_var),
                 triple(&self.half_k),
                 triple(&self.half_kp)
             );
