@@ -20,9 +20,6 @@ pub enum AlgebraError {
     /// A pole of an elliptic function.
     #[error("pole: {0}")]
     Pole(String),
-    /// Base arguments of the elliptic functions must be refined; the evaluation restarts.
-    #[error("the elliptic base arguments must be refined ({0})")]
-    Rebase(String),
     /// More symbols than the ring was made for.
     #[error("too many symbols: {0}")]
     Capacity(String),

@@ -58,6 +58,7 @@ mod derive;
 pub mod elliptic;
 mod error;
 pub mod flint;
+mod lattice;
 mod opaque;
 mod order;
 mod proof;

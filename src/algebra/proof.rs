@@ -193,9 +193,10 @@ where
         attempts += 1;
         let ring = Ring::new(opts.clone());
         let built = build(&ring);
-        let rebase: Option<Vec<BaseHint>> = ring.state().rebase.take();
-        if let Some(hints) = rebase {
+        let wanted = ring.state().rebase_wanted;
+        if wanted {
             if attempts < 4 {
+                let hints: Vec<BaseHint> = ring.rebase_hints();
                 opts.base_hints = hints;
                 continue;
             }

@@ -124,7 +124,7 @@ pub(crate) struct State {
     pub origin: Origin,
     pub i_root: Option<usize>,
     pub tower_roots: bool,
-    pub rebase: Option<Vec<super::elliptic::BaseHint>>,
+    pub rebase_wanted: bool,
     pub dcache: std::collections::HashMap<(usize, usize), Val>,
     pub derivation_lines: Vec<String>,
     /// Opaque function values already made: `f(args)` (rendered) → the symbol.
@@ -182,7 +182,7 @@ impl Ring {
             origin: Origin::Claim,
             i_root: None,
             tower_roots: false,
-            rebase: None,
+            rebase_wanted: false,
             dcache: std::collections::HashMap::new(),
             derivation_lines: Vec::new(),
             opaque_calls: std::collections::BTreeMap::new(),

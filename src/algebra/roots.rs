@@ -193,17 +193,63 @@ impl Ring {
             let (factor, p) = self.factor_poly(pick);
             let mut v = Bits::default();
             v.flip(pick);
-            let (radicand, v) = if matches!(factor, Factor::Poly(_)) {
-                self.prefer_positive(p, v)
-            } else {
-                (p, v)
-            };
+            if !matches!(factor, Factor::MinusOne) && self.covered_up_to_sign(&v) {
+                continue;
+            }
+            let (radicand, v) = if matches!(factor, Factor::Poly(_)) { self.prefer_positive(p, v) } else { (p, v) };
             if self.state().basis.reduce(&v).0.is_zero() {
                 continue;
             }
             self.new_field_root(radicand, v, None, matches!(factor, Factor::MinusOne))?;
         }
         Ok(())
+    }
+
+    /// The vector (and radicand) of a single new root that, with the roots so far,
+    /// covers the class `t`: its factors not covered up to sign if that works, else
+    /// the residual of `t`, else `t` itself.
+    fn special_vector(&self, t: &Bits) -> AlgResult<(Poly, Bits)> {
+        let mut uncovered = Bits::default();
+        for i in t.ones() {
+            let mut e = Bits::default();
+            e.flip(i);
+            let minus = matches!(self.state().basis.factors[i], Factor::MinusOne);
+            if !minus && !self.covered_up_to_sign(&e) {
+                uncovered.flip(i);
+            }
+        }
+        let residual = self.state().basis.reduce(t).0;
+        for cand in [uncovered, residual, t.clone()] {
+            if cand.is_zero() {
+                continue;
+            }
+            let mut rad = Poly::from_i64(&self.inner.ctx, 1);
+            for i in cand.ones() {
+                rad = rad.mul(&self.factor_poly(i).1);
+            }
+            let (rad, v) = self.prefer_positive(rad, cand);
+            let (mut trial, next) = {
+                let st = self.state();
+                (st.basis.clone(), st.roots.len())
+            };
+            if trial.add(&v, next) && trial.reduce(t).0.is_zero() {
+                return Ok((rad, v));
+            }
+        }
+        Err(AlgebraError::Internal("no single root covers the class".into()))
+    }
+
+    /// Is `v` or `v + [−1]` in the span of the roots (the factor is covered up to a
+    /// sign, which −1 settles)?
+    fn covered_up_to_sign(&self, v: &Bits) -> bool {
+        let mut st = self.state();
+        if st.basis.reduce(v).0.is_zero() {
+            return true;
+        }
+        let m1 = st.basis.index_of(Factor::MinusOne);
+        let mut w = v.clone();
+        w.flip(m1);
+        st.basis.reduce(&w).0.is_zero()
     }
 
     /// `(−p, v + [−1])` instead of `(p, v)` when `p < 0` at every domain point and the
@@ -226,30 +272,18 @@ impl Ring {
 
     /// Adjoins a root of a radicand in the field with GF(2) vector `v` and optional
     /// prescribed values (default: the principal square root at every point).
-    fn new_field_root(
-        &self,
-        radicand: Poly,
-        v: Bits,
-        values: Option<Vec<Complex>>,
-        is_i: bool,
-    ) -> AlgResult<usize> {
+    fn new_field_root(&self, radicand: Poly, v: Bits, values: Option<Vec<Complex>>, is_i: bool) -> AlgResult<usize> {
         let names = self.inner.names();
         let note = format!("sqrt({})", radicand.render(&names));
         let values = match values {
             Some(v) => v,
             None => {
                 let vals = self.inner.var_values();
-                Shadow::leaf(self.inner.eval_poly(&radicand, &vals))
-                    .sqrt()
-                    .v
+                Shadow::leaf(self.inner.eval_poly(&radicand, &vals)).sqrt().v
             }
         };
         let n = self.state().roots.len();
-        let name = if is_i {
-            "i_".to_string()
-        } else {
-            format!("r_{}", n + 1)
-        };
+        let name = if is_i { "i_".to_string() } else { format!("r_{}", n + 1) };
         let i = self.inner.add_root(name, radicand, values, note)?;
         let mut st = self.state();
         if !st.basis.add(&v, i) {
@@ -265,12 +299,7 @@ impl Ring {
     /// roots for uncovered factors when `adjoin` is set (else `None` if not a square in
     /// the tower).  With `prescribed`, uncovered factors get a single root whose values
     /// are fixed later.
-    fn field_sqrt_poly(
-        &self,
-        nd: &Poly,
-        adjoin: bool,
-        special: Option<(&str, &str)>,
-    ) -> AlgResult<Option<(Val, Option<usize>)>> {
+    fn field_sqrt_poly(&self, nd: &Poly, adjoin: bool, special: Option<(&str, &str)>) -> AlgResult<Option<(Val, Option<usize>)>> {
         let class = self.class_of(nd)?;
         let mut fresh = None;
         if !self.state().basis.reduce(&class.t).0.is_zero() {
@@ -279,12 +308,8 @@ impl Ring {
             }
             match special {
                 Some((name, note)) => {
-                    // one root for the whole square-free part, so its values can be set
-                    let mut rad = Poly::from_i64(&self.inner.ctx, 1);
-                    for i in class.t.ones() {
-                        rad = rad.mul(&self.factor_poly(i).1);
-                    }
-                    let (rad, v) = self.prefer_positive(rad, class.t.clone());
+                    // one root whose values can be set, for the uncovered factors
+                    let (rad, v) = self.special_vector(&class.t)?;
                     let i = self.new_field_root(rad, v, None, false)?;
                     let mut st = self.state();
                     st.roots[i].note = note.to_string();
@@ -296,9 +321,7 @@ impl Ring {
         }
         let (res, combo) = self.state().basis.reduce(&class.t);
         if !res.is_zero() {
-            return Err(AlgebraError::Internal(
-                "a square root left its class uncovered".into(),
-            ));
+            return Err(AlgebraError::Internal("a square root left its class uncovered".into()));
         }
         self.assemble(nd, &combo).map(|v| Some((v, fresh)))
     }
@@ -313,9 +336,7 @@ impl Ring {
         }
         let (yn, yd) = self.inner.normalise(nd.clone(), r)?;
         let (Some(sn), Some(sd)) = (yn.sqrt(), yd.sqrt()) else {
-            return Err(AlgebraError::Internal(
-                "square class mismatch in sqrt".into(),
-            ));
+            return Err(AlgebraError::Internal("square class mismatch in sqrt".into()));
         };
         let (num, den) = self.inner.normalise(sn, sd)?;
         let sh = self.shadow_of(&num, &den);
@@ -339,18 +360,13 @@ impl Ring {
         let prec = self.precision();
         let mut sigma = 0;
         for i in 0..self.points() {
-            let ratio = Shadow::with_scale(vec![target.v[i].clone()], vec![target.lscale[i]]).div(
-                &Shadow::with_scale(vec![cand.v[i].clone()], vec![cand.lscale[i]]),
-            );
+            let ratio = Shadow::with_scale(vec![target.v[i].clone()], vec![target.lscale[i]])
+                .div(&Shadow::with_scale(vec![cand.v[i].clone()], vec![cand.lscale[i]]));
             if cand.is_small(i, prec) {
-                return Err(AlgebraError::CannotDecide(format!(
-                    "the branch of {what}: it vanishes at a domain point"
-                )));
+                return Err(AlgebraError::CannotDecide(format!("the branch of {what}: it vanishes at a domain point")));
             }
             let s = ratio.real_sign(0, prec).ok_or_else(|| {
-                AlgebraError::Internal(format!(
-                    "the square of the root of {what} differs from its radicand"
-                ))
+                AlgebraError::Internal(format!("the square of the root of {what} differs from its radicand"))
             })?;
             if sigma != 0 && s != sigma {
                 return Err(AlgebraError::CannotDecide(format!(
@@ -361,6 +377,7 @@ impl Ring {
         }
         Ok(sigma)
     }
+
 }
 
 impl Sym {
@@ -406,11 +423,7 @@ impl Sym {
             (v, fresh)
         };
         // divide by D: √(N/D) = √(N·D)/D
-        let dval = Val {
-            num: self.val.den.clone(),
-            den: Poly::from_i64(&inner.ctx, 1),
-            sh: ring.shadow_of(&self.val.den, &Poly::from_i64(&inner.ctx, 1)),
-        };
+        let dval = Val { num: self.val.den.clone(), den: Poly::from_i64(&inner.ctx, 1), sh: ring.shadow_of(&self.val.den, &Poly::from_i64(&inner.ctx, 1)) };
         cand = inner.v_div(&cand, &dval)?;
         if let (Some(i), Some(_)) = (fresh, &prescribed) {
             // fix the new root's values so that the product equals the prescribed values
@@ -423,16 +436,8 @@ impl Sym {
                 }
             }
             drop(st);
-            cand.sh = cand.sh.scale_by(
-                &sigma
-                    .iter()
-                    .map(|&s| Complex::with_val(ring.precision(), s))
-                    .collect::<Vec<_>>(),
-            );
-            let node = self
-                .node
-                .as_ref()
-                .map(|n| super::certificate::Node::sqrt(n, &cand, ring, 1));
+            cand.sh = cand.sh.scale_by(&sigma.iter().map(|&s| Complex::with_val(ring.precision(), s)).collect::<Vec<_>>());
+            let node = self.node.as_ref().map(|n| super::certificate::Node::sqrt(n, &cand, ring, 1));
             return Ok(Sym::from_val(ring, cand, node));
         }
         let sigma = ring.decide_sign(&target, &cand.sh, &what)?;
@@ -443,10 +448,7 @@ impl Sym {
         if !(sigma > 0 && fresh.is_none() && result.is_single_root_of(self)) {
             ring.record_assumption(format!("{what} = {}", result.render_short(160)), sigma);
         }
-        let node = self
-            .node
-            .as_ref()
-            .map(|n| super::certificate::Node::sqrt(n, &result.val, ring, sigma));
+        let node = self.node.as_ref().map(|n| super::certificate::Node::sqrt(n, &result.val, ring, sigma));
         Ok(result.with_node(node))
     }
 
@@ -457,31 +459,19 @@ impl Sym {
         if used.len() != 1 || !self.val.den.is_one() || self.val.num.len() != 1 {
             return false;
         }
-        let Some(i) = self.ring.inner.root_of_var(used[0]) else {
-            return false;
-        };
+        let Some(i) = self.ring.inner.root_of_var(used[0]) else { return false };
         let st = self.ring.state();
-        x.val.den.is_one()
-            && st.roots[i].radicand == x.val.num
-            && self.val.num.leading_coefficient() == 1
+        x.val.den.is_one() && st.roots[i].radicand == x.val.num && self.val.num.leading_coefficient() == 1
     }
 
     /// √ of a polynomial with roots (see the module doc), up to sign.
     fn tower_sqrt(&self, nd: &Poly) -> AlgResult<Val> {
         let ring = &self.ring;
         let inner = &ring.inner;
-        let root_vars: Vec<usize> = (0..ring.state().roots.len())
-            .map(|i| inner.root_var(i))
-            .collect();
+        let root_vars: Vec<usize> = (0..ring.state().roots.len()).map(|i| inner.root_var(i)).collect();
         let g = nd.content_in(&root_vars)?;
-        let g = if nd.leading_coefficient() < 0 {
-            g.neg()
-        } else {
-            g
-        };
-        let rest = nd
-            .divides(&g)?
-            .ok_or_else(|| AlgebraError::Internal("content does not divide".into()))?;
+        let g = if nd.leading_coefficient() < 0 { g.neg() } else { g };
+        let rest = nd.divides(&g)?.ok_or_else(|| AlgebraError::Internal("content does not divide".into()))?;
         let (gv, _) = ring
             .field_sqrt_poly(&g, true, None)?
             .ok_or_else(|| AlgebraError::Internal("sqrt adjoined no root".into()))?;
@@ -501,11 +491,9 @@ impl Ring {
             .map(|i| {
                 let t = Shadow::with_scale(vec![target.v[i].clone()], vec![target.lscale[i]]);
                 let c = Shadow::with_scale(vec![cand.v[i].clone()], vec![cand.lscale[i]]);
-                t.div(&c).real_sign(0, prec).ok_or_else(|| {
-                    AlgebraError::Internal(format!(
-                        "prescribed values do not square to the radicand of {what}"
-                    ))
-                })
+                t.div(&c)
+                    .real_sign(0, prec)
+                    .ok_or_else(|| AlgebraError::Internal(format!("prescribed values do not square to the radicand of {what}")))
             })
             .collect()
     }
@@ -521,9 +509,7 @@ impl Ring {
                 let names = self.inner.names();
                 let note = format!("sqrt({})", rad.render(&names));
                 let n = self.state().roots.len();
-                let i = self
-                    .inner
-                    .add_root(format!("r_{}", n + 1), rad.clone(), values, note)?;
+                let i = self.inner.add_root(format!("r_{}", n + 1), rad.clone(), values, note)?;
                 self.state().tower_roots = true;
                 i
             }
@@ -535,43 +521,24 @@ impl Ring {
     fn exact_tower_sqrt(&self, p: &Poly, depth: usize) -> AlgResult<Option<Val>> {
         let inner = &self.inner;
         if p.is_zero() {
-            return Ok(Some(Val {
-                num: p.clone(),
-                den: Poly::from_i64(&inner.ctx, 1),
-                sh: self.shadow_of(p, &Poly::from_i64(&inner.ctx, 1)),
-            }));
+            return Ok(Some(Val { num: p.clone(), den: Poly::from_i64(&inner.ctx, 1), sh: self.shadow_of(p, &Poly::from_i64(&inner.ctx, 1)) }));
         }
-        let top = p
-            .used_vars()
-            .into_iter()
-            .find(|&i| inner.root_of_var(i).is_some());
+        let top = p.used_vars().into_iter().find(|&i| inner.root_of_var(i).is_some());
         let Some(idx) = top else {
             return Ok(self.field_sqrt_poly(p, false, None)?.map(|(v, _)| v));
         };
         if depth > 2 * self.options().max_roots {
             return Ok(None);
         }
-        let root = inner
-            .root_of_var(idx)
-            .ok_or_else(|| AlgebraError::Internal("root index".into()))?;
+        let root = inner.root_of_var(idx).ok_or_else(|| AlgebraError::Internal("root index".into()))?;
         let f = self.state().roots[root].radicand.clone();
         let one = Poly::from_i64(&inner.ctx, 1);
         let pp = p.coefficient_in(idx, 0);
         let qq = p.coefficient_in(idx, 1);
         let norm = inner.reduce(pp.mul(&pp).sub(&f.mul(&qq).mul(&qq)));
-        let Some(m) = self.exact_tower_sqrt(&norm, depth + 1)? else {
-            return Ok(None);
-        };
-        let pv = Val {
-            num: pp.clone(),
-            den: one.clone(),
-            sh: self.shadow_of(&pp, &one),
-        };
-        let qv = Val {
-            num: qq.clone(),
-            den: one.clone(),
-            sh: self.shadow_of(&qq, &one),
-        };
+        let Some(m) = self.exact_tower_sqrt(&norm, depth + 1)? else { return Ok(None) };
+        let pv = Val { num: pp.clone(), den: one.clone(), sh: self.shadow_of(&pp, &one) };
+        let qv = Val { num: qq.clone(), den: one.clone(), sh: self.shadow_of(&qq, &one) };
         let two = inner.const_val(&rug::Rational::from(2));
         let rv = self.root_sym(root).val;
         for sign in [1, -1] {
@@ -581,14 +548,8 @@ impl Ring {
                 continue;
             }
             let a2nd = inner.reduce(a2.num.mul(&a2.den));
-            let Some(a) = self.exact_tower_sqrt(&a2nd, depth + 1)? else {
-                continue;
-            };
-            let dv = Val {
-                num: a2.den.clone(),
-                den: one.clone(),
-                sh: self.shadow_of(&a2.den, &one),
-            };
+            let Some(a) = self.exact_tower_sqrt(&a2nd, depth + 1)? else { continue };
+            let dv = Val { num: a2.den.clone(), den: one.clone(), sh: self.shadow_of(&a2.den, &one) };
             let a = inner.v_div(&a, &dv)?;
             let b = inner.v_div(&qv, &inner.v_mul(&two, &a)?)?;
             let cand = inner.v_add(&a, &inner.v_mul(&b, &rv)?, false)?;

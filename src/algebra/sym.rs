@@ -290,8 +290,10 @@ impl Sym {
         }
     }
 
-    fn node2(&self, op: Op, o: &Sym) -> Option<Arc<Node>> {
+    fn node2(&self, op: Op, o: &Sym, v: &Val) -> Option<Arc<Node>> {
+        let with_nf = matches!(op, Op::Mul | Op::Div);
         match (&self.node, &o.node) {
+            (Some(a), Some(b)) if with_nf => Some(Node::with_nf(op, vec![a.clone(), b.clone()], v)),
             (Some(a), Some(b)) => Some(Node::new(op, vec![a.clone(), b.clone()])),
             _ => None,
         }
@@ -305,34 +307,39 @@ impl Sym {
     pub fn try_add(&self, o: &Sym) -> AlgResult<Sym> {
         self.same_ring(o)?;
         let v = self.ring.inner.v_add(&self.val, &o.val, false)?;
-        Ok(Sym::from_val(&self.ring, v, self.node2(Op::Add, o)))
+        let node = self.node2(Op::Add, o, &v);
+        Ok(Sym::from_val(&self.ring, v, node))
     }
 
     /// `self − o`, or an error.
     pub fn try_sub(&self, o: &Sym) -> AlgResult<Sym> {
         self.same_ring(o)?;
         let v = self.ring.inner.v_add(&self.val, &o.val, true)?;
-        Ok(Sym::from_val(&self.ring, v, self.node2(Op::Sub, o)))
+        let node = self.node2(Op::Sub, o, &v);
+        Ok(Sym::from_val(&self.ring, v, node))
     }
 
     /// `self · o`, or an error.
     pub fn try_mul(&self, o: &Sym) -> AlgResult<Sym> {
         self.same_ring(o)?;
         let v = self.ring.inner.v_mul(&self.val, &o.val)?;
-        Ok(Sym::from_val(&self.ring, v, self.node2(Op::Mul, o)))
+        let node = self.node2(Op::Mul, o, &v);
+        Ok(Sym::from_val(&self.ring, v, node))
     }
 
     /// `self / o`, or an error (division by zero or by a zero divisor).
     pub fn try_div(&self, o: &Sym) -> AlgResult<Sym> {
         self.same_ring(o)?;
         let v = self.ring.inner.v_div(&self.val, &o.val)?;
-        Ok(Sym::from_val(&self.ring, v, self.node2(Op::Div, o)))
+        let node = self.node2(Op::Div, o, &v);
+        Ok(Sym::from_val(&self.ring, v, node))
     }
 
     /// `self^n` for any integer `n` (negative powers invert), or an error.
     pub fn try_powi(&self, n: i32) -> AlgResult<Sym> {
         let v = self.ring.inner.v_powi(&self.val, n)?;
-        Ok(Sym::from_val(&self.ring, v, self.node1(Op::Pow(n))))
+        let node = self.node.as_ref().map(|a| Node::with_nf(Op::Pow(n), vec![a.clone()], &v));
+        Ok(Sym::from_val(&self.ring, v, node))
     }
 
     /// `−self`.
