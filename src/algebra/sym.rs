@@ -338,7 +338,10 @@ impl Sym {
     /// `self^n` for any integer `n` (negative powers invert), or an error.
     pub fn try_powi(&self, n: i32) -> AlgResult<Sym> {
         let v = self.ring.inner.v_powi(&self.val, n)?;
-        let node = self.node.as_ref().map(|a| Node::with_nf(Op::Pow(n), vec![a.clone()], &v));
+        let node = self
+            .node
+            .as_ref()
+            .map(|a| Node::with_nf(Op::Pow(n), vec![a.clone()], &v));
         Ok(Sym::from_val(&self.ring, v, node))
     }
 

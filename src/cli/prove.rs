@@ -39,7 +39,11 @@ pub fn derivation(id: &str, printed: &str, p: &ProofInfo) -> String {
     list(&mut out, "symbols", &p.symbols);
     list(&mut out, "relations", &p.relations);
     list(&mut out, "steps", &p.notes);
-    list(&mut out, "assumptions (decided on the claim's domain)", &p.assumptions);
+    list(
+        &mut out,
+        "assumptions (decided on the claim's domain)",
+        &p.assumptions,
+    );
     match &p.reason {
         None => out.push_str(&format!(
             "normal form of lhs - rhs: 0 (numerators of {} terms): proved\n",
@@ -65,7 +69,12 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             claim.kind.name()
         )));
     };
-    let p = prove(Ctx { cat: &cat, claim }, lhs, rhs, args.certificate.is_some());
+    let p = prove(
+        Ctx { cat: &cat, claim },
+        lhs,
+        rhs,
+        args.certificate.is_some(),
+    );
     if let (Some(path), Some(cert)) = (&args.certificate, &p.certificate) {
         std::fs::write(path, cert).map_err(|e| CliError(format!("cannot write {path}: {e}")))?;
     }

@@ -11,7 +11,7 @@ use std::fmt::Write;
 pub fn verdict_badge(v: Verdict) -> &'static str {
     match v {
         Verdict::Holds => "✓ holds",
-        Verdict::Proved => "✓✓ proved (exact)",
+        Verdict::Proved => "✓✓ proved (symbolic)",
         Verdict::Refuted => "✗ refuted",
         Verdict::Inconclusive => "? inconclusive",
         Verdict::Defined => "≔ definition",
@@ -107,7 +107,7 @@ pub fn readme(input: &ReportInput) -> String {
     let _ = writeln!(s, "## What was checked, and how\n");
     let _ = writeln!(s, "Every proposition, lemma, theorem, the corollary and every displayed formula of the paper is a claim in the catalogue `identities/`, transcribed verbatim (`printed`) and, where the printed form fails, accompanied by a `corrected` claim. Each claim is evaluated at seeded random points inside its domain (A > B > C > 0, both regimes E/M² ≷ 1/B, phases over a period, small h, away from poles and fixed points) on a precision ladder of {} bits (53 = IEEE double, the rest MPFR), and exactly over the rationals where the claim is rational.\n", ladder.join(", "));
     let _ = writeln!(s, "- **✓ holds**: the scaled residual is at most 2^(−p+g) at every precision p, with g ≤ the claim's bound on bits lost to conditioning; a true identity tracks 2^−p as p grows.");
-    let _ = writeln!(s, "- **✓✓ proved**: exactly zero over the rationals at random rational points (Schwartz–Zippel bound given) and holds numerically.");
+    let _ = writeln!(s, "- **✓✓ proved**: the claim's formulas, evaluated symbolically (variables as indeterminates over ℚ, one symbol per square root of an irreducible factor, sn, cn, dn expanded by the addition theorems), give lhs − rhs with normal form 0; the proof rests on the relations and assumptions listed with the claim, and `eulertop prove ID --certificate FILE` writes a certificate that `scripts/recheck-certificates.py` rechecks with SymPy. Exact rational points alone never prove.");
     let _ = writeln!(s, "- **✗ refuted**: the residual stays above a fixed floor at every precision from 128 bits on; a counterexample is shown.");
     let _ = writeln!(s, "- **? inconclusive**: neither.\n");
     let _ = writeln!(s, "## Verdicts\n\n{}.\n", counts_line(input.results));
@@ -265,6 +265,7 @@ pub fn claim_block(input: &ReportInput, r: &ClaimResult) -> String {
         }
         s.push('\n');
     }
+    s.push_str(&super::proof_evidence::proof_block(&r.proof));
     if let Some(e) = &r.exact {
         let _ = writeln!(
             s,

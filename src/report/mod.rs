@@ -9,6 +9,7 @@
 
 pub mod figures;
 pub mod markdown;
+pub mod proof_evidence;
 pub mod tex;
 
 use crate::claims::verdict::ClaimResult;

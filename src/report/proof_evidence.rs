@@ -1,0 +1,38 @@
+//! The symbolic proof of a claim as shown in the reports: what it rests on (symbols,
+//! relations, assumptions, cases), or why there is none.  Times are left out, so the
+//! reports stay byte-identical from run to run.
+
+use crate::claims::verdict::ProofInfo;
+use std::fmt::Write;
+
+/// The proof paragraph of one claim (empty for claims that are not identities).
+pub fn proof_block(p: &ProofInfo) -> String {
+    let mut s = String::new();
+    if let Some(r) = &p.reason {
+        if r != "a definition" && r != "only identities are proved symbolically" {
+            let _ = writeln!(s, "Symbolic proof: none — {}.\n", r.trim_end_matches('.'));
+        }
+        return s;
+    }
+    let _ = writeln!(
+        s,
+        "Symbolic proof: the normal form of lhs − rhs is 0 (numerators of {} terms).\n",
+        p.terms
+    );
+    let items = |s: &mut String, title: &str, xs: &[String]| {
+        if !xs.is_empty() {
+            let shown: Vec<String> = xs.iter().map(|x| format!("`{x}`")).collect();
+            let _ = writeln!(s, "- {title}: {}", shown.join("; "));
+        }
+    };
+    items(&mut s, "cases", &p.cases);
+    items(&mut s, "symbols", &p.symbols);
+    items(&mut s, "relations", &p.relations);
+    items(
+        &mut s,
+        "assumptions (decided on the domain)",
+        &p.assumptions,
+    );
+    s.push('\n');
+    s
+}
