@@ -517,7 +517,10 @@ fn statement_section(input: &ReportInput, s: &Structure, env: &Environment) -> S
     }
     let claims = s.claims(env, Some(Role::Statement));
     let _ = writeln!(t, "Encoded by {} claims:\n", claims.len());
-    let _ = writeln!(t, "| claim | what it checks | form | verdict | best residual (evidence) |");
+    let _ = writeln!(
+        t,
+        "| claim | what it checks | form | verdict | best residual (evidence) |"
+    );
     let _ = writeln!(t, "|---|---|---|---|---|");
     for r in &claims {
         let _ = writeln!(
