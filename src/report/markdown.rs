@@ -351,6 +351,16 @@ pub fn errata(input: &ReportInput) -> String {
         .results
         .iter()
         .filter(|r| r.form == "printed" && r.verdict == Verdict::Refuted)
+        .filter(|r| {
+            // a deliberately false control is not a printed form of the paper
+            input.places.get(&r.id).is_none_or(|p| {
+                !matches!(
+                    p.role,
+                    crate::claims::structure::Role::Control
+                        | crate::claims::structure::Role::Background
+                )
+            })
+        })
         .collect();
     if refuted.is_empty() {
         let _ = writeln!(s, "No printed form is refuted.");
