@@ -90,7 +90,7 @@ pub fn verify(
 /// [[claim]]
 /// id = "pythagoras"
 /// environment = "Section 2"
-/// role = "background"
+/// role = "statement"
 /// location = "anywhere"
 /// printed = 'sin^2 x + cos^2 x = 1'
 /// kind = "identity"
