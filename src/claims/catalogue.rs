@@ -755,6 +755,12 @@ fn build_claim(
         if t.printed.is_none() {
             return Err(need("printed"));
         }
+        if t.environment.is_none() {
+            return Err(need("environment"));
+        }
+        if t.role.is_none() {
+            return Err(need("role"));
+        }
     }
     if form == Form::Corrected && t.corrects.is_none() && outer.is_none() {
         return Err(need("corrects"));

@@ -22,6 +22,8 @@
 //! let toml = r#"
 //! [[claim]]
 //! id = "double-angle"
+//! environment = "Section 2"
+//! role = "statement"
 //! labels = []
 //! location = "a doc example"
 //! printed = 'sn(2u)'
