@@ -26,6 +26,10 @@ pub enum AlgebraError {
     /// Input outside what the layer accepts (a bad name, a wrong number of values, …).
     #[error("{0}")]
     Domain(String),
+    /// An intermediate value exceeds the prover's size bound (a deterministic bound, so
+    /// the outcome does not depend on the machine).
+    #[error("an intermediate expression has {0} terms, above the prover's bound of {1}")]
+    TooLarge(usize, usize),
     /// A derivative with respect to something that is not an indeterminate, or through
     /// a symbol whose derivative is unknown.
     #[error("derivative: {0}")]

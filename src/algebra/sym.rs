@@ -16,6 +16,11 @@ use super::shadow::Shadow;
 use rug::Complex;
 use std::sync::Arc;
 
+/// The largest numerator plus denominator, in terms, that the prover works with; beyond
+/// it a proof stops with [`AlgebraError::TooLarge`] (such values come from iterations
+/// written out in a claim, such as Newton steps, not from the paper's identities).
+pub const MAX_TERMS: usize = 20_000;
+
 /// The exact part of a value with its shadow, without the ring handle (so the symbol
 /// table can store values without reference cycles).
 #[derive(Clone, Debug)]
@@ -73,6 +78,10 @@ impl Inner {
     pub(crate) fn normalise(&self, num: Poly, den: Poly) -> AlgResult<(Poly, Poly)> {
         if den.is_zero() {
             return Err(AlgebraError::DivisionByZero);
+        }
+        let size = num.len() + den.len();
+        if size > MAX_TERMS {
+            return Err(AlgebraError::TooLarge(size, MAX_TERMS));
         }
         if num.is_zero() {
             return Ok((num, Poly::from_i64(&self.ctx, 1)));
