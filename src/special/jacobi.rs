@@ -1,8 +1,8 @@
 //! Jacobi elliptic functions sn, cn, dn and the amplitude am of a real argument: the
 //! choice of algorithm ([`sncndn_imp`]) and the public entry points.
 
-use super::cache::{quarter_period_triple, with_chain, with_theta, ChainData};
-use super::dd::{two_sum, with_value, Dd};
+use super::cache::{quarter_period_triple, with_chain, with_fixed, ChainData};
+use super::dd::{two_sum, with_fma, with_value, Dd};
 use super::reduce::reduce_dd2;
 use super::theta::{tanh_sech, Theta};
 use super::{check_finite, check_modulus, show, SpecialError, GUARD};
@@ -35,13 +35,21 @@ pub(crate) enum Bottom {
 }
 
 /// A real modulus as the caller gave it.
-#[derive(Clone, Copy, Debug)]
+#[derive(Debug)]
 pub(crate) enum Spec<'a, R> {
     /// The modulus `k ≥ 0` (`k > 1` by DLMF 22.17.2–4), or its complement.
     Modulus(&'a R, Modulus),
     /// The parameter `m = k²`, any real (`m < 0`: imaginary modulus, DLMF 22.17.6–8).
     Parameter(&'a R),
 }
+
+impl<R> Clone for Spec<'_, R> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<R> Copy for Spec<'_, R> {}
 
 /// How the evaluated modulus `κ ∈ [0, 1]` relates to the given one (DLMF §22.17):
 /// with `v = f·u`, `Direct`: `(sn, cn, dn)(u) = (s, c, d)(v)`; `Reciprocal` (`k > 1`,
@@ -68,6 +76,7 @@ fn untransform<R: Real>(form: Form, f: &R, (s, c, d): (R, R, R)) -> (R, R, R) {
 }
 
 /// `1 − x` as a double-double.
+#[inline(always)]
 fn one_minus<R: Real>(x: &Dd<R>) -> Dd<R> {
     let (s, e) = two_sum(1.0, -x.v());
     Dd {
@@ -78,6 +87,7 @@ fn one_minus<R: Real>(x: &Dd<R>) -> Dd<R> {
 }
 
 /// Fixed precision: `(κ², κ'², f, form)` of a [`Spec`] in double-double.
+#[inline(always)]
 fn fixed_modulus<R: Real>(spec: Spec<'_, R>) -> (Dd<R>, Dd<R>, Dd<R>, Form) {
     let dd = |x: &R| Dd::from(x.clone());
     match spec {
@@ -110,6 +120,65 @@ fn fixed_modulus<R: Real>(spec: Spec<'_, R>) -> (Dd<R>, Dd<R>, Dd<R>, Form) {
             let c = dd(m).add_r(&(-m.one())).mul(&inv);
             (inv, c, dd(m).sqrt(), Form::Reciprocal)
         }
+    }
+}
+
+/// Per-modulus data of the fixed-precision path (what the per-thread cache keeps): the
+/// bottom, its theta data, `κ'²` (for the exact reduction) and the modulus
+/// transformation.
+#[derive(Clone, Debug)]
+pub(crate) struct FixedModulus<R> {
+    bottom: Bottom,
+    theta: Option<Theta<R>>,
+    m: Dd<R>,
+    mc: Dd<R>,
+    f: Dd<R>,
+    form: Form,
+}
+
+impl<R: Real> FixedModulus<R> {
+    /// The data of `spec`: the bottom by the special cases of [`sncndn_imp`].
+    #[inline(always)]
+    pub(crate) fn new(spec: Spec<'_, R>) -> Self {
+        let (m, mc, f, form) = fixed_modulus(spec);
+        let bottom = if m.v() == 0.0 {
+            Bottom::Sine
+        } else if mc.v() == 0.0 {
+            Bottom::TanhSech
+        } else if m.v() > 0.5 {
+            Bottom::Imaginary
+        } else {
+            Bottom::Series
+        };
+        let theta =
+            matches!(bottom, Bottom::Series | Bottom::Imaginary).then(|| Theta::new(&m, &mc));
+        FixedModulus {
+            bottom,
+            theta,
+            m,
+            mc,
+            f,
+            form,
+        }
+    }
+
+    /// `(sn, cn, dn)(u)`.
+    #[inline(always)]
+    pub(crate) fn eval(&self, u: &R) -> Result<(R, R, R), SpecialError> {
+        let v = match self.form {
+            Form::Direct => Dd::from(u.clone()),
+            _ => self.f.mul_r(u),
+        };
+        let out = match (&self.theta, self.bottom) {
+            (Some(th), _) => sncndn_theta(&v.hi, v.lo, th, &self.mc)?,
+            (None, Bottom::TanhSech) => tanh_sech(&v.to_r(), &self.mc.hi),
+            (None, _) => sine_cases(&v.to_r()),
+        };
+        debug_assert!(self.m.v() >= 0.0);
+        Ok(match self.form {
+            Form::Direct => out,
+            _ => untransform(self.form, &self.f.to_r(), out),
+        })
     }
 }
 
@@ -161,28 +230,10 @@ pub(crate) fn sncndn_imp<R: Real>(
     n: u32,
 ) -> Result<(R, R, R), SpecialError> {
     if R::FIXED {
-        let (m, mc, f, form) = fixed_modulus(spec);
-        let v = match form {
-            Form::Direct => Dd::from(u.clone()),
-            _ => f.mul_r(u),
-        };
-        let bottom = if m.v() == 0.0 {
-            Bottom::Sine
-        } else if mc.v() == 0.0 {
-            Bottom::TanhSech
-        } else if m.v() > 0.5 {
-            Bottom::Imaginary
-        } else {
-            Bottom::Series
-        };
-        let out = match bottom {
-            Bottom::Sine => sine_cases(&v.to_r()),
-            Bottom::TanhSech => tanh_sech(&v.to_r(), &mc.hi),
-            Bottom::Series | Bottom::Imaginary => {
-                with_theta(&m, &mc, |th| sncndn_theta(&v.hi, v.lo, th, &mc))?
-            }
-        };
-        return Ok(untransform(form, &f.to_r(), out));
+        return with_fma(
+            #[inline(always)]
+            || with_fixed(spec, |fm| fm.eval(u)),
+        );
     }
     let w = n + GUARD;
     let (kappa, modulus, f, form) = mp_modulus(spec, w);
@@ -210,6 +261,7 @@ pub(crate) fn sncndn_imp<R: Real>(
     Ok(untransform(form, &f, out))
 }
 
+#[inline(always)]
 /// `κ = 0`: `(sin u, cos u, 1)` (DLMF 22.5.3; [`Bottom::Sine`] without Landen levels).
 fn sine_cases<R: Real>(u: &R) -> (R, R, R) {
     let (s, c) = u.sin_cos();
@@ -217,7 +269,7 @@ fn sine_cases<R: Real>(u: &R) -> (R, R, R) {
 }
 
 /// The quadrant `j = round(u/K)` (half away from zero) from `ratio = u/K` in `f64`.
-#[inline]
+#[inline(always)]
 fn quadrant<R: Real>(ratio: f64, u: &R) -> Result<i64, SpecialError> {
     if ratio.is_nan() || ratio.abs() >= 2f64.powi(50) {
         return Err(too_large(ratio, u));
@@ -241,7 +293,7 @@ fn too_large<R: Real>(ratio: f64, u: &R) -> SpecialError {
 /// Fixed precision: `(sn, cn, dn)(u + u_lo)` on the theta data `th` of the modulus with
 /// `κ'² = mc`: the double-double reduction `u·π/(2K) = j·period + w`, or for large or
 /// cancelling `w` the exact one ([`reduce_exact`]).
-#[inline]
+#[inline(always)]
 pub(crate) fn sncndn_theta<R: Real>(
     u: &R,
     u_lo: f64,
@@ -413,23 +465,22 @@ pub fn sncndn_many<R: Real>(us: &[R], k: &R) -> Result<Vec<(R, R, R)>, SpecialEr
         }
         other => other,
     };
-    let (m, mc, _, form) = if R::FIXED {
-        fixed_modulus(Spec::Modulus(k, Modulus::K))
-    } else {
-        let zero = Dd::from(k.zero());
-        (zero.clone(), zero.clone(), zero, Form::Imaginary)
-    };
-    if form == Form::Direct && m.v() > 0.0 && mc.v() > 0.0 {
-        return with_theta(&m, &mc, |th| {
-            let mut out = Vec::with_capacity(us.len());
-            for (i, u) in us.iter().enumerate() {
-                match sncndn_theta(u, 0.0, th, &mc) {
-                    Ok(v) => out.push(v),
-                    Err(e) => return Err(indexed(i, e)),
-                }
-            }
-            Ok(out)
-        });
+    if R::FIXED {
+        return with_fma(
+            #[inline(always)]
+            || {
+                with_fixed(Spec::Modulus(k, Modulus::K), |fm| {
+                    let mut out = Vec::with_capacity(us.len());
+                    for (i, u) in us.iter().enumerate() {
+                        match fm.eval(u) {
+                            Ok(v) => out.push(v),
+                            Err(e) => return Err(indexed(i, e)),
+                        }
+                    }
+                    Ok(out)
+                })
+            },
+        );
     }
     us.iter()
         .enumerate()

@@ -70,6 +70,7 @@ pub(crate) struct Theta<R> {
 
 /// `x^{1/4}` of a positive double-double: two square roots, then one Newton step
 /// `t + (x − t⁴)/(4t³)` with `x − t⁴` formed exactly.
+#[inline(always)]
 fn quarter_root<R: Real>(x: &Dd<R>) -> Dd<R> {
     let t = x.hi.sqrt().sqrt();
     let tv = t.to_f64();
@@ -85,6 +86,7 @@ fn quarter_root<R: Real>(x: &Dd<R>) -> Dd<R> {
 impl<R: Real> Theta<R> {
     /// The data for the modulus `κ` given by `m = κ²` and `mc = κ'² = 1 − κ²` (both as
     /// double-doubles, `0 ≤ m`, `0 < mc`).
+    #[inline(always)]
     pub(crate) fn new(m: &Dd<R>, mc: &Dd<R>) -> Self {
         Self::with_bottom(m, mc, m.v() > 0.5)
     }
@@ -92,6 +94,7 @@ impl<R: Real> Theta<R> {
     /// [`Theta::new`] with the bottom chosen by the caller (`imaginary`); both forms are
     /// exact for every modulus, the choice only keeps the nome small (tests cross-check
     /// them where both nomes are moderate).
+    #[inline(always)]
     pub(crate) fn with_bottom(m: &Dd<R>, mc: &Dd<R>, imaginary: bool) -> Self {
         let (a, b) = if imaginary { (mc, m) } else { (m, mc) };
         let (a, b) = (a.norm(), b.norm());
@@ -99,7 +102,7 @@ impl<R: Real> Theta<R> {
         let t = quarter_root(&b);
         let lp = t.sqr();
         let opt = t.add_r(&one);
-        let den = lp.add_r(&one).mul(&opt.sqr()).mul_r(&one.from_i64(2));
+        let den = lp.add_r(&one).mul(&opt.sqr()).mul_2si(1);
         let eps = a.div(&den).norm();
         let e = eps.hi.clone();
         let e4 = e.sqr().sqr();
@@ -126,10 +129,10 @@ impl<R: Real> Theta<R> {
                 .add_r(&(eps4.hi.clone() * g2)),
         );
         // 1/θ₃(0, q⁴) = 1 − c', c' = E/(1 + E), E = 2q⁴ + 2q¹⁶
-        let big_e = q4.add_r(&pow[6]).mul_r(&one.from_i64(2)).norm();
+        let big_e = q4.add_r(&pow[6]).mul_2si(1).norm();
         let ev = big_e.hi.clone();
         let cprime = big_e.add_r(&(-(ev.sqr() / (one.clone() + ev))));
-        let half_opt = opt.mul_r(&one.mul_2si(-1));
+        let half_opt = opt.mul_2si(-1);
         let wdd = half_opt.add(
             &Dd {
                 hi: -half_opt.hi.clone(),
@@ -148,7 +151,7 @@ impl<R: Real> Theta<R> {
             let low = t8_rest - (e4.clone() * w_tail.clone()).mul_2si(1) - w_tail.sqr().mul_2si(-1)
                 + w.sqr() * w.clone() * (one.from_ratio(1, 3) - w.clone() * one.mul_2si(-2));
             let ln1p_w = eps4
-                .mul_r(&one.from_i64(2))
+                .mul_2si(1)
                 .add(&eps8.mul_r(&one.from_i64(13)))
                 .add_r(&low);
             let lnq = eps.ln().add(&ln1p_w);
@@ -185,7 +188,7 @@ impl<R: Real> Theta<R> {
     }
 
     /// `u/K` rounded to `f64`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn ratio_of(&self, u: f64) -> f64 {
         u * self.scale.v() * self.inv_period
     }
@@ -193,7 +196,7 @@ impl<R: Real> Theta<R> {
     /// Fast reduction of `u + u_lo` (`|u_lo| ≤ ulp(u)`): `(j, w_hi, w_lo)` with
     /// `u·scale = j·period + w`, or `None` when `|j| > 256` or `w` cancelled by more
     /// than 20 bits (then the caller reduces with the 150-bit quarter period).
-    #[inline]
+    #[inline(always)]
     pub(crate) fn reduce_fast(&self, u: &R, u_lo: f64, j: i64) -> Option<(R, f64)> {
         let z = self.scale.mul_r(u);
         let zl = z.lo + self.scale.v() * u_lo;
@@ -217,7 +220,7 @@ impl<R: Real> Theta<R> {
 
     /// `(sn, cn, dn)` from the reduced scaled argument `w = w_hi + w_lo` (`|w| ≲
     /// period/2`) in quadrant `j`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn eval(&self, j: i64, w: R, w_lo: f64) -> (R, R, R) {
         let out = match self.bottom {
             Bottom::Imaginary => self.eval_imaginary(j, w, w_lo),
@@ -227,7 +230,7 @@ impl<R: Real> Theta<R> {
     }
 
     /// [`Bottom::Series`]: `ζ = jπ/2 + w`.
-    #[inline]
+    #[inline(always)]
     fn eval_series(&self, j: i64, w: R, w_lo: f64) -> (R, R, R) {
         let (s0, c0) = w.sin_cos_kernel();
         let lo = w.from_f64(w_lo);
@@ -250,7 +253,7 @@ impl<R: Real> Theta<R> {
     }
 
     /// [`Bottom::Imaginary`]: `y = |w|`, `t = u − jK`, `y = πt/(2K')`.
-    #[inline]
+    #[inline(always)]
     fn eval_imaginary(&self, j: i64, w: R, w_lo: f64) -> (R, R, R) {
         let neg = w.to_f64() < 0.0;
         let (y, y_lo) = if neg { (-w, -w_lo) } else { (w, w_lo) };
@@ -302,7 +305,7 @@ impl<R: Real> Theta<R> {
     }
 
     /// `[s, c, d, h]` at `x`: `S = 1 + s`, `C = 1 + c`, `θ₄ = 1 + d`, `θ₃ = 1 + h`.
-    #[inline]
+    #[inline(always)]
     fn sums(&self, x: &R) -> [R; 4] {
         let [q, q2, q4, q6, q9, q12, q16] = &self.pow;
         let one = x.one();
@@ -326,6 +329,7 @@ impl<R: Real> Theta<R> {
 }
 
 /// `[q, q², q⁴, q⁶, q⁹, q¹², q¹⁶]`.
+#[inline(always)]
 fn powers<R: Real>(q: &R) -> [R; 7] {
     let q2 = q.sqr();
     let q4 = q2.sqr();
@@ -341,6 +345,7 @@ fn powers<R: Real>(q: &R) -> [R; 7] {
 /// `E₃ = 2q⁴ + 2q¹⁶`, `O₃ = 2q + 2q⁹`; DLMF 20.4.1–4).  Series: `θ₃/θ₂ − 1`,
 /// `θ₄/θ₂ − 1`, `θ₄/θ₃ − 1`; imaginary argument: `θ₃/θ₄ − 1`, `θ₂/θ₄ − 1`,
 /// `θ₂/θ₃ − 1`.  The differences are summed term by term (no cancellation).
+#[inline(always)]
 fn ratios<R: Real>(pow: &[R; 7], imaginary: bool) -> [R; 3] {
     let [q, q2, q4, q6, q9, q12, q16] = pow;
     let one = q.one();
@@ -369,7 +374,7 @@ fn ratios<R: Real>(pow: &[R; 7], imaginary: bool) -> [R; 3] {
 
 /// `(sn, cn, dn)(u)` from the values at `u − 2hK`, `2h = j − (j mod 2)`: sn and cn
 /// change sign with `h` (DLMF 22.4.3, `sn(t + 2K) = −sn t`, `cn(t + 2K) = −cn t`).
-#[inline]
+#[inline(always)]
 pub(crate) fn half_period_sign<R: Real>(j: i64, (s, c, d): (R, R, R)) -> (R, R, R) {
     if (j - j.rem_euclid(2)) / 2 % 2 == 0 {
         (s, c, d)
