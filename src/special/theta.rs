@@ -64,7 +64,8 @@ pub(crate) struct Theta<R> {
     pub period: Dd<R>,
     /// `1/period` rounded to `f64` (quadrant choice).
     inv_period: f64,
-    /// `κ'` of the evaluated modulus (odd quadrants at imaginary argument).
+    /// `κ'` of the evaluated modulus (odd quadrants at imaginary argument; zero for the
+    /// series, which does not use it).
     kp: R,
 }
 
@@ -173,12 +174,16 @@ impl<R: Real> Theta<R> {
             } else {
                 Bottom::Series
             },
-            inv_period: 1.0 / period.v(),
+            inv_period: if imaginary {
+                1.0 / period.v()
+            } else {
+                std::f64::consts::FRAC_2_PI
+            },
             pow,
             ratio,
             scale,
             period,
-            kp: mc.hi.sqrt(),
+            kp: if imaginary { mc.hi.sqrt() } else { one.zero() },
         }
     }
 
