@@ -1,8 +1,8 @@
 //! Times sn+cn+dn over the benchmark batch in-process (for scripts/bench_peers.py):
-//! `cargo run --release --example bench_batch -- BITS N REPEATS [all] [many] [fresh]`
+//! `cargo run --release --example bench_batch -- BITS N REPEATS [all] [many] [fresh] [k=K]`
 //! prints the median and the minimum over REPEATS of the time per evaluation in
 //! nanoseconds (with `all`: every batch's time per evaluation).  By default every
-//! argument is one `sncndn(u, k)` call with the fixed modulus k = 0.8; with `many` the
+//! argument is one `sncndn(u, k)` call with the fixed modulus k = 0.8 (or `k=K`); with `many` the
 //! batch is one `sncndn_many(&us, k)` call (f64 only); with `fresh` every call has its
 //! own modulus `k_i = 0.05 + 0.94·frac(i·φ)` (φ the golden ratio, so no two calls share
 //! a modulus and the moduli fill [0.05, 0.99] evenly).  Time is wall-clock time of the
@@ -28,11 +28,16 @@ fn main() {
     let (bits, n, reps) = (arg(1, 53) as u32, arg(2, 1000), arg(3, 5).max(1));
     let flag = |f: &str| a.iter().skip(4).any(|x| x == f);
     let fresh = flag("fresh");
+    let fixed_k: f64 = a
+        .iter()
+        .skip(4)
+        .find_map(|x| x.strip_prefix("k=").and_then(|v| v.parse().ok()))
+        .unwrap_or(0.8);
     let us: Vec<f64> = (0..n)
         .map(|i| -10.0 + 20.0 * (i as f64 + 0.5) / n as f64)
         .collect();
     let ks: Vec<f64> = (0..n)
-        .map(|i| if fresh { fresh_k(i) } else { 0.8 })
+        .map(|i| if fresh { fresh_k(i) } else { fixed_k })
         .collect();
     let p = bits.max(2);
     let us_mp: Vec<Float> = us.iter().map(|u| Float::with_val(p, *u)).collect();
@@ -41,7 +46,7 @@ fn main() {
     for _ in 0..reps {
         let t0 = Instant::now();
         if bits == 53 && flag("many") {
-            let out = sncndn_many(black_box(&us), black_box(&0.8)).expect("in domain");
+            let out = sncndn_many(black_box(&us), black_box(&fixed_k)).expect("in domain");
             black_box(out);
         } else if bits == 53 {
             let mut acc = 0.0;

@@ -170,11 +170,10 @@ impl<R: Real> FixedModulus<R> {
             _ => self.f.mul_r(u),
         };
         let out = match (&self.theta, self.bottom) {
-            (Some(th), _) => sncndn_theta(&v.hi, v.lo, th, &self.mc)?,
+            (Some(th), _) => sncndn_theta(&v.hi, v.lo, th, &self.m, &self.mc)?,
             (None, Bottom::TanhSech) => tanh_sech(&v.to_r(), &self.mc.hi),
             (None, _) => sine_cases(&v.to_r()),
         };
-        debug_assert!(self.m.v() >= 0.0);
         Ok(match self.form {
             Form::Direct => out,
             _ => untransform(self.form, &self.f.to_r(), out),
@@ -298,12 +297,34 @@ pub(crate) fn sncndn_theta<R: Real>(
     u: &R,
     u_lo: f64,
     th: &Theta<R>,
+    m: &Dd<R>,
     mc: &Dd<R>,
 ) -> Result<(R, R, R), SpecialError> {
     let j = quadrant(th.ratio_of(u.to_f64()), u)?;
     match th.reduce_fast(u, u_lo, j) {
         Some((w, w_lo)) => Ok(th.eval(j, w, w_lo)),
-        None => reduce_exact(u, u_lo, th, mc, j),
+        None => reduce_precise(u, u_lo, th, m, mc, j),
+    }
+}
+
+/// [`sncndn_theta`] when the fast reduction declined: again with the precise scale
+/// (series only), else the exact reduction.
+#[cold]
+fn reduce_precise<R: Real>(
+    u: &R,
+    u_lo: f64,
+    th: &Theta<R>,
+    m: &Dd<R>,
+    mc: &Dd<R>,
+    j: i64,
+) -> Result<(R, R, R), SpecialError> {
+    if th.precise {
+        return reduce_exact(u, u_lo, th, mc, j);
+    }
+    let precise = Theta::with_bottom(m, mc, th.bottom == Bottom::Imaginary, true);
+    match precise.reduce_fast(u, u_lo, j) {
+        Some((w, w_lo)) => Ok(precise.eval(j, w, w_lo)),
+        None => reduce_exact(u, u_lo, &precise, mc, j),
     }
 }
 

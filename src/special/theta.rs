@@ -62,6 +62,8 @@ pub(crate) struct Theta<R> {
     pub scale: Dd<R>,
     /// The quarter period in the scaled variable: `π/2` or `πK/(2K')`.
     pub period: Dd<R>,
+    /// Is `scale` good to about `2⁻⁸⁵` (else `2⁻⁶⁴`, see [`Theta::with_bottom`])?
+    pub precise: bool,
     /// `1/period` rounded to `f64` (quadrant choice).
     inv_period: f64,
     /// `κ'` of the evaluated modulus (odd quadrants at imaginary argument; zero for the
@@ -89,14 +91,18 @@ impl<R: Real> Theta<R> {
     /// double-doubles, `0 ≤ m`, `0 < mc`).
     #[inline(always)]
     pub(crate) fn new(m: &Dd<R>, mc: &Dd<R>) -> Self {
-        Self::with_bottom(m, mc, m.v() > 0.5)
+        Self::with_bottom(m, mc, m.v() > 0.5, false)
     }
 
     /// [`Theta::new`] with the bottom chosen by the caller (`imaginary`); both forms are
     /// exact for every modulus, the choice only keeps the nome small (tests cross-check
-    /// them where both nomes are moderate).
+    /// them where both nomes are moderate).  `precise` asks for the scale to about
+    /// `2⁻⁸⁵` also for the series (the nome in double-double); otherwise the series scale
+    /// takes the nome in `f64` and is good to about `2⁻⁶⁴`, which the fast reduction
+    /// allows for `|u| ≤ 64K` and 8 bits of cancellation (see [`Theta::reduce_fast`]).
     #[inline(always)]
-    pub(crate) fn with_bottom(m: &Dd<R>, mc: &Dd<R>, imaginary: bool) -> Self {
+    pub(crate) fn with_bottom(m: &Dd<R>, mc: &Dd<R>, imaginary: bool, precise: bool) -> Self {
+        let precise = precise || imaginary;
         let (a, b) = if imaginary { (mc, m) } else { (m, mc) };
         let (a, b) = (a.norm(), b.norm());
         let one = m.hi.one();
@@ -104,7 +110,11 @@ impl<R: Real> Theta<R> {
         let lp = t.sqr();
         let opt = t.add_r(&one);
         let den = lp.add_r(&one).mul(&opt.sqr()).mul_2si(1);
-        let eps = a.div(&den).norm();
+        let eps = if precise {
+            a.div(&den).norm()
+        } else {
+            Dd::from(a.hi.clone() / den.hi.clone())
+        };
         let e = eps.hi.clone();
         let e4 = e.sqr().sqr();
         // q = ε(1 + w), w = 2ε⁴ + 15ε⁸ + 150ε¹² + 1707ε¹⁶
@@ -116,31 +126,37 @@ impl<R: Real> Theta<R> {
                         + e4.clone() * (one.from_i64(20910) + e4.clone() * one.from_i64(268_616))));
         let w_tail = e4.sqr() * one.from_i64(15) + tail12.clone();
         let w = e4.clone().mul_2si(1) + w_tail.clone();
-        let eps4 = eps.sqr().sqr();
         let q = e.clone() + e.clone() * w.clone();
         let pow = powers(&q);
-        // q⁴ = ε⁴(1 + g), g = (1 + w)⁴ − 1 = 8ε⁴ + g₂, with ε⁴ in double-double and
-        // g₂ = 4·w_tail + w²(6 + 4w + w²) (about 84ε⁸) in `R`
+        // q⁴ = ε⁴(1 + g), g = (1 + w)⁴ − 1 = 8ε⁴ + g₂, g₂ = 4·w_tail + w²(6 + 4w + w²)
+        // (about 84ε⁸); with ε⁴ in double-double when `precise`
         let g2 = w_tail.mul_2si(2)
             + w.sqr() * (one.from_i64(6) + w.clone() * (one.from_i64(4) + w.clone()));
-        let q4 = eps4.add(
-            &eps4
-                .sqr()
-                .mul_r(&one.from_i64(8))
-                .add_r(&(eps4.hi.clone() * g2)),
-        );
-        // 1/θ₃(0, q⁴) = 1 − c', c' = E/(1 + E), E = 2q⁴ + 2q¹⁶
-        let big_e = q4.add_r(&pow[6]).mul_2si(1).norm();
-        let ev = big_e.hi.clone();
-        let cprime = big_e.add_r(&(-(ev.sqr() / (one.clone() + ev))));
+        let eps4 = if precise {
+            eps.sqr().sqr()
+        } else {
+            Dd::from(e4.clone())
+        };
         let half_opt = opt.mul_2si(-1);
-        let wdd = half_opt.add(
-            &Dd {
-                hi: -half_opt.hi.clone(),
-                lo: -half_opt.lo,
-            }
-            .mul(&cprime),
-        );
+        let wdd = if precise {
+            let q4 = eps4.add(&eps4.sqr().mul_2si(3).add_r(&(eps4.hi.clone() * g2)));
+            // 1/θ₃(0, q⁴) = 1 − c', c' = E/(1 + E), E = 2q⁴ + 2q¹⁶
+            let big_e = q4.add_r(&pow[6]).mul_2si(1).norm();
+            let ev = big_e.hi.clone();
+            let cprime = big_e.add_r(&(-(ev.sqr() / (one.clone() + ev))));
+            half_opt.add(
+                &Dd {
+                    hi: -half_opt.hi.clone(),
+                    lo: -half_opt.lo,
+                }
+                .mul(&cprime),
+            )
+        } else {
+            let q4 = e4.clone() * (one.clone() + e4.clone().mul_2si(3) + g2);
+            let big_e = (q4 + pow[6].clone()).mul_2si(1);
+            let cprime = big_e.clone() / (one.clone() + big_e);
+            half_opt.add_r(&-(half_opt.hi.clone() * cprime))
+        };
         let scale = wdd.sqr().norm();
         let period = if imaginary {
             // πK/(2K') = −ln(q)/2, ln q = ln ε + ln(1 + w), w = 2ε⁴ + t₈ with
@@ -174,6 +190,7 @@ impl<R: Real> Theta<R> {
             } else {
                 Bottom::Series
             },
+            precise,
             inv_period: if imaginary {
                 1.0 / period.v()
             } else {
@@ -198,9 +215,11 @@ impl<R: Real> Theta<R> {
         u * self.scale.v() * self.inv_period
     }
 
-    /// Fast reduction of `u + u_lo` (`|u_lo| ≤ ulp(u)`): `(j, w_hi, w_lo)` with
+    /// Fast reduction of `u + u_lo` (`|u_lo| ≤ ulp(u)`): `(w_hi, w_lo)` with
     /// `u·scale = j·period + w`, or `None` when `|j| > 256` or `w` cancelled by more
-    /// than 20 bits (then the caller reduces with the 150-bit quarter period).
+    /// than 20 bits (with the `f64`-nome scale of the series: `|j| > 64` or 8 bits), so
+    /// that `w` keeps about 56 bits of relative accuracy; then the caller retries with
+    /// the precise scale or reduces with the 150-bit quarter period.
     #[inline(always)]
     pub(crate) fn reduce_fast(&self, u: &R, u_lo: f64, j: i64) -> Option<(R, f64)> {
         let z = self.scale.mul_r(u);
@@ -208,7 +227,12 @@ impl<R: Real> Theta<R> {
         if j == 0 {
             return Some((z.hi, zl));
         }
-        if j.abs() > J_FAST {
+        let (j_max, cancel) = if self.precise {
+            (J_FAST, 2f64.powi(-20))
+        } else {
+            (64, 2f64.powi(-8))
+        };
+        if j.abs() > j_max {
             return None;
         }
         let jf = j as f64;
@@ -216,7 +240,7 @@ impl<R: Real> Theta<R> {
         let zv = z.v();
         let r1 = zv - a;
         let (h, l) = two_sum(r1, (zl - ae) - jf * self.period.lo);
-        if h.abs() < zv.abs() * 2f64.powi(-20) {
+        if h.abs() < zv.abs() * cancel {
             return None;
         }
         let hi = z.hi - self.period.hi.clone() * u.from_i64(j);
@@ -426,7 +450,7 @@ mod tests {
                 lo: e - k2.lo,
             }
             .norm();
-            let th = Theta::new(&k2, &mc);
+            let th = Theta::with_bottom(&k2, &mc, k2.v() > 0.5, true);
             let p = 256;
             let kf = Float::with_val(p, k);
             let kp = Float::with_val(p, 1 - Float::with_val(p, &kf * &kf)).sqrt();
