@@ -79,7 +79,10 @@ fn bench(c: &mut Criterion) {
     for bits in [1024u32, 4096] {
         let n = if bits == 1024 { 50 } else { 10 };
         let us_mp: Vec<Float> = batch(n).iter().map(|u| Float::with_val(bits, *u)).collect();
-        let ks_mp: Vec<Float> = fresh_ks(n).iter().map(|k| Float::with_val(bits, *k)).collect();
+        let ks_mp: Vec<Float> = fresh_ks(n)
+            .iter()
+            .map(|k| Float::with_val(bits, *k))
+            .collect();
         g.throughput(Throughput::Elements(n as u64));
         g.bench_function(format!("{bits}-bit sncndn fresh k x{n}"), |b| {
             b.iter(|| {
