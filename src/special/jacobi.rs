@@ -4,7 +4,7 @@
 use super::cache::{quarter_period_triple, with_chain, with_fixed, ChainData};
 use super::dd::{two_sum, with_fma, with_value, Dd};
 use super::reduce::reduce_dd2;
-use super::theta::{tanh_sech, Theta};
+use super::theta::{tanh_sech, Theta, SERIES_MAX_M};
 use super::{check_finite, check_modulus, show, SpecialError, GUARD};
 use crate::numbers::Real;
 
@@ -25,10 +25,11 @@ pub(crate) enum Modulus {
 pub(crate) enum Bottom {
     /// `sin`/`cos` with DLMF 22.10.4–6, below a descending Landen chain (multi-precision).
     Sine,
-    /// Theta quotients of the nome `q ≤ e^{−π}` (DLMF 22.2.4, 20.2.1–4; fixed precision).
+    /// Theta quotients of the nome `q < 0.1` (DLMF 22.2.4, 20.2.1–4; fixed precision,
+    /// `κ² ≤ 0.81`).
     Series,
     /// Theta quotients of the complementary nome at imaginary argument (DLMF Table
-    /// 22.6.1; fixed precision, `κ² > ½`).
+    /// 22.6.1; fixed precision, `κ² > 0.81`).
     Imaginary,
     /// `tanh`/`sech` with DLMF 22.10.7–9: exact at `κ = 1` (DLMF 22.5.ii).
     TanhSech,
@@ -145,7 +146,7 @@ impl<R: Real> FixedModulus<R> {
             Bottom::Sine
         } else if mc.v() == 0.0 {
             Bottom::TanhSech
-        } else if m.v() > 0.5 {
+        } else if m.v() > SERIES_MAX_M {
             Bottom::Imaginary
         } else {
             Bottom::Series
@@ -218,7 +219,7 @@ fn mp_modulus<R: Real>(spec: Spec<'_, R>, w: u32) -> (R, Modulus, R, Form) {
 ///    22.17.6–8 (`m < 0`) to a modulus `κ ∈ [0, 1]` (see [`Form`]);
 /// 2. `κ = 0`: `(sin u, cos u, 1)` (DLMF 22.5.3);
 /// 3. `κ = 1`: `(tanh u, sech u, sech u)` (DLMF 22.5.ii, [`Bottom::TanhSech`]);
-/// 4. fixed precision (`R::FIXED`): theta quotients, [`Bottom::Series`] for `κ² ≤ ½`
+/// 4. fixed precision (`R::FIXED`): theta quotients, [`Bottom::Series`] for `κ² ≤ 0.81`
 ///    (DLMF 22.2.4), [`Bottom::Imaginary`] above (DLMF Table 22.6.1), with per-modulus
 ///    data in double-double (module `theta`);
 /// 5. multi-precision: the descending Landen chain down to `κ_N⁴ < ε` and
@@ -515,7 +516,7 @@ pub fn sncndn_many<R: Real>(us: &[R], k: &R) -> Result<Vec<(R, R, R)>, SpecialEr
 /// 22.17.2–4.  For the parameter `m = k²` (also `m < 0`) see [`sncndn_m`].
 ///
 /// Algorithm (see the [module docs](crate::special) for why).  `f64`: theta quotients
-/// of a nome `q ≤ e^{−π}` (DLMF 22.2.4; for `k² > ½` those of `k'` at imaginary
+/// of a nome `q < 0.1` (DLMF 22.2.4; for `k² > 0.81` those of `k'` at imaginary
 /// argument, DLMF Table 22.6.1) with every per-modulus quantity in double-double, so a
 /// new `k` costs about one evaluation; measured absolute error below 2 ε.
 /// Multi-precision: reduction `u = jK + t` at `N + 40 + log2|j|` bits (adaptive),

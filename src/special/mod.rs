@@ -27,7 +27,7 @@
 //!
 //! * **Fixed precision** (`Real::FIXED`: `f64`, `Dual<f64>`; no guard bits, so every
 //!   rounding counts and speed matters; module `theta`): sn, cn, dn as theta quotients
-//!   (DLMF 22.2.4) of a nome `q ≤ e^{−π}` — the modulus itself for `κ² ≤ ½`, else the
+//!   (DLMF 22.2.4) of a nome `q < 0.1` — the modulus itself for `κ² ≤ 0.81`, else the
 //!   complementary modulus at imaginary argument (DLMF Table 22.6.1) — written as
 //!   `leading factor × (1 + small)` with the leading factor `sin ζ`, `cos ζ`, `tanh y`
 //!   or `sech y`, so every output keeps relative accuracy next to its zeros.  Every

@@ -9,12 +9,14 @@
 //! * `sn = θ₃(0)/θ₂(0) · θ₁(ζ)/θ₄(ζ)`, `cn = θ₄(0)/θ₂(0) · θ₂(ζ)/θ₄(ζ)`,
 //!   `dn = θ₄(0)/θ₃(0) · θ₃(ζ)/θ₄(ζ)`.
 //!
-//! [`Bottom::Series`] takes these for `κ² ≤ ½` (`q ≤ e^{−π} ≈ 0.0432`), and
-//! [`Bottom::Imaginary`] for `κ² > ½` takes them for the complementary modulus `κ'`
-//! (nome `q' ≤ e^{−π}`) at imaginary argument, by Jacobi's imaginary transformation
+//! [`Bottom::Series`] takes these for `κ² ≤ 0.81` (`q < 0.1`), and
+//! [`Bottom::Imaginary`] for `κ² > 0.81` takes them for the complementary modulus `κ'`
+//! (nome `q' < 0.013`) at imaginary argument, by Jacobi's imaginary transformation
 //! (DLMF Table 22.6.1): `sn(t,κ) = −i sn(it,κ')/cn(it,κ')`, `cn(t,κ) = 1/cn(it,κ')`,
-//! `dn(t,κ) = dn(it,κ')/cn(it,κ')`.  With `q ≤ e^{−π}` five terms of each theta series
-//! reach `2⁻⁷⁰` (the exponents grow like `n²`).
+//! `dn(t,κ) = dn(it,κ')/cn(it,κ')`.  With `q < 0.1` five terms of each theta series
+//! reach `2⁻⁶²` (the exponents grow like `n²`).  (The series is the cheaper of the two, so
+//! it is taken up to `κ = 0.9`; the switch at `q = q' = e^{−π}`, `κ² = ½`, would
+//! balance the nomes.)
 //!
 //! Written with `x = sin²ζ` (resp. `x = −sinh²y` at imaginary argument),
 //! `θ₁(ζ)/(2q^¼) = sin ζ·S(x)`, `θ₂(ζ)/(2q^¼) = cos ζ·C(x)`, `θ₃(ζ) = 1 + h(x)`,
@@ -43,6 +45,9 @@ use crate::numbers::Real;
 
 /// `π/2` as a double-double.
 const PI_2: (f64, f64) = (std::f64::consts::FRAC_PI_2, 6.123_233_995_736_766e-17);
+
+/// Largest `κ²` taken by [`Bottom::Series`] (nome below 0.1).
+pub(crate) const SERIES_MAX_M: f64 = 0.81;
 
 /// Largest quadrant handled by the double-double reduction.  Beyond it (and when the
 /// reduced argument cancels by more than 20 bits) the caller reduces with the
@@ -91,7 +96,7 @@ impl<R: Real> Theta<R> {
     /// double-doubles, `0 ≤ m`, `0 < mc`).
     #[inline(always)]
     pub(crate) fn new(m: &Dd<R>, mc: &Dd<R>) -> Self {
-        Self::with_bottom(m, mc, m.v() > 0.5, false)
+        Self::with_bottom(m, mc, m.v() > SERIES_MAX_M, false)
     }
 
     /// [`Theta::new`] with the bottom chosen by the caller (`imaginary`); both forms are
@@ -110,20 +115,29 @@ impl<R: Real> Theta<R> {
         let lp = t.sqr();
         let opt = t.add_r(&one);
         let den = lp.add_r(&one).mul(&opt.sqr()).mul_2si(1);
+        let eps_f = a.hi.clone() / den.hi.clone();
+        // the f64 nome is enough while E = 2q⁴ ≤ 2⁻²³ (its error then stays below 2⁻⁷⁰)
+        let precise = precise || eps_f.to_f64().powi(4) > 2f64.powi(-24);
         let eps = if precise {
             a.div(&den).norm()
         } else {
-            Dd::from(a.hi.clone() / den.hi.clone())
+            Dd::from(eps_f)
         };
         let e = eps.hi.clone();
         let e4 = e.sqr().sqr();
-        // q = ε(1 + w), w = 2ε⁴ + 15ε⁸ + 150ε¹² + 1707ε¹⁶
+        // q = ε(1 + w), w = 2ε⁴ + 15ε⁸ + 150ε¹² + 1707ε¹⁶ + … (OEIS A002103)
         let tail12 = e4.sqr()
             * e4.clone()
             * (one.from_i64(150)
                 + e4.clone()
                     * (one.from_i64(1707)
-                        + e4.clone() * (one.from_i64(20910) + e4.clone() * one.from_i64(268_616))));
+                        + e4.clone()
+                            * (one.from_i64(20910)
+                                + e4.clone()
+                                    * (one.from_i64(268_616)
+                                        + e4.clone()
+                                            * (one.from_i64(3_567_400)
+                                                + e4.clone() * one.from_i64(48_555_069))))));
         let w_tail = e4.sqr() * one.from_i64(15) + tail12.clone();
         let w = e4.clone().mul_2si(1) + w_tail.clone();
         let q = e.clone() + e.clone() * w.clone();
@@ -357,7 +371,7 @@ impl<R: Real> Theta<R> {
     }
 }
 
-/// `[q, q², q⁴, q⁶, q⁹, q¹², q¹⁶]`.
+/// `[q, q², q⁴, q⁶, q⁹, q¹², q¹⁶]` (and `q²⁰` separately where needed).
 #[inline(always)]
 fn powers<R: Real>(q: &R) -> [R; 7] {
     let q2 = q.sqr();
@@ -370,7 +384,7 @@ fn powers<R: Real>(q: &R) -> [R; 7] {
 }
 
 /// The theta-null quotients minus one, from `θ₂(0)/(2q^¼) = 1 + E₂`,
-/// `θ₃(0) = 1 + E₃ + O₃`, `θ₄(0) = 1 + E₃ − O₃` (`E₂ = q² + q⁶ + q¹²`,
+/// `θ₃(0) = 1 + E₃ + O₃`, `θ₄(0) = 1 + E₃ − O₃` (`E₂ = q² + q⁶ + q¹² + q²⁰`,
 /// `E₃ = 2q⁴ + 2q¹⁶`, `O₃ = 2q + 2q⁹`; DLMF 20.4.1–4).  Series: `θ₃/θ₂ − 1`,
 /// `θ₄/θ₂ − 1`, `θ₄/θ₃ − 1`; imaginary argument: `θ₃/θ₄ − 1`, `θ₂/θ₄ − 1`,
 /// `θ₂/θ₃ − 1`.  The differences are summed term by term (no cancellation).
@@ -378,7 +392,7 @@ fn powers<R: Real>(q: &R) -> [R; 7] {
 fn ratios<R: Real>(pow: &[R; 7], imaginary: bool) -> [R; 3] {
     let [q, q2, q4, q6, q9, q12, q16] = pow;
     let one = q.one();
-    let e2 = q2.clone() + q6.clone() + q12.clone();
+    let e2 = q2.clone() + q6.clone() + q12.clone() + q16.clone() * q4.clone();
     let e3 = (q4.clone() + q16.clone()).mul_2si(1);
     let o3 = (q.clone() + q9.clone()).mul_2si(1);
     let th3 = one.clone() + e3.clone() + o3.clone();
