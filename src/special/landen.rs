@@ -27,11 +27,13 @@ impl<R: Real> Chain<R> {
     /// `k_N⁴ < ε/4`, where DLMF 22.10.4–6 is exact to rounding.
     pub(crate) fn new(k: &R, kp: &R) -> Result<Self, SpecialError> {
         let one = k.one();
-        let tol = k.epsilon().mul_2si(-2);
+        // the stopping test k_N⁴ < ε/4 needs no full precision: 64 bits (same exponent
+        // range) suffice
+        let tol = k.epsilon().mul_2si(-2).with_prec(64);
         let mut levels = Vec::new();
         let (mut kc, mut kpc) = (k.clone(), kp.clone());
         let mut prod = one.clone();
-        while kc.sqr().sqr() > tol {
+        while kc.with_prec(64).sqr().sqr() > tol {
             if levels.len() >= 64 {
                 return Err(SpecialError::NoConvergence(
                     "Landen chain of moduli did not converge in 64 steps".into(),
