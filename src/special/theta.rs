@@ -107,111 +107,33 @@ impl<R: Real> Theta<R> {
     /// allows for `|u| ≤ 64K` and 8 bits of cancellation (see [`Theta::reduce_fast`]).
     #[inline(always)]
     pub(crate) fn with_bottom(m: &Dd<R>, mc: &Dd<R>, imaginary: bool, precise: bool) -> Self {
-        let precise = precise || imaginary;
         let (a, b) = if imaginary { (mc, m) } else { (m, mc) };
-        let (a, b) = (a.norm(), b.norm());
+        let nome = Nome::new(&a.norm(), &b.norm(), precise || imaginary);
+        let pow = powers(&nome.q);
+        let scale = nome.scale(&pow[6]);
         let one = m.hi.one();
-        let t = quarter_root(&b);
-        let lp = t.sqr();
-        let opt = t.add_r(&one);
-        let den = lp.add_r(&one).mul(&opt.sqr()).mul_2si(1);
-        let eps_f = a.hi.clone() / den.hi.clone();
-        // the f64 nome is enough while E = 2q⁴ ≤ 2⁻²³ (its error then stays below 2⁻⁷⁰)
-        let precise = precise || eps_f.to_f64().powi(4) > 2f64.powi(-24);
-        let eps = if precise {
-            a.div(&den).norm()
-        } else {
-            Dd::from(eps_f)
-        };
-        let e = eps.hi.clone();
-        let e4 = e.sqr().sqr();
-        // q = ε(1 + w), w = 2ε⁴ + 15ε⁸ + 150ε¹² + 1707ε¹⁶ + … (OEIS A002103)
-        let tail12 = e4.sqr()
-            * e4.clone()
-            * (one.from_i64(150)
-                + e4.clone()
-                    * (one.from_i64(1707)
-                        + e4.clone()
-                            * (one.from_i64(20910)
-                                + e4.clone()
-                                    * (one.from_i64(268_616)
-                                        + e4.clone()
-                                            * (one.from_i64(3_567_400)
-                                                + e4.clone() * one.from_i64(48_555_069))))));
-        let w_tail = e4.sqr() * one.from_i64(15) + tail12.clone();
-        let w = e4.clone().mul_2si(1) + w_tail.clone();
-        let q = e.clone() + e.clone() * w.clone();
-        let pow = powers(&q);
-        // q⁴ = ε⁴(1 + g), g = (1 + w)⁴ − 1 = 8ε⁴ + g₂, g₂ = 4·w_tail + w²(6 + 4w + w²)
-        // (about 84ε⁸); with ε⁴ in double-double when `precise`
-        let g2 = w_tail.mul_2si(2)
-            + w.sqr() * (one.from_i64(6) + w.clone() * (one.from_i64(4) + w.clone()));
-        let eps4 = if precise {
-            eps.sqr().sqr()
-        } else {
-            Dd::from(e4.clone())
-        };
-        let half_opt = opt.mul_2si(-1);
-        let wdd = if precise {
-            let q4 = eps4.add(&eps4.sqr().mul_2si(3).add_r(&(eps4.hi.clone() * g2)));
-            // 1/θ₃(0, q⁴) = 1 − c', c' = E/(1 + E), E = 2q⁴ + 2q¹⁶
-            let big_e = q4.add_r(&pow[6]).mul_2si(1).norm();
-            let ev = big_e.hi.clone();
-            let cprime = big_e.add_r(&(-(ev.sqr() / (one.clone() + ev))));
-            half_opt.add(
-                &Dd {
-                    hi: -half_opt.hi.clone(),
-                    lo: -half_opt.lo,
-                }
-                .mul(&cprime),
-            )
-        } else {
-            let q4 = e4.clone() * (one.clone() + e4.clone().mul_2si(3) + g2);
-            let big_e = (q4 + pow[6].clone()).mul_2si(1);
-            let cprime = big_e.clone() / (one.clone() + big_e);
-            half_opt.add_r(&-(half_opt.hi.clone() * cprime))
-        };
-        let scale = wdd.sqr().norm();
         let period = if imaginary {
-            // πK/(2K') = −ln(q)/2, ln q = ln ε + ln(1 + w), w = 2ε⁴ + t₈ with
-            // t₈ = 15ε⁸ + 150ε¹² + …: ln(1 + w) = w − w²/2 + w³/3 − w⁴/4
-            // = 2ε⁴ + 13ε⁸ + (t₈ − 15ε⁸) − 2ε⁴t₈ − t₈²/2 + w³(1/3 − w/4), the first two
-            // terms from ε in double-double
-            let eps8 = eps4.sqr();
-            let t8_rest = tail12.clone();
-            let low = t8_rest - (e4.clone() * w_tail.clone()).mul_2si(1) - w_tail.sqr().mul_2si(-1)
-                + w.sqr() * w.clone() * (one.from_ratio(1, 3) - w.clone() * one.mul_2si(-2));
-            let ln1p_w = eps4
-                .mul_2si(1)
-                .add(&eps8.mul_r(&one.from_i64(13)))
-                .add_r(&low);
-            let lnq = eps.ln().add(&ln1p_w);
-            Dd {
-                hi: -lnq.hi.mul_2si(-1),
-                lo: -lnq.lo / 2.0,
-            }
-            .norm()
+            nome.half_log_period()
         } else {
             Dd {
                 hi: one.from_f64(PI_2.0),
                 lo: PI_2.1,
             }
         };
-        let ratio = ratios(&pow, imaginary);
         Theta {
             bottom: if imaginary {
                 Bottom::Imaginary
             } else {
                 Bottom::Series
             },
-            precise,
+            precise: nome.precise,
             inv_period: if imaginary {
                 1.0 / period.v()
             } else {
                 std::f64::consts::FRAC_2_PI
             },
+            ratio: ratios(&pow, imaginary),
             pow,
-            ratio,
             scale,
             period,
             kp: if imaginary { mc.hi.sqrt() } else { one.zero() },
@@ -368,6 +290,135 @@ impl<R: Real> Theta<R> {
         let even = (q4.clone() * t2 + q16.clone() * t4).mul_2si(1);
         let odd = (q.clone() * t1 + q9.clone() * t3).mul_2si(1);
         [s, c, even.clone() - odd.clone(), even + odd]
+    }
+}
+
+/// The nome of the theta modulus `λ` (`λ² = a`, `λ'² = b`) and what the scale and the
+/// period are made of: `T = √λ'`, `ε = λ²/(2(1 + λ')(1 + T)²)` and Jacobi's series
+/// `q = ε(1 + w)`, `w = 2ε⁴ + t₈`, `t₈ = 15ε⁸ + 150ε¹² + 1707ε¹⁶ + …` (OEIS A002103).
+struct Nome<R> {
+    /// `1 + T`.
+    opt: Dd<R>,
+    /// `ε` (double-double when `precise`).
+    eps: Dd<R>,
+    /// `ε⁴`, `t₈ − 15ε⁸`, `t₈`, `w` in `R`.
+    e4: R,
+    tail12: R,
+    w_tail: R,
+    w: R,
+    /// The nome.
+    q: R,
+    /// Is `ε` a double-double (scale to about `2⁻⁸⁵`)?
+    precise: bool,
+}
+
+impl<R: Real> Nome<R> {
+    #[inline(always)]
+    fn new(a: &Dd<R>, b: &Dd<R>, precise: bool) -> Self {
+        let one = a.hi.one();
+        let t = quarter_root(b);
+        let opt = t.add_r(&one);
+        let den = t.sqr().add_r(&one).mul(&opt.sqr()).mul_2si(1);
+        let eps_f = a.hi.clone() / den.hi.clone();
+        // the f64 nome is enough while E = 2q⁴ ≤ 2⁻²³ (its error then stays below 2⁻⁷⁰)
+        let precise = precise || eps_f.to_f64().powi(4) > 2f64.powi(-24);
+        let eps = if precise {
+            a.div(&den).norm()
+        } else {
+            Dd::from(eps_f)
+        };
+        let e = eps.hi.clone();
+        let e4 = e.sqr().sqr();
+        let c = |n: i64| one.from_i64(n);
+        let tail12 = e4.sqr()
+            * e4.clone()
+            * (c(150)
+                + e4.clone()
+                    * (c(1707)
+                        + e4.clone()
+                            * (c(20910)
+                                + e4.clone()
+                                    * (c(268_616)
+                                        + e4.clone()
+                                            * (c(3_567_400) + e4.clone() * c(48_555_069))))));
+        let w_tail = e4.sqr() * c(15) + tail12.clone();
+        let w = e4.clone().mul_2si(1) + w_tail.clone();
+        let q = e.clone() + e * w.clone();
+        Nome {
+            opt,
+            eps,
+            e4,
+            tail12,
+            w_tail,
+            w,
+            q,
+            precise,
+        }
+    }
+
+    /// `ε⁴` (double-double when `precise`).
+    #[inline(always)]
+    fn eps4(&self) -> Dd<R> {
+        if self.precise {
+            self.eps.sqr().sqr()
+        } else {
+            Dd::from(self.e4.clone())
+        }
+    }
+
+    /// `π/(2K_λ) = AGM(1, λ') = ((1 + T)/(2θ₃(0, q⁴)))²` with `1/θ₃(0, q⁴) = 1 − c'`,
+    /// `c' = E/(1 + E)`, `E = 2q⁴ + 2q¹⁶`, and `q⁴ = ε⁴(1 + g)`,
+    /// `g = (1 + w)⁴ − 1 = 8ε⁴ + g₂`, `g₂ = 4t₈ + w²(6 + 4w + w²)` (about `84ε⁸`).
+    #[inline(always)]
+    fn scale(&self, q16: &R) -> Dd<R> {
+        let one = self.q.one();
+        let (w, e4) = (&self.w, &self.e4);
+        let g2 = self.w_tail.mul_2si(2)
+            + w.sqr() * (one.from_i64(6) + w.clone() * (one.from_i64(4) + w.clone()));
+        let half_opt = self.opt.mul_2si(-1);
+        let wdd = if self.precise {
+            let eps4 = self.eps4();
+            let q4 = eps4.add(&eps4.sqr().mul_2si(3).add_r(&(eps4.hi.clone() * g2)));
+            let big_e = q4.add_r(q16).mul_2si(1).norm();
+            let ev = big_e.hi.clone();
+            let cprime = big_e.add_r(&(-(ev.sqr() / (one.clone() + ev))));
+            let neg = Dd {
+                hi: -half_opt.hi.clone(),
+                lo: -half_opt.lo,
+            };
+            half_opt.add(&neg.mul(&cprime))
+        } else {
+            let q4 = e4.clone() * (one.clone() + e4.mul_2si(3) + g2);
+            let big_e = (q4 + q16.clone()).mul_2si(1);
+            let cprime = big_e.clone() / (one + big_e);
+            half_opt.add_r(&-(half_opt.hi.clone() * cprime))
+        };
+        wdd.sqr().norm()
+    }
+
+    /// `−ln(q)/2` (the quarter period `πK/(2K')` at imaginary argument):
+    /// `ln q = ln ε + ln(1 + w)`, `ln(1 + w) = w − w²/2 + w³/3 − w⁴/4
+    /// = 2ε⁴ + 13ε⁸ + (t₈ − 15ε⁸) − 2ε⁴t₈ − t₈²/2 + w³(1/3 − w/4)`, the first two terms
+    /// from `ε` in double-double ([`Dd::ln`] for `ln ε`).
+    #[inline(always)]
+    fn half_log_period(&self) -> Dd<R> {
+        let one = self.q.one();
+        let (w, e4, w_tail) = (&self.w, &self.e4, &self.w_tail);
+        let eps4 = self.eps4();
+        let low = self.tail12.clone()
+            - (e4.clone() * w_tail.clone()).mul_2si(1)
+            - w_tail.sqr().mul_2si(-1)
+            + w.sqr() * w.clone() * (one.from_ratio(1, 3) - w.clone() * one.mul_2si(-2));
+        let ln1p_w = eps4
+            .mul_2si(1)
+            .add(&eps4.sqr().mul_r(&one.from_i64(13)))
+            .add_r(&low);
+        let lnq = self.eps.ln().add(&ln1p_w);
+        Dd {
+            hi: -lnq.hi.mul_2si(-1),
+            lo: -lnq.lo / 2.0,
+        }
+        .norm()
     }
 }
 
