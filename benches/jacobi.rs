@@ -1,6 +1,7 @@
 //! Criterion benchmarks of sn+cn+dn (one call returns all three; also the slice call
-//! `sncndn_many`): f64 and 1024-bit
-//! MPFR, real argument, plus complex f64.  `cargo bench --bench jacobi`.
+//! `sncndn_many`): f64, 1024- and 4096-bit MPFR, real argument, with one modulus for the
+//! batch or a new modulus on every call ("fresh k"), plus complex f64.
+//! `cargo bench --bench jacobi`.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 use eulertop::numbers::C64;
@@ -15,8 +16,16 @@ fn batch(n: usize) -> Vec<f64> {
         .collect()
 }
 
+/// The fresh-modulus sequence of examples/bench_batch.rs: k_i = 0.05 + 0.94·frac(i·φ).
+fn fresh_ks(n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| 0.05 + 0.94 * (i as f64 * 0.618_033_988_749_894_9).fract())
+        .collect()
+}
+
 fn bench(c: &mut Criterion) {
     let us = batch(1000);
+    let ks = fresh_ks(1000);
     let mut g = c.benchmark_group("jacobi");
     g.throughput(Throughput::Elements(us.len() as u64));
     g.bench_function("f64 sncndn x1000", |b| {
@@ -24,6 +33,16 @@ fn bench(c: &mut Criterion) {
             let mut acc = 0.0;
             for u in &us {
                 let (s, c, d) = sncndn(black_box(u), black_box(&0.8)).unwrap();
+                acc += s + c + d;
+            }
+            acc
+        })
+    });
+    g.bench_function("f64 sncndn fresh k x1000", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for (u, k) in us.iter().zip(&ks) {
+                let (s, c, d) = sncndn(black_box(u), black_box(k)).unwrap();
                 acc += s + c + d;
             }
             acc
@@ -57,6 +76,22 @@ fn bench(c: &mut Criterion) {
             }
         })
     });
+    for bits in [1024u32, 4096] {
+        let n = if bits == 1024 { 50 } else { 10 };
+        let us_mp: Vec<Float> = batch(n).iter().map(|u| Float::with_val(bits, *u)).collect();
+        let ks_mp: Vec<Float> = fresh_ks(n)
+            .iter()
+            .map(|k| Float::with_val(bits, *k))
+            .collect();
+        g.throughput(Throughput::Elements(n as u64));
+        g.bench_function(format!("{bits}-bit sncndn fresh k x{n}"), |b| {
+            b.iter(|| {
+                for (u, k) in us_mp.iter().zip(&ks_mp) {
+                    black_box(sncndn(black_box(u), black_box(k)).unwrap());
+                }
+            })
+        });
+    }
     g.finish();
 }
 

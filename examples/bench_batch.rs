@@ -1,50 +1,63 @@
 //! Times sn+cn+dn over the benchmark batch in-process (for scripts/bench_peers.py):
-//! `cargo run --release --example bench_batch -- BITS N REPEATS [all] [many]`
+//! `cargo run --release --example bench_batch -- BITS N REPEATS [all] [many] [fresh] [k=K]`
 //! prints the median and the minimum over REPEATS of the time per evaluation in
 //! nanoseconds (with `all`: every batch's time per evaluation).  By default every
-//! argument is one `sncndn(u, k)` call; with `many` the batch is one
-//! `sncndn_many(&us, k)` call (f64 only).  Time is wall-clock time of the batch (`std::time::Instant`): on this
-//! machine the per-thread CPU clocks (`/proc/thread-self/schedstat`,
-//! `CLOCK_THREAD_CPUTIME_ID`) advance in scheduler ticks of 4 ms, too coarse for a
-//! batch of a few milliseconds, so wall time over many repeats is used and both the
-//! median and the minimum are reported.
-//! Batch: u_i = −10 + 20·(i + 0.5)/N, modulus k = 0.8 (parameter m = 0.64).
+//! argument is one `sncndn(u, k)` call with the fixed modulus k = 0.8 (or `k=K`); with `many` the
+//! batch is one `sncndn_many(&us, k)` call (f64 only); with `fresh` every call has its
+//! own modulus `k_i = 0.05 + 0.94·frac(i·φ)` (φ the golden ratio, so no two calls share
+//! a modulus and the moduli fill [0.05, 0.99] evenly).  Time is wall-clock time of the
+//! batch (`std::time::Instant`; the per-thread CPU clocks of the build machine advance
+//! in scheduler ticks of 4 ms, too coarse for a batch of a few milliseconds), and both
+//! the median and the minimum are reported.
+//! Batch: u_i = −10 + 20·(i + 0.5)/N.
 
 use eulertop::special::{sncndn, sncndn_many};
 use rug::Float;
 use std::hint::black_box;
 use std::time::Instant;
 
+/// The modulus of call `i` in the fresh-modulus mode.
+fn fresh_k(i: usize) -> f64 {
+    let phi = 0.618_033_988_749_894_9_f64;
+    0.05 + 0.94 * (i as f64 * phi).fract()
+}
+
 fn main() {
     let a: Vec<String> = std::env::args().collect();
     let arg = |i: usize, d: usize| a.get(i).and_then(|s| s.parse().ok()).unwrap_or(d);
     let (bits, n, reps) = (arg(1, 53) as u32, arg(2, 1000), arg(3, 5).max(1));
     let flag = |f: &str| a.iter().skip(4).any(|x| x == f);
+    let fresh = flag("fresh");
+    let fixed_k: f64 = a
+        .iter()
+        .skip(4)
+        .find_map(|x| x.strip_prefix("k=").and_then(|v| v.parse().ok()))
+        .unwrap_or(0.8);
     let us: Vec<f64> = (0..n)
         .map(|i| -10.0 + 20.0 * (i as f64 + 0.5) / n as f64)
         .collect();
-    let k = Float::with_val(bits.max(2), 0.8);
-    let us_mp: Vec<Float> = if bits == 53 {
-        Vec::new()
-    } else {
-        us.iter().map(|u| Float::with_val(bits, *u)).collect()
-    };
+    let ks: Vec<f64> = (0..n)
+        .map(|i| if fresh { fresh_k(i) } else { fixed_k })
+        .collect();
+    let p = bits.max(2);
+    let us_mp: Vec<Float> = us.iter().map(|u| Float::with_val(p, *u)).collect();
+    let ks_mp: Vec<Float> = ks.iter().map(|k| Float::with_val(p, *k)).collect();
     let mut times = Vec::new();
     for _ in 0..reps {
         let t0 = Instant::now();
         if bits == 53 && flag("many") {
-            let out = sncndn_many(black_box(&us), black_box(&0.8)).expect("in domain");
+            let out = sncndn_many(black_box(&us), black_box(&fixed_k)).expect("in domain");
             black_box(out);
         } else if bits == 53 {
             let mut acc = 0.0;
-            for u in &us {
-                let (s, c, d) = sncndn(black_box(u), black_box(&0.8)).expect("in domain");
+            for (u, k) in us.iter().zip(&ks) {
+                let (s, c, d) = sncndn(black_box(u), black_box(k)).expect("in domain");
                 acc += s + c + d;
             }
             black_box(acc);
         } else {
-            for u in &us_mp {
-                black_box(sncndn(u, &k).expect("in domain"));
+            for (u, k) in us_mp.iter().zip(&ks_mp) {
+                black_box(sncndn(u, k).expect("in domain"));
             }
         }
         times.push(t0.elapsed().as_nanos() as f64 / n as f64);

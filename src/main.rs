@@ -23,7 +23,7 @@ enum Command {
     Audit(eulertop::cli::audit::Args),
     /// Evaluate an expression of the catalogue language.
     Eval(eulertop::cli::eval::Args),
-    /// sn, cn, dn of `u k` lines from stdin (`--complex`: `re(u) im(u) k`).
+    /// Jacobi functions of `u k` lines from stdin, k the modulus (`--parameter`: m = k²).
     Jacobi(eulertop::cli::jacobi::Args),
     /// Iterates a discretization of the Euler top (impl spec / VM) from M1 M2 M3.
     Step(eulertop::cli::step::Args),

@@ -86,7 +86,7 @@ fn complex_output() {
 #[test]
 fn errors_exit_2_with_line_number() {
     for (args, input, what) in [
-        (&[][..], "0.5 0.5\n0.1 0.2\n1 1\n", "line 3"),
+        (&[][..], "0.5 0.5\n0.1 0.2\n1 -1\n", "line 3"),
         (&[][..], "0.5 abc\n", "line 1"),
         (&[][..], "0.5\n", "line 1"),
         (&["--bits", "128"][..], "0.5 -0.5\n", "line 1"),

@@ -187,3 +187,32 @@ fn cn_relative_accuracy_next_to_zeros() {
         bad.iter().take(20).cloned().collect::<Vec<_>>().join("\n")
     );
 }
+
+/// The whole accepted range `|u|/K < 2⁵⁰`: `u = ±K·2^e·(1 + f)` for `e` from 8 to 49.9
+/// and irregular `f ∈ [0, 1)` (600 points per modulus), absolute error ≤ 2⁻⁵¹ as on the
+/// short grids; at and beyond `2⁵⁰ K` a clear refusal.
+#[test]
+fn huge_arguments_abs_error() {
+    let mut rows = Vec::new();
+    let mut bad = Vec::new();
+    for k in [0.1, 0.5, 0.8, 0.9, 0.99, 0.999999, 1.0 - 1e-12] {
+        let kk = ellipk(&k).unwrap();
+        let us: Vec<f64> = (0..600)
+            .map(|i| {
+                let e = 8.0 + 41.9 * (i as f64) / 599.0;
+                let f = (i as f64 * 0.618_033_988_749_895).fract();
+                let sign = if i % 2 == 0 { 1.0 } else { -1.0 };
+                sign * kk * 2f64.powf(e) * (1.0 + f) / 2.0
+            })
+            .collect();
+        let (w, b) = sweep(k, &us);
+        rows.push((k, w));
+        bad.extend(b);
+        let beyond = kk * 2f64.powi(50) * 1.001;
+        assert!(
+            sncndn(&beyond, &k).is_err(),
+            "k = {k}: u = {beyond:e} beyond 2^50 K must be refused"
+        );
+    }
+    report("huge arguments", &rows, &bad);
+}

@@ -1,17 +1,24 @@
-//! `eulertop jacobi`: sn, cn, dn of arguments read from standard input.
+//! `eulertop jacobi`: Jacobi elliptic functions of arguments read from standard input.
 //!
-//! Each input line is `u k` (or `re(u) im(u) k` with `--complex`); each output line is
-//! `sn cn dn` (with `--complex`: `sn.re sn.im cn.re cn.im dn.re dn.im`).  Blank lines
-//! and lines starting with `#` are skipped.  `--bits 53` (default) uses the `f64` code
-//! path and prints 17 significant digits; any other `N ≥ 2` uses MPFR at `N` bits and
-//! prints `ceil(N·log10 2) + 2` digits.  Inputs are read as decimals rounded to the
-//! working precision.  A malformed line or an out-of-domain modulus stops with
-//! `eulertop: line L: …` on standard error and exit status 2.
+//! Each input line is `u k` with `k ≥ 0` the **modulus** (`--parameter`: `u m` with the
+//! parameter `m = k²`, any real), or `re(u) im(u) k` with `--complex` (`0 ≤ k < 1`).
+//! Each output line holds the functions chosen by `--functions` (default `sn,cn,dn`;
+//! any of the twelve `sn cn dn cd dc ns nc nd sc sd cs ds`), each as one number (with
+//! `--complex`: real and imaginary part).  Blank lines and lines starting with `#` are
+//! skipped.  `--bits 53` (default) uses the `f64` code path and prints 17 significant
+//! digits; any other `N ≥ 2` uses MPFR at `N` bits and prints `ceil(N·log10 2) + 2`
+//! digits.  Inputs are read as decimals rounded to the working precision.  A malformed
+//! line (also one that is not UTF-8 or longer than 4096 bytes), a number that overflows
+//! `f64`, an out-of-domain modulus or a pole stops with `eulertop: line L: …` (the
+//! offending text cut to 40 characters) on standard error and exit status 2.
 
 use super::CliError;
 use crate::numbers::{Cplx, Real};
-use crate::special::{sncndn, sncndn_complex};
-use std::io::{BufRead, Write};
+use crate::special::{jacobi, jacobi_complex, jacobi_m, JacobiFn, SpecialError};
+use std::io::{BufRead, Read, Write};
+
+/// Longest accepted input line in bytes.
+const MAX_LINE: usize = 4096;
 
 /// Arguments of `eulertop jacobi`.
 #[derive(clap::Args, Debug)]
@@ -22,6 +29,33 @@ pub struct Args {
     /// Complex argument: lines are `re(u) im(u) k`.
     #[arg(long)]
     pub complex: bool,
+    /// Lines are `u m` with the parameter m = k² (any real; m < 0 is an imaginary
+    /// modulus) instead of the modulus k.
+    #[arg(long)]
+    pub parameter: bool,
+    /// The functions to print, comma-separated, from sn cn dn cd dc ns nc nd sc sd cs ds.
+    #[arg(long, default_value = "sn,cn,dn", value_parser = parse_functions)]
+    pub functions: Functions,
+}
+
+/// A list of Jacobi functions (`--functions`).
+#[derive(Clone, Debug)]
+pub struct Functions(pub Vec<JacobiFn>);
+
+/// Parses `--functions`.
+fn parse_functions(s: &str) -> Result<Functions, String> {
+    let list: Result<Vec<JacobiFn>, String> = s
+        .split(',')
+        .map(|name| {
+            JacobiFn::from_name(name.trim()).ok_or_else(|| {
+                format!(
+                    "unknown function '{}' (expected sn cn dn cd dc ns nc nd sc sd cs ds)",
+                    excerpt(name)
+                )
+            })
+        })
+        .collect();
+    list.map(Functions)
 }
 
 /// Runs the subcommand on stdin/stdout; returns the exit status.
@@ -32,77 +66,179 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             args.bits
         )));
     }
+    if args.complex && args.parameter {
+        return Err(CliError::new(
+            "--parameter is not available with --complex (give the modulus k)",
+        ));
+    }
     let stdin = std::io::stdin();
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
     let input = stdin.lock();
+    let opts = Options {
+        complex: args.complex,
+        parameter: args.parameter,
+        functions: args.functions.0,
+    };
     if args.bits == 53 {
-        process(input, &mut out, 0.0_f64, 17, args.complex)
+        process(input, &mut out, 0.0_f64, 17, &opts)
     } else {
         let digits = (args.bits as f64 * std::f64::consts::LOG10_2).ceil() as usize + 2;
-        process(
-            input,
-            &mut out,
-            rug::Float::new(args.bits),
-            digits,
-            args.complex,
-        )
+        process(input, &mut out, rug::Float::new(args.bits), digits, &opts)
     }
+}
+
+/// What to compute for each line.
+pub struct Options {
+    /// Complex argument (`re(u) im(u) k`).
+    pub complex: bool,
+    /// The second number is the parameter `m = k²`.
+    pub parameter: bool,
+    /// The functions to print.
+    pub functions: Vec<JacobiFn>,
+}
+
+/// `s` cut to 40 characters (with `…` when cut).
+fn excerpt(s: &str) -> String {
+    let mut t: String = s.chars().take(40).collect();
+    if s.chars().nth(40).is_some() {
+        t.push('…');
+    }
+    t
+}
+
+/// Reads the next line (without its end) into `buf`, at most [`MAX_LINE`] bytes;
+/// `Ok(false)` at the end of the input.
+fn next_line(input: &mut impl BufRead, buf: &mut Vec<u8>, lno: usize) -> Result<bool, CliError> {
+    buf.clear();
+    let io = |e: std::io::Error| CliError::new(format!("line {lno}: I/O error: {e}"));
+    let n = input
+        .by_ref()
+        .take(MAX_LINE as u64 + 1)
+        .read_until(b'\n', buf)
+        .map_err(io)?;
+    if n == 0 {
+        return Ok(false);
+    }
+    if buf.last() == Some(&b'\n') {
+        buf.pop();
+    } else if buf.len() > MAX_LINE {
+        let head = String::from_utf8_lossy(&buf[..40]).into_owned();
+        return Err(CliError::new(format!(
+            "line {lno}: longer than {MAX_LINE} bytes ('{}…')",
+            excerpt(&head)
+        )));
+    }
+    Ok(true)
+}
+
+/// Parses one number of a line at the precision of `proto`.
+fn number<R: Real>(proto: &R, s: &str, what: &str, lno: usize) -> Result<R, CliError> {
+    proto.parse_like(s).map_err(|_| {
+        let overflow = s.parse::<f64>().is_ok_and(|v| v.is_infinite())
+            && !s.to_ascii_lowercase().contains("inf");
+        if overflow {
+            CliError::new(format!(
+                "line {lno}: {what} = {} overflows the largest f64 (about 1.8e308)",
+                excerpt(s)
+            ))
+        } else {
+            CliError::new(format!("line {lno}: malformed {what} '{}'", excerpt(s)))
+        }
+    })
 }
 
 /// Reads all lines from `input` and writes the results, generically over the real type
 /// whose precision `proto` carries.
 pub fn process<R: Real>(
-    input: impl BufRead,
+    mut input: impl BufRead,
     out: &mut impl Write,
     proto: R,
     digits: usize,
-    complex: bool,
+    opts: &Options,
 ) -> Result<i32, CliError> {
     let io = |e: std::io::Error| CliError::new(format!("I/O error: {e}"));
-    for (i, line) in input.lines().enumerate() {
-        let lno = i + 1;
-        let line = line.map_err(io)?;
+    let mut buf = Vec::new();
+    let mut lno = 0usize;
+    while {
+        lno += 1;
+        next_line(&mut input, &mut buf, lno)?
+    } {
+        let line = std::str::from_utf8(&buf).map_err(|_| {
+            let lossy = String::from_utf8_lossy(&buf).into_owned();
+            CliError::new(format!(
+                "line {lno}: not valid UTF-8 ('{}')",
+                excerpt(&lossy)
+            ))
+        })?;
         let t = line.trim();
         if t.is_empty() || t.starts_with('#') {
             continue;
         }
-        let fields: Vec<&str> = t.split_whitespace().collect();
-        let want = if complex { 3 } else { 2 };
-        if fields.len() != want {
-            return Err(CliError::new(format!(
-                "line {lno}: expected {want} numbers ({}), found {} in '{t}'",
-                if complex { "re(u) im(u) k" } else { "u k" },
-                fields.len()
-            )));
-        }
-        let num = |s: &str, what: &str| {
-            proto
-                .parse_like(s)
-                .map_err(|_| CliError::new(format!("line {lno}: malformed {what} '{s}'")))
-        };
-        let err = |e: crate::special::SpecialError| CliError::new(format!("line {lno}: {e}"));
-        let text = if complex {
-            let u = Cplx::new(num(fields[0], "re(u)")?, num(fields[1], "im(u)")?);
-            let k = num(fields[2], "modulus k")?;
-            let (s, c, d) = sncndn_complex(&u, &k).map_err(err)?;
-            [s, c, d]
-                .iter()
-                .flat_map(|z| [z.re.to_decimal(digits), z.im.to_decimal(digits)])
-                .collect::<Vec<_>>()
-                .join(" ")
-        } else {
-            let u = num(fields[0], "u")?;
-            let k = num(fields[1], "modulus k")?;
-            let (s, c, d) = sncndn(&u, &k).map_err(err)?;
-            [s, c, d]
-                .iter()
-                .map(|v| v.to_decimal(digits))
-                .collect::<Vec<_>>()
-                .join(" ")
-        };
+        let text = line_values(&proto, t, lno, digits, opts)?;
         writeln!(out, "{text}").map_err(io)?;
     }
     out.flush().map_err(io)?;
     Ok(0)
+}
+
+/// The output line for one input line `t`.
+fn line_values<R: Real>(
+    proto: &R,
+    t: &str,
+    lno: usize,
+    digits: usize,
+    opts: &Options,
+) -> Result<String, CliError> {
+    let fields: Vec<&str> = t.split_whitespace().take(4).collect();
+    let (want, shape) = match (opts.complex, opts.parameter) {
+        (true, _) => (3, "re(u) im(u) k"),
+        (false, true) => (2, "u m"),
+        (false, false) => (2, "u k"),
+    };
+    if fields.len() != want {
+        let found = if fields.len() > want {
+            format!("more than {want}")
+        } else {
+            fields.len().to_string()
+        };
+        return Err(CliError::new(format!(
+            "line {lno}: expected {want} numbers ({shape}), found {found} in '{}'",
+            excerpt(t)
+        )));
+    }
+    let err = |e: SpecialError| CliError::new(format!("line {lno}: {e}"));
+    let values: Vec<String> = if opts.complex {
+        let u = Cplx::new(
+            number(proto, fields[0], "re(u)", lno)?,
+            number(proto, fields[1], "im(u)", lno)?,
+        );
+        let k = number(proto, fields[2], "modulus k", lno)?;
+        let mut v = Vec::new();
+        for f in &opts.functions {
+            let z = jacobi_complex(*f, &u, &k).map_err(err)?;
+            v.push(z.re.to_decimal(digits));
+            v.push(z.im.to_decimal(digits));
+        }
+        v
+    } else {
+        let u = number(proto, fields[0], "u", lno)?;
+        let second = if opts.parameter {
+            "parameter m"
+        } else {
+            "modulus k"
+        };
+        let k = number(proto, fields[1], second, lno)?;
+        let mut v = Vec::new();
+        for f in &opts.functions {
+            let x = if opts.parameter {
+                jacobi_m(*f, &u, &k)
+            } else {
+                jacobi(*f, &u, &k)
+            };
+            v.push(x.map_err(err)?.to_decimal(digits));
+        }
+        v
+    };
+    Ok(values.join(" "))
 }

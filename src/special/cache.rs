@@ -2,7 +2,8 @@
 //! for one modulus (tables, orbits, a complex argument needs the modulus and its
 //! complement), so the last few moduli are kept.
 //!
-//! * the fixed-precision theta data ([`Theta`]) for `f64`;
+//! * the fixed-precision data ([`FixedModulus`]: theta data, modulus transformation)
+//!   for `f64`;
 //! * the multi-precision Landen chains ([`Chain`]) for `rug::Float`;
 //! * the 150-bit quarter periods used by the exact reduction of large arguments.
 //!
@@ -11,9 +12,8 @@
 //! `Dual`, whose derivative parts differ from call to call) build their data afresh.
 
 use super::agm::complementary;
-use super::dd::Dd;
+use super::jacobi::{FixedModulus, Spec};
 use super::landen::Chain;
-use super::theta::Theta;
 use super::{Modulus, SpecialError};
 use crate::numbers::Real;
 use rug::float::Constant;
@@ -29,7 +29,7 @@ type Triples = Vec<([u64; 2], [f64; 3])>;
 
 thread_local! {
     static TRIPLES: RefCell<Triples> = const { RefCell::new(Vec::new()) };
-    static THETAS: RefCell<Vec<([u64; 2], Theta<f64>)>> = const { RefCell::new(Vec::new()) };
+    static FIXED_F64: RefCell<Slots> = const { RefCell::new(Slots { slots: [None, None], next: 0 }) };
     static CHAINS: RefCell<Vec<Entry>> = const { RefCell::new(Vec::new()) };
 }
 
@@ -59,30 +59,62 @@ pub(crate) fn quarter_period_triple(mc: (f64, f64)) -> [f64; 3] {
     v
 }
 
-/// Runs `f` on the theta data of the modulus `κ² = m`, `κ'² = mc` (fixed precision),
-/// through the `f64` cache when `R` is `f64`.
-#[inline]
-pub(crate) fn with_theta<R: Real, T>(m: &Dd<R>, mc: &Dd<R>, f: impl FnOnce(&Theta<R>) -> T) -> T {
-    if (&m.hi as &dyn Any).downcast_ref::<f64>().is_none() {
-        return f(&Theta::new(m, mc));
+/// The cache key of a modulus spec: its value's bits and its kind.
+fn spec_key<R: Real>(spec: Spec<'_, R>) -> [u64; 2] {
+    match spec {
+        Spec::Modulus(k, Modulus::K) => [k.to_f64().to_bits(), 0],
+        Spec::Modulus(k, Modulus::Complement) => [k.to_f64().to_bits(), 1],
+        Spec::Parameter(m) => [m.to_f64().to_bits(), 2],
     }
-    let key = [m.v().to_bits(), m.lo.to_bits()];
+}
+
+/// Runs `f` on the fixed-precision data of `spec`, through the two-entry `f64` cache
+/// when `R` is `f64` (a fresh modulus replaces the older entry; the pair of a modulus
+/// and its complement, as a complex argument needs, stays cached).
+#[inline(always)]
+pub(crate) fn with_fixed<R: Real, T>(
+    spec: Spec<'_, R>,
+    f: impl FnOnce(&FixedModulus<R>) -> T,
+) -> T {
+    if !is_f64::<R>() {
+        return f(&FixedModulus::new(spec));
+    }
+    let key = spec_key(spec);
     let mut f = Some(f);
-    let hit = THETAS.with(|c| {
+    let hit = FIXED_F64.with(|c| {
         let c = c.borrow();
-        let e = c.iter().find(|e| e.0 == key)?;
-        let t = (&e.1 as &dyn Any).downcast_ref::<Theta<R>>()?;
-        f.take().map(|f| f(t))
+        let e = c.slots.iter().flatten().find(|e| e.0 == key)?;
+        let d = (&e.1 as &dyn Any).downcast_ref::<FixedModulus<R>>()?;
+        f.take().map(|f| f(d))
     });
     if let Some(out) = hit {
         return out;
     }
-    let theta = Theta::new(m, mc);
-    let out = f.take().map(|f| f(&theta));
-    if let Some(t64) = (&theta as &dyn Any).downcast_ref::<Theta<f64>>() {
-        THETAS.with(|c| remember(&mut c.borrow_mut(), (key, t64.clone())));
+    let data = FixedModulus::new(spec);
+    if let Some(d64) = (&data as &dyn Any).downcast_ref::<FixedModulus<f64>>() {
+        FIXED_F64.with(|c| {
+            let mut c = c.borrow_mut();
+            let i = c.next;
+            c.slots[i] = Some((key, d64.clone()));
+            c.next = 1 - i;
+        });
     }
-    out.expect("closure runs once")
+    match f.take() {
+        Some(f) => f(&data),
+        None => unreachable!("the closure runs once"),
+    }
+}
+
+/// Is `R` the type `f64` (resolved at compile time)?
+#[inline(always)]
+fn is_f64<R: 'static>() -> bool {
+    std::any::TypeId::of::<R>() == std::any::TypeId::of::<f64>()
+}
+
+/// The two most recent `f64` moduli.
+struct Slots {
+    slots: [Option<([u64; 2], FixedModulus<f64>)>; 2],
+    next: usize,
 }
 
 /// The Landen chain for one modulus at one working precision (multi-precision).

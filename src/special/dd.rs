@@ -23,63 +23,70 @@ pub(crate) struct Dd<R> {
 }
 
 /// `(s, e)` with `s = fl(a + b)` and `s + e = a + b` exactly (Knuth).
-#[inline]
+#[inline(always)]
 pub(crate) fn two_sum(a: f64, b: f64) -> (f64, f64) {
     let s = a + b;
     let bb = s - a;
     (s, (a - (s - bb)) + (b - bb))
 }
 
-/// `(p, e)` with `p = fl(a·b)` and `p + e = a·b` exactly: one FMA when the target has
-/// it, Dekker's splitting otherwise (|a|, |b| < 2⁹⁹⁵).
-#[inline]
+/// `(p, e)` with `p = fl(a·b)` and `p + e = a·b` exactly, by one fused multiply-add
+/// (`f64::mul_add` is correctly rounded everywhere; it is one instruction in code
+/// compiled for FMA, see [`with_fma`], and a libm call elsewhere).
+#[inline(always)]
 pub(crate) fn two_prod(a: f64, b: f64) -> (f64, f64) {
     let p = a * b;
-    #[cfg(target_feature = "fma")]
+    (p, a.mul_add(b, -p))
+}
+
+/// Runs `f` in code compiled for the fused multiply-add instruction when the CPU has it
+/// (x86-64 run-time detection), so that [`two_prod`] is one instruction; otherwise
+/// plainly.  Both give the same bits (`mul_add` is exact in both).  `f` and what it
+/// calls should be `#[inline(always)]` to be compiled into the FMA clone.
+#[inline(always)]
+pub(crate) fn with_fma<T>(f: impl FnOnce() -> T) -> T {
+    #[cfg(target_arch = "x86_64")]
     {
-        (p, a.mul_add(b, -p))
+        #[target_feature(enable = "fma")]
+        unsafe fn fma_clone<T>(f: impl FnOnce() -> T) -> T {
+            f()
+        }
+        if std::arch::is_x86_feature_detected!("fma") {
+            // SAFETY: the CPU supports the `fma` target feature (checked just above).
+            return unsafe { fma_clone(f) };
+        }
     }
-    #[cfg(not(target_feature = "fma"))]
-    {
-        let split = |x: f64| {
-            let c = 134_217_729.0 * x; // 2^27 + 1
-            let h = c - (c - x);
-            (h, x - h)
-        };
-        let (ah, al) = split(a);
-        let (bh, bl) = split(b);
-        (p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
-    }
+    f()
 }
 
 /// `x` with its value replaced by `v` and its derivative parts kept: `v − (x.v − x)`.
 /// For `f64` this is exactly `v` (also for `v = −0`).
-#[inline]
+#[inline(always)]
 pub(crate) fn with_value<R: Real>(x: &R, v: f64) -> R {
     x.from_f64(v) - (x.from_f64(x.to_f64()) - x.clone())
 }
 
 impl<R: Real> Dd<R> {
     /// `x + 0`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn from(x: R) -> Self {
         Dd { hi: x, lo: 0.0 }
     }
 
     /// The value rounded into `R` (`hi + lo`).
-    #[inline]
+    #[inline(always)]
     pub(crate) fn to_r(&self) -> R {
         self.hi.clone() + self.hi.from_f64(self.lo)
     }
 
     /// `hi` as an `f64`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn v(&self) -> f64 {
         self.hi.to_f64()
     }
 
     /// Renormalised so that `hi = fl(hi + lo)`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn norm(&self) -> Self {
         let (s, e) = two_sum(self.v(), self.lo);
         Dd {
@@ -89,7 +96,7 @@ impl<R: Real> Dd<R> {
     }
 
     /// `self + o`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn add(&self, o: &Self) -> Self {
         let (_, e) = two_sum(self.v(), o.v());
         Dd {
@@ -99,7 +106,7 @@ impl<R: Real> Dd<R> {
     }
 
     /// `self + x` for a plain `x`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn add_r(&self, x: &R) -> Self {
         let (_, e) = two_sum(self.v(), x.to_f64());
         Dd {
@@ -109,7 +116,7 @@ impl<R: Real> Dd<R> {
     }
 
     /// `self · o`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn mul(&self, o: &Self) -> Self {
         let (a, b) = (self.v(), o.v());
         let (_, e) = two_prod(a, b);
@@ -120,7 +127,7 @@ impl<R: Real> Dd<R> {
     }
 
     /// `self · x` for a plain `x`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn mul_r(&self, x: &R) -> Self {
         let b = x.to_f64();
         let (_, e) = two_prod(self.v(), b);
@@ -130,14 +137,23 @@ impl<R: Real> Dd<R> {
         }
     }
 
+    /// `self·2ⁿ` (exact).
+    #[inline(always)]
+    pub(crate) fn mul_2si(&self, n: i32) -> Self {
+        Dd {
+            hi: self.hi.mul_2si(n),
+            lo: self.lo * 2f64.powi(n),
+        }
+    }
+
     /// `self²`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn sqr(&self) -> Self {
         self.mul(self)
     }
 
     /// `self / o`: one correction of the quotient of the leading parts.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn div(&self, o: &Self) -> Self {
         let hi = self.hi.clone() / o.hi.clone();
         let (q, b) = (hi.to_f64(), o.v());
@@ -147,7 +163,7 @@ impl<R: Real> Dd<R> {
     }
 
     /// `√self` (`self > 0`): one Newton correction of the root of the leading part.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn sqrt(&self) -> Self {
         let hi = self.hi.sqrt();
         let h = hi.to_f64();
@@ -159,17 +175,17 @@ impl<R: Real> Dd<R> {
         }
     }
 
-    /// `ln self` (`self > 0`, normal): the leading part from `R::ln` (which carries the
-    /// derivative), corrected by the table-driven [`ln_dd`] to about `2⁻⁸⁷`
-    /// absolutely (plus the relative error of `self`).
-    #[inline]
+    /// `ln self` (`self > 0`, normal) by the table-driven [`ln_dd`], to about `2⁻⁸⁷`
+    /// absolutely (plus the relative error of `self`); derivative parts as `d(self)/self`.
+    #[inline(always)]
     pub(crate) fn ln(&self) -> Self {
         let x = self.v();
-        let hi = self.hi.ln();
         let (a, b) = ln_dd(x);
+        // value a, derivative parts d(hi)/x (zero for f64)
+        let d = (self.hi.clone() - self.hi.from_f64(x)) * self.hi.from_f64(1.0 / x);
         Dd {
-            lo: (a - hi.to_f64()) + (b + self.lo / x),
-            hi,
+            hi: self.hi.from_f64(a) + d,
+            lo: b + self.lo / x,
         }
     }
 }
@@ -197,6 +213,7 @@ fn ln_table() -> &'static [(f64, f64, f64)] {
 /// as a double-double with `|r| ≲ 2⁻¹¹` (table [`ln_table`]), and
 /// `ln x = e·ln 2 − ln(1/cᵢ) + ln(1 + r)` with `ln(1+r) = r − r²/2 + r³/3 − …`
 /// (DLMF 4.6.1), the first two terms in double-double.
+#[inline(always)]
 pub(crate) fn ln_dd(x: f64) -> (f64, f64) {
     const LN2: (f64, f64) = (std::f64::consts::LN_2, 2.319_046_813_846_299_6e-17);
     let bits = x.to_bits();

@@ -1,10 +1,10 @@
 //! Jacobi elliptic functions sn, cn, dn and the amplitude am of a real argument: the
 //! choice of algorithm ([`sncndn_imp`]) and the public entry points.
 
-use super::cache::{quarter_period_triple, with_chain, with_theta, ChainData};
-use super::dd::{two_sum, with_value, Dd};
+use super::cache::{quarter_period_triple, with_chain, with_fixed, ChainData};
+use super::dd::{two_sum, with_fma, with_value, Dd};
 use super::reduce::reduce_dd2;
-use super::theta::{tanh_sech, Theta};
+use super::theta::{tanh_sech, Theta, SERIES_MAX_M};
 use super::{check_finite, check_modulus, show, SpecialError, GUARD};
 use crate::numbers::Real;
 
@@ -25,23 +25,32 @@ pub(crate) enum Modulus {
 pub(crate) enum Bottom {
     /// `sin`/`cos` with DLMF 22.10.4–6, below a descending Landen chain (multi-precision).
     Sine,
-    /// Theta quotients of the nome `q ≤ e^{−π}` (DLMF 22.2.4, 20.2.1–4; fixed precision).
+    /// Theta quotients of the nome `q < 0.1` (DLMF 22.2.4, 20.2.1–4; fixed precision,
+    /// `κ² ≤ 0.81`).
     Series,
     /// Theta quotients of the complementary nome at imaginary argument (DLMF Table
-    /// 22.6.1; fixed precision, `κ² > ½`).
+    /// 22.6.1; fixed precision, `κ² > 0.81`).
     Imaginary,
     /// `tanh`/`sech` with DLMF 22.10.7–9: exact at `κ = 1` (DLMF 22.5.ii).
     TanhSech,
 }
 
 /// A real modulus as the caller gave it.
-#[derive(Clone, Copy, Debug)]
+#[derive(Debug)]
 pub(crate) enum Spec<'a, R> {
     /// The modulus `k ≥ 0` (`k > 1` by DLMF 22.17.2–4), or its complement.
     Modulus(&'a R, Modulus),
     /// The parameter `m = k²`, any real (`m < 0`: imaginary modulus, DLMF 22.17.6–8).
     Parameter(&'a R),
 }
+
+impl<R> Clone for Spec<'_, R> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<R> Copy for Spec<'_, R> {}
 
 /// How the evaluated modulus `κ ∈ [0, 1]` relates to the given one (DLMF §22.17):
 /// with `v = f·u`, `Direct`: `(sn, cn, dn)(u) = (s, c, d)(v)`; `Reciprocal` (`k > 1`,
@@ -68,6 +77,7 @@ fn untransform<R: Real>(form: Form, f: &R, (s, c, d): (R, R, R)) -> (R, R, R) {
 }
 
 /// `1 − x` as a double-double.
+#[inline(always)]
 fn one_minus<R: Real>(x: &Dd<R>) -> Dd<R> {
     let (s, e) = two_sum(1.0, -x.v());
     Dd {
@@ -78,6 +88,7 @@ fn one_minus<R: Real>(x: &Dd<R>) -> Dd<R> {
 }
 
 /// Fixed precision: `(κ², κ'², f, form)` of a [`Spec`] in double-double.
+#[inline(always)]
 fn fixed_modulus<R: Real>(spec: Spec<'_, R>) -> (Dd<R>, Dd<R>, Dd<R>, Form) {
     let dd = |x: &R| Dd::from(x.clone());
     match spec {
@@ -110,6 +121,64 @@ fn fixed_modulus<R: Real>(spec: Spec<'_, R>) -> (Dd<R>, Dd<R>, Dd<R>, Form) {
             let c = dd(m).add_r(&(-m.one())).mul(&inv);
             (inv, c, dd(m).sqrt(), Form::Reciprocal)
         }
+    }
+}
+
+/// Per-modulus data of the fixed-precision path (what the per-thread cache keeps): the
+/// bottom, its theta data, `κ'²` (for the exact reduction) and the modulus
+/// transformation.
+#[derive(Clone, Debug)]
+pub(crate) struct FixedModulus<R> {
+    bottom: Bottom,
+    theta: Option<Theta<R>>,
+    m: Dd<R>,
+    mc: Dd<R>,
+    f: Dd<R>,
+    form: Form,
+}
+
+impl<R: Real> FixedModulus<R> {
+    /// The data of `spec`: the bottom by the special cases of [`sncndn_imp`].
+    #[inline(always)]
+    pub(crate) fn new(spec: Spec<'_, R>) -> Self {
+        let (m, mc, f, form) = fixed_modulus(spec);
+        let bottom = if m.v() == 0.0 {
+            Bottom::Sine
+        } else if mc.v() == 0.0 {
+            Bottom::TanhSech
+        } else if m.v() > SERIES_MAX_M {
+            Bottom::Imaginary
+        } else {
+            Bottom::Series
+        };
+        let theta =
+            matches!(bottom, Bottom::Series | Bottom::Imaginary).then(|| Theta::new(&m, &mc));
+        FixedModulus {
+            bottom,
+            theta,
+            m,
+            mc,
+            f,
+            form,
+        }
+    }
+
+    /// `(sn, cn, dn)(u)`.
+    #[inline(always)]
+    pub(crate) fn eval(&self, u: &R) -> Result<(R, R, R), SpecialError> {
+        let v = match self.form {
+            Form::Direct => Dd::from(u.clone()),
+            _ => self.f.mul_r(u),
+        };
+        let out = match (&self.theta, self.bottom) {
+            (Some(th), _) => sncndn_theta(&v.hi, v.lo, th, &self.m, &self.mc)?,
+            (None, Bottom::TanhSech) => tanh_sech(&v.to_r(), &self.mc.hi),
+            (None, _) => sine_cases(&v.to_r()),
+        };
+        Ok(match self.form {
+            Form::Direct => out,
+            _ => untransform(self.form, &self.f.to_r(), out),
+        })
     }
 }
 
@@ -150,7 +219,7 @@ fn mp_modulus<R: Real>(spec: Spec<'_, R>, w: u32) -> (R, Modulus, R, Form) {
 ///    22.17.6–8 (`m < 0`) to a modulus `κ ∈ [0, 1]` (see [`Form`]);
 /// 2. `κ = 0`: `(sin u, cos u, 1)` (DLMF 22.5.3);
 /// 3. `κ = 1`: `(tanh u, sech u, sech u)` (DLMF 22.5.ii, [`Bottom::TanhSech`]);
-/// 4. fixed precision (`R::FIXED`): theta quotients, [`Bottom::Series`] for `κ² ≤ ½`
+/// 4. fixed precision (`R::FIXED`): theta quotients, [`Bottom::Series`] for `κ² ≤ 0.81`
 ///    (DLMF 22.2.4), [`Bottom::Imaginary`] above (DLMF Table 22.6.1), with per-modulus
 ///    data in double-double (module `theta`);
 /// 5. multi-precision: the descending Landen chain down to `κ_N⁴ < ε` and
@@ -161,28 +230,10 @@ pub(crate) fn sncndn_imp<R: Real>(
     n: u32,
 ) -> Result<(R, R, R), SpecialError> {
     if R::FIXED {
-        let (m, mc, f, form) = fixed_modulus(spec);
-        let v = match form {
-            Form::Direct => Dd::from(u.clone()),
-            _ => f.mul_r(u),
-        };
-        let bottom = if m.v() == 0.0 {
-            Bottom::Sine
-        } else if mc.v() == 0.0 {
-            Bottom::TanhSech
-        } else if m.v() > 0.5 {
-            Bottom::Imaginary
-        } else {
-            Bottom::Series
-        };
-        let out = match bottom {
-            Bottom::Sine => sine_cases(&v.to_r()),
-            Bottom::TanhSech => tanh_sech(&v.to_r(), &mc.hi),
-            Bottom::Series | Bottom::Imaginary => {
-                with_theta(&m, &mc, |th| sncndn_theta(&v.hi, v.lo, th, &mc))?
-            }
-        };
-        return Ok(untransform(form, &f.to_r(), out));
+        return with_fma(
+            #[inline(always)]
+            || with_fixed(spec, |fm| fm.eval(u)),
+        );
     }
     let w = n + GUARD;
     let (kappa, modulus, f, form) = mp_modulus(spec, w);
@@ -210,6 +261,7 @@ pub(crate) fn sncndn_imp<R: Real>(
     Ok(untransform(form, &f, out))
 }
 
+#[inline(always)]
 /// `κ = 0`: `(sin u, cos u, 1)` (DLMF 22.5.3; [`Bottom::Sine`] without Landen levels).
 fn sine_cases<R: Real>(u: &R) -> (R, R, R) {
     let (s, c) = u.sin_cos();
@@ -217,7 +269,7 @@ fn sine_cases<R: Real>(u: &R) -> (R, R, R) {
 }
 
 /// The quadrant `j = round(u/K)` (half away from zero) from `ratio = u/K` in `f64`.
-#[inline]
+#[inline(always)]
 fn quadrant<R: Real>(ratio: f64, u: &R) -> Result<i64, SpecialError> {
     if ratio.is_nan() || ratio.abs() >= 2f64.powi(50) {
         return Err(too_large(ratio, u));
@@ -241,17 +293,39 @@ fn too_large<R: Real>(ratio: f64, u: &R) -> SpecialError {
 /// Fixed precision: `(sn, cn, dn)(u + u_lo)` on the theta data `th` of the modulus with
 /// `κ'² = mc`: the double-double reduction `u·π/(2K) = j·period + w`, or for large or
 /// cancelling `w` the exact one ([`reduce_exact`]).
-#[inline]
+#[inline(always)]
 pub(crate) fn sncndn_theta<R: Real>(
     u: &R,
     u_lo: f64,
     th: &Theta<R>,
+    m: &Dd<R>,
     mc: &Dd<R>,
 ) -> Result<(R, R, R), SpecialError> {
     let j = quadrant(th.ratio_of(u.to_f64()), u)?;
     match th.reduce_fast(u, u_lo, j) {
         Some((w, w_lo)) => Ok(th.eval(j, w, w_lo)),
-        None => reduce_exact(u, u_lo, th, mc, j),
+        None => reduce_precise(u, u_lo, th, m, mc, j),
+    }
+}
+
+/// [`sncndn_theta`] when the fast reduction declined: again with the precise scale
+/// (series only), else the exact reduction.
+#[cold]
+fn reduce_precise<R: Real>(
+    u: &R,
+    u_lo: f64,
+    th: &Theta<R>,
+    m: &Dd<R>,
+    mc: &Dd<R>,
+    j: i64,
+) -> Result<(R, R, R), SpecialError> {
+    if th.precise {
+        return reduce_exact(u, u_lo, th, mc, j);
+    }
+    let precise = Theta::with_bottom(m, mc, th.bottom == Bottom::Imaginary, true);
+    match precise.reduce_fast(u, u_lo, j) {
+        Some((w, w_lo)) => Ok(precise.eval(j, w, w_lo)),
+        None => reduce_exact(u, u_lo, &precise, mc, j),
     }
 }
 
@@ -416,23 +490,22 @@ pub fn sncndn_many<R: Real>(us: &[R], k: &R) -> Result<Vec<(R, R, R)>, SpecialEr
         }
         other => other,
     };
-    let (m, mc, _, form) = if R::FIXED {
-        fixed_modulus(Spec::Modulus(k, Modulus::K))
-    } else {
-        let zero = Dd::from(k.zero());
-        (zero.clone(), zero.clone(), zero, Form::Imaginary)
-    };
-    if form == Form::Direct && m.v() > 0.0 && mc.v() > 0.0 {
-        return with_theta(&m, &mc, |th| {
-            let mut out = Vec::with_capacity(us.len());
-            for (i, u) in us.iter().enumerate() {
-                match sncndn_theta(u, 0.0, th, &mc) {
-                    Ok(v) => out.push(v),
-                    Err(e) => return Err(indexed(i, e)),
-                }
-            }
-            Ok(out)
-        });
+    if R::FIXED {
+        return with_fma(
+            #[inline(always)]
+            || {
+                with_fixed(Spec::Modulus(k, Modulus::K), |fm| {
+                    let mut out = Vec::with_capacity(us.len());
+                    for (i, u) in us.iter().enumerate() {
+                        match fm.eval(u) {
+                            Ok(v) => out.push(v),
+                            Err(e) => return Err(indexed(i, e)),
+                        }
+                    }
+                    Ok(out)
+                })
+            },
+        );
     }
     us.iter()
         .enumerate()
@@ -446,7 +519,7 @@ pub fn sncndn_many<R: Real>(us: &[R], k: &R) -> Result<Vec<(R, R, R)>, SpecialEr
 /// 22.17.2–4.  For the parameter `m = k²` (also `m < 0`) see [`sncndn_m`].
 ///
 /// Algorithm (see the [module docs](crate::special) for why).  `f64`: theta quotients
-/// of a nome `q ≤ e^{−π}` (DLMF 22.2.4; for `k² > ½` those of `k'` at imaginary
+/// of a nome `q < 0.1` (DLMF 22.2.4; for `k² > 0.81` those of `k'` at imaginary
 /// argument, DLMF Table 22.6.1) with every per-modulus quantity in double-double, so a
 /// new `k` costs about one evaluation; measured absolute error below 2 ε.
 /// Multi-precision: reduction `u = jK + t` at `N + 40 + log2|j|` bits (adaptive),
@@ -499,9 +572,9 @@ pub fn sncndn<R: Real>(u: &R, k: &R) -> Result<(R, R, R), SpecialError> {
 ///
 /// ```
 /// use eulertop::special::sncndn_m;
-/// // mpmath: ellipfun('sn', 0.7, m=-0.5) = 0.661141183380470455...
+/// // mpmath: ellipfun('sn', 0.7, m=-0.5) = 0.66395932651367945152
 /// let (sn, cn, dn) = sncndn_m(&0.7_f64, &-0.5).unwrap();
-/// assert!((sn - 0.6611411833804705).abs() < 1e-15);
+/// assert!((sn - 0.6639593265136795).abs() < 1e-15);
 /// assert!((sn * sn + cn * cn - 1.0).abs() < 1e-15);
 /// assert!((dn * dn - 0.5 * sn * sn - 1.0).abs() < 1e-15);
 /// ```

@@ -27,7 +27,7 @@
 //!
 //! * **Fixed precision** (`Real::FIXED`: `f64`, `Dual<f64>`; no guard bits, so every
 //!   rounding counts and speed matters; module `theta`): sn, cn, dn as theta quotients
-//!   (DLMF 22.2.4) of a nome `q ≤ e^{−π}` — the modulus itself for `κ² ≤ ½`, else the
+//!   (DLMF 22.2.4) of a nome `q < 0.1` — the modulus itself for `κ² ≤ 0.81`, else the
 //!   complementary modulus at imaginary argument (DLMF Table 22.6.1) — written as
 //!   `leading factor × (1 + small)` with the leading factor `sin ζ`, `cos ζ`, `tanh y`
 //!   or `sech y`, so every output keeps relative accuracy next to its zeros.  Every
@@ -40,12 +40,13 @@
 //! * **Moduli chain** (module `landen`, multi-precision): the descending Landen / Gauss
 //!   transformation `k₁ = k²/(1+k')²`, `k₁' = 2√k'/(1+k')` (DLMF 22.7.1–3, 19.8.12),
 //!   iterated until `k_N⁴` is below the working epsilon (quadratic convergence, about
-//!   10 steps at 4096 bits).  The quarter period
-//!   follows as `K = (π/2)·Π(1+k_n)·(1+k_N²/4)`.
+//!   10 steps at 4096 bits), kept as the AGM sequence `aₙ, bₙ, cₙ` (DLMF 19.8.1–2) with
+//!   `kₙ = cₙ/aₙ`, `1 + kₙ = aₙ₋₁/aₙ`: one product and one square root per level.  The
+//!   quarter period follows as `K = (π/2)·Π(1+k_n)·(1+k_N²/4) = π(1 + k_N²/4)/(2a_N)`.
 //! * **sn, cn, dn of a real argument, multi-precision** (module `jacobi`): the argument
 //!   is reduced to `u = jK + t`, `|t| ≤ K/2`; at the bottom of the chain
 //!   `sn(t/Π(1+k_n), k_N)` comes from `sin`/`cos` with the first-order correction
-//!   DLMF 22.10.4–6, then only `sn` is carried up the chain (DLMF 22.7.1; one reciprocal
+//!   DLMF 22.10.4–6, then only `sn` is carried up the chain (DLMF 22.7.1; one division
 //!   and three products per level) and `cn = √((1−sn)(1+sn))`, `dn = √(k'² + k²cn²)`
 //!   (DLMF 22.6.1) at the top; since `cn(t) ≥ √(k'/(1+k'))` for `|t| ≤ K/2` this loses at
 //!   most `log2(1/k')` bits, which are added to the working precision.  The quadrant
@@ -55,8 +56,9 @@
 //! * **Argument reduction.**  For MPFR the working precision is raised to
 //!   `N + 40 + log2(1/k') + log2|j| + (cancellation bits of t)`, adaptively: if `t = u − jK`
 //!   cancels, the reduction is repeated with more bits.  For fixed-precision types
-//!   `ζ = u·π/(2K)` is reduced by the double-double period for `|u/K| ≤ 256`; beyond
-//!   that, or when the reduced argument cancels by more than 20 bits, `t = u − jK` is
+//!   `ζ = u·π/(2K)` is reduced by the double-double period for `|u/K| ≤ 256` (the series
+//!   with its nome in `f64` for `|u/K| ≤ 64`); beyond that, or when the reduced argument
+//!   cancels by more than 20 bits (8 bits), `t = u − jK` is
 //!   formed with error-free transformations from `K` as a triple-double of a 200-bit
 //!   MPFR AGM (module `reduce`, cached per modulus), while the derivative with respect
 //!   to `k` still flows through the generic `K`.
@@ -90,6 +92,7 @@ mod cache;
 mod complex;
 mod dd;
 mod ellint;
+mod glaisher;
 mod inverse;
 mod jacobi;
 mod landen;
@@ -101,6 +104,7 @@ mod theta;
 pub use agm::{ellipk, ellipkp};
 pub use complex::sncndn_complex;
 pub use ellint::ellipf;
+pub use glaisher::{jacobi, jacobi_complex, jacobi_m, JacobiFn};
 pub use inverse::jacobi_inverse;
 pub use jacobi::{am, sncndn, sncndn_m, sncndn_many};
 pub(crate) use jacobi::{Bottom, Modulus};

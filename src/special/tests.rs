@@ -41,7 +41,7 @@ fn pair(k: f64) -> (Dd<f64>, Dd<f64>) {
 /// The theta bottom `imaginary` (or the series) forced at modulus `k`.
 fn theta(u: f64, k: f64, imaginary: bool) -> [f64; 3] {
     let (m, mc) = pair(k);
-    let th = Theta::with_bottom(&m, &mc, imaginary);
+    let th = Theta::with_bottom(&m, &mc, imaginary, false);
     assert_eq!(
         th.bottom,
         if imaginary {
@@ -50,7 +50,7 @@ fn theta(u: f64, k: f64, imaginary: bool) -> [f64; 3] {
             Bottom::Series
         }
     );
-    let (s, c, d) = sncndn_theta(&u, 0.0, &th, &mc).expect("in domain");
+    let (s, c, d) = sncndn_theta(&u, 0.0, &th, &m, &mc).expect("in domain");
     [s, c, d]
 }
 

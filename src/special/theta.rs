@@ -9,12 +9,14 @@
 //! * `sn = θ₃(0)/θ₂(0) · θ₁(ζ)/θ₄(ζ)`, `cn = θ₄(0)/θ₂(0) · θ₂(ζ)/θ₄(ζ)`,
 //!   `dn = θ₄(0)/θ₃(0) · θ₃(ζ)/θ₄(ζ)`.
 //!
-//! [`Bottom::Series`] takes these for `κ² ≤ ½` (`q ≤ e^{−π} ≈ 0.0432`), and
-//! [`Bottom::Imaginary`] for `κ² > ½` takes them for the complementary modulus `κ'`
-//! (nome `q' ≤ e^{−π}`) at imaginary argument, by Jacobi's imaginary transformation
+//! [`Bottom::Series`] takes these for `κ² ≤ 0.81` (`q < 0.1`), and
+//! [`Bottom::Imaginary`] for `κ² > 0.81` takes them for the complementary modulus `κ'`
+//! (nome `q' < 0.013`) at imaginary argument, by Jacobi's imaginary transformation
 //! (DLMF Table 22.6.1): `sn(t,κ) = −i sn(it,κ')/cn(it,κ')`, `cn(t,κ) = 1/cn(it,κ')`,
-//! `dn(t,κ) = dn(it,κ')/cn(it,κ')`.  With `q ≤ e^{−π}` five terms of each theta series
-//! reach `2⁻⁷⁰` (the exponents grow like `n²`).
+//! `dn(t,κ) = dn(it,κ')/cn(it,κ')`.  With `q < 0.1` five terms of each theta series
+//! reach `2⁻⁶²` (the exponents grow like `n²`).  (The series is the cheaper of the two, so
+//! it is taken up to `κ = 0.9`; the switch at `q = q' = e^{−π}`, `κ² = ½`, would
+//! balance the nomes.)
 //!
 //! Written with `x = sin²ζ` (resp. `x = −sinh²y` at imaginary argument),
 //! `θ₁(ζ)/(2q^¼) = sin ζ·S(x)`, `θ₂(ζ)/(2q^¼) = cos ζ·C(x)`, `θ₃(ζ) = 1 + h(x)`,
@@ -44,6 +46,9 @@ use crate::numbers::Real;
 /// `π/2` as a double-double.
 const PI_2: (f64, f64) = (std::f64::consts::FRAC_PI_2, 6.123_233_995_736_766e-17);
 
+/// Largest `κ²` taken by [`Bottom::Series`] (nome below 0.1).
+pub(crate) const SERIES_MAX_M: f64 = 0.81;
+
 /// Largest quadrant handled by the double-double reduction.  Beyond it (and when the
 /// reduced argument cancels by more than 20 bits) the caller reduces with the
 /// quarter period known to 150 bits.
@@ -62,14 +67,18 @@ pub(crate) struct Theta<R> {
     pub scale: Dd<R>,
     /// The quarter period in the scaled variable: `π/2` or `πK/(2K')`.
     pub period: Dd<R>,
+    /// Is `scale` good to about `2⁻⁸⁵` (else `2⁻⁶⁴`, see [`Theta::with_bottom`])?
+    pub precise: bool,
     /// `1/period` rounded to `f64` (quadrant choice).
     inv_period: f64,
-    /// `κ'` of the evaluated modulus (odd quadrants at imaginary argument).
+    /// `κ'` of the evaluated modulus (odd quadrants at imaginary argument; zero for the
+    /// series, which does not use it).
     kp: R,
 }
 
 /// `x^{1/4}` of a positive double-double: two square roots, then one Newton step
 /// `t + (x − t⁴)/(4t³)` with `x − t⁴` formed exactly.
+#[inline(always)]
 fn quarter_root<R: Real>(x: &Dd<R>) -> Dd<R> {
     let t = x.hi.sqrt().sqrt();
     let tv = t.to_f64();
@@ -85,97 +94,49 @@ fn quarter_root<R: Real>(x: &Dd<R>) -> Dd<R> {
 impl<R: Real> Theta<R> {
     /// The data for the modulus `κ` given by `m = κ²` and `mc = κ'² = 1 − κ²` (both as
     /// double-doubles, `0 ≤ m`, `0 < mc`).
+    #[inline(always)]
     pub(crate) fn new(m: &Dd<R>, mc: &Dd<R>) -> Self {
-        Self::with_bottom(m, mc, m.v() > 0.5)
+        Self::with_bottom(m, mc, m.v() > SERIES_MAX_M, false)
     }
 
     /// [`Theta::new`] with the bottom chosen by the caller (`imaginary`); both forms are
     /// exact for every modulus, the choice only keeps the nome small (tests cross-check
-    /// them where both nomes are moderate).
-    pub(crate) fn with_bottom(m: &Dd<R>, mc: &Dd<R>, imaginary: bool) -> Self {
+    /// them where both nomes are moderate).  `precise` asks for the scale to about
+    /// `2⁻⁸⁵` also for the series (the nome in double-double); otherwise the series scale
+    /// takes the nome in `f64` and is good to about `2⁻⁶⁴`, which the fast reduction
+    /// allows for `|u| ≤ 64K` and 8 bits of cancellation (see [`Theta::reduce_fast`]).
+    #[inline(always)]
+    pub(crate) fn with_bottom(m: &Dd<R>, mc: &Dd<R>, imaginary: bool, precise: bool) -> Self {
         let (a, b) = if imaginary { (mc, m) } else { (m, mc) };
-        let (a, b) = (a.norm(), b.norm());
+        let nome = Nome::new(&a.norm(), &b.norm(), precise || imaginary);
+        let pow = powers(&nome.q);
+        let scale = nome.scale(&pow[6]);
         let one = m.hi.one();
-        let t = quarter_root(&b);
-        let lp = t.sqr();
-        let opt = t.add_r(&one);
-        let den = lp.add_r(&one).mul(&opt.sqr()).mul_r(&one.from_i64(2));
-        let eps = a.div(&den).norm();
-        let e = eps.hi.clone();
-        let e4 = e.sqr().sqr();
-        // q = ε(1 + w), w = 2ε⁴ + 15ε⁸ + 150ε¹² + 1707ε¹⁶
-        let tail12 = e4.sqr()
-            * e4.clone()
-            * (one.from_i64(150)
-                + e4.clone()
-                    * (one.from_i64(1707)
-                        + e4.clone() * (one.from_i64(20910) + e4.clone() * one.from_i64(268_616))));
-        let w_tail = e4.sqr() * one.from_i64(15) + tail12.clone();
-        let w = e4.clone().mul_2si(1) + w_tail.clone();
-        let eps4 = eps.sqr().sqr();
-        let q = e.clone() + e.clone() * w.clone();
-        let pow = powers(&q);
-        // q⁴ = ε⁴(1 + g), g = (1 + w)⁴ − 1 = 8ε⁴ + g₂, with ε⁴ in double-double and
-        // g₂ = 4·w_tail + w²(6 + 4w + w²) (about 84ε⁸) in `R`
-        let g2 = w_tail.mul_2si(2)
-            + w.sqr() * (one.from_i64(6) + w.clone() * (one.from_i64(4) + w.clone()));
-        let q4 = eps4.add(
-            &eps4
-                .sqr()
-                .mul_r(&one.from_i64(8))
-                .add_r(&(eps4.hi.clone() * g2)),
-        );
-        // 1/θ₃(0, q⁴) = 1 − c', c' = E/(1 + E), E = 2q⁴ + 2q¹⁶
-        let big_e = q4.add_r(&pow[6]).mul_r(&one.from_i64(2)).norm();
-        let ev = big_e.hi.clone();
-        let cprime = big_e.add_r(&(-(ev.sqr() / (one.clone() + ev))));
-        let half_opt = opt.mul_r(&one.mul_2si(-1));
-        let wdd = half_opt.add(
-            &Dd {
-                hi: -half_opt.hi.clone(),
-                lo: -half_opt.lo,
-            }
-            .mul(&cprime),
-        );
-        let scale = wdd.sqr().norm();
         let period = if imaginary {
-            // πK/(2K') = −ln(q)/2, ln q = ln ε + ln(1 + w), w = 2ε⁴ + t₈ with
-            // t₈ = 15ε⁸ + 150ε¹² + …: ln(1 + w) = w − w²/2 + w³/3 − w⁴/4
-            // = 2ε⁴ + 13ε⁸ + (t₈ − 15ε⁸) − 2ε⁴t₈ − t₈²/2 + w³(1/3 − w/4), the first two
-            // terms from ε in double-double
-            let eps8 = eps4.sqr();
-            let t8_rest = tail12.clone();
-            let low = t8_rest - (e4.clone() * w_tail.clone()).mul_2si(1) - w_tail.sqr().mul_2si(-1)
-                + w.sqr() * w.clone() * (one.from_ratio(1, 3) - w.clone() * one.mul_2si(-2));
-            let ln1p_w = eps4
-                .mul_r(&one.from_i64(2))
-                .add(&eps8.mul_r(&one.from_i64(13)))
-                .add_r(&low);
-            let lnq = eps.ln().add(&ln1p_w);
-            Dd {
-                hi: -lnq.hi.mul_2si(-1),
-                lo: -lnq.lo / 2.0,
-            }
-            .norm()
+            nome.half_log_period()
         } else {
             Dd {
                 hi: one.from_f64(PI_2.0),
                 lo: PI_2.1,
             }
         };
-        let ratio = ratios(&pow, imaginary);
         Theta {
             bottom: if imaginary {
                 Bottom::Imaginary
             } else {
                 Bottom::Series
             },
-            inv_period: 1.0 / period.v(),
+            precise: nome.precise,
+            inv_period: if imaginary {
+                1.0 / period.v()
+            } else {
+                std::f64::consts::FRAC_2_PI
+            },
+            ratio: ratios(&pow, imaginary),
             pow,
-            ratio,
             scale,
             period,
-            kp: mc.hi.sqrt(),
+            kp: if imaginary { mc.hi.sqrt() } else { one.zero() },
         }
     }
 
@@ -185,22 +146,29 @@ impl<R: Real> Theta<R> {
     }
 
     /// `u/K` rounded to `f64`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn ratio_of(&self, u: f64) -> f64 {
         u * self.scale.v() * self.inv_period
     }
 
-    /// Fast reduction of `u + u_lo` (`|u_lo| ≤ ulp(u)`): `(j, w_hi, w_lo)` with
+    /// Fast reduction of `u + u_lo` (`|u_lo| ≤ ulp(u)`): `(w_hi, w_lo)` with
     /// `u·scale = j·period + w`, or `None` when `|j| > 256` or `w` cancelled by more
-    /// than 20 bits (then the caller reduces with the 150-bit quarter period).
-    #[inline]
+    /// than 20 bits (with the `f64`-nome scale of the series: `|j| > 64` or 8 bits), so
+    /// that `w` keeps about 56 bits of relative accuracy; then the caller retries with
+    /// the precise scale or reduces with the 150-bit quarter period.
+    #[inline(always)]
     pub(crate) fn reduce_fast(&self, u: &R, u_lo: f64, j: i64) -> Option<(R, f64)> {
         let z = self.scale.mul_r(u);
         let zl = z.lo + self.scale.v() * u_lo;
         if j == 0 {
             return Some((z.hi, zl));
         }
-        if j.abs() > J_FAST {
+        let (j_max, cancel) = if self.precise {
+            (J_FAST, 2f64.powi(-20))
+        } else {
+            (64, 2f64.powi(-8))
+        };
+        if j.abs() > j_max {
             return None;
         }
         let jf = j as f64;
@@ -208,7 +176,7 @@ impl<R: Real> Theta<R> {
         let zv = z.v();
         let r1 = zv - a;
         let (h, l) = two_sum(r1, (zl - ae) - jf * self.period.lo);
-        if h.abs() < zv.abs() * 2f64.powi(-20) {
+        if h.abs() < zv.abs() * cancel {
             return None;
         }
         let hi = z.hi - self.period.hi.clone() * u.from_i64(j);
@@ -217,7 +185,7 @@ impl<R: Real> Theta<R> {
 
     /// `(sn, cn, dn)` from the reduced scaled argument `w = w_hi + w_lo` (`|w| ≲
     /// period/2`) in quadrant `j`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn eval(&self, j: i64, w: R, w_lo: f64) -> (R, R, R) {
         let out = match self.bottom {
             Bottom::Imaginary => self.eval_imaginary(j, w, w_lo),
@@ -227,7 +195,7 @@ impl<R: Real> Theta<R> {
     }
 
     /// [`Bottom::Series`]: `ζ = jπ/2 + w`.
-    #[inline]
+    #[inline(always)]
     fn eval_series(&self, j: i64, w: R, w_lo: f64) -> (R, R, R) {
         let (s0, c0) = w.sin_cos_kernel();
         let lo = w.from_f64(w_lo);
@@ -250,7 +218,7 @@ impl<R: Real> Theta<R> {
     }
 
     /// [`Bottom::Imaginary`]: `y = |w|`, `t = u − jK`, `y = πt/(2K')`.
-    #[inline]
+    #[inline(always)]
     fn eval_imaginary(&self, j: i64, w: R, w_lo: f64) -> (R, R, R) {
         let neg = w.to_f64() < 0.0;
         let (y, y_lo) = if neg { (-w, -w_lo) } else { (w, w_lo) };
@@ -302,7 +270,7 @@ impl<R: Real> Theta<R> {
     }
 
     /// `[s, c, d, h]` at `x`: `S = 1 + s`, `C = 1 + c`, `θ₄ = 1 + d`, `θ₃ = 1 + h`.
-    #[inline]
+    #[inline(always)]
     fn sums(&self, x: &R) -> [R; 4] {
         let [q, q2, q4, q6, q9, q12, q16] = &self.pow;
         let one = x.one();
@@ -325,7 +293,137 @@ impl<R: Real> Theta<R> {
     }
 }
 
-/// `[q, q², q⁴, q⁶, q⁹, q¹², q¹⁶]`.
+/// The nome of the theta modulus `λ` (`λ² = a`, `λ'² = b`) and what the scale and the
+/// period are made of: `T = √λ'`, `ε = λ²/(2(1 + λ')(1 + T)²)` and Jacobi's series
+/// `q = ε(1 + w)`, `w = 2ε⁴ + t₈`, `t₈ = 15ε⁸ + 150ε¹² + 1707ε¹⁶ + …` (OEIS A002103).
+struct Nome<R> {
+    /// `1 + T`.
+    opt: Dd<R>,
+    /// `ε` (double-double when `precise`).
+    eps: Dd<R>,
+    /// `ε⁴`, `t₈ − 15ε⁸`, `t₈`, `w` in `R`.
+    e4: R,
+    tail12: R,
+    w_tail: R,
+    w: R,
+    /// The nome.
+    q: R,
+    /// Is `ε` a double-double (scale to about `2⁻⁸⁵`)?
+    precise: bool,
+}
+
+impl<R: Real> Nome<R> {
+    #[inline(always)]
+    fn new(a: &Dd<R>, b: &Dd<R>, precise: bool) -> Self {
+        let one = a.hi.one();
+        let t = quarter_root(b);
+        let opt = t.add_r(&one);
+        let den = t.sqr().add_r(&one).mul(&opt.sqr()).mul_2si(1);
+        let eps_f = a.hi.clone() / den.hi.clone();
+        // the f64 nome is enough while E = 2q⁴ ≤ 2⁻²³ (its error then stays below 2⁻⁷⁰)
+        let precise = precise || eps_f.to_f64().powi(4) > 2f64.powi(-24);
+        let eps = if precise {
+            a.div(&den).norm()
+        } else {
+            Dd::from(eps_f)
+        };
+        let e = eps.hi.clone();
+        let e4 = e.sqr().sqr();
+        let c = |n: i64| one.from_i64(n);
+        let tail12 = e4.sqr()
+            * e4.clone()
+            * (c(150)
+                + e4.clone()
+                    * (c(1707)
+                        + e4.clone()
+                            * (c(20910)
+                                + e4.clone()
+                                    * (c(268_616)
+                                        + e4.clone()
+                                            * (c(3_567_400) + e4.clone() * c(48_555_069))))));
+        let w_tail = e4.sqr() * c(15) + tail12.clone();
+        let w = e4.clone().mul_2si(1) + w_tail.clone();
+        let q = e.clone() + e * w.clone();
+        Nome {
+            opt,
+            eps,
+            e4,
+            tail12,
+            w_tail,
+            w,
+            q,
+            precise,
+        }
+    }
+
+    /// `ε⁴` (double-double when `precise`).
+    #[inline(always)]
+    fn eps4(&self) -> Dd<R> {
+        if self.precise {
+            self.eps.sqr().sqr()
+        } else {
+            Dd::from(self.e4.clone())
+        }
+    }
+
+    /// `π/(2K_λ) = AGM(1, λ') = ((1 + T)/(2θ₃(0, q⁴)))²` with `1/θ₃(0, q⁴) = 1 − c'`,
+    /// `c' = E/(1 + E)`, `E = 2q⁴ + 2q¹⁶`, and `q⁴ = ε⁴(1 + g)`,
+    /// `g = (1 + w)⁴ − 1 = 8ε⁴ + g₂`, `g₂ = 4t₈ + w²(6 + 4w + w²)` (about `84ε⁸`).
+    #[inline(always)]
+    fn scale(&self, q16: &R) -> Dd<R> {
+        let one = self.q.one();
+        let (w, e4) = (&self.w, &self.e4);
+        let g2 = self.w_tail.mul_2si(2)
+            + w.sqr() * (one.from_i64(6) + w.clone() * (one.from_i64(4) + w.clone()));
+        let half_opt = self.opt.mul_2si(-1);
+        let wdd = if self.precise {
+            let eps4 = self.eps4();
+            let q4 = eps4.add(&eps4.sqr().mul_2si(3).add_r(&(eps4.hi.clone() * g2)));
+            let big_e = q4.add_r(q16).mul_2si(1).norm();
+            let ev = big_e.hi.clone();
+            let cprime = big_e.add_r(&(-(ev.sqr() / (one.clone() + ev))));
+            let neg = Dd {
+                hi: -half_opt.hi.clone(),
+                lo: -half_opt.lo,
+            };
+            half_opt.add(&neg.mul(&cprime))
+        } else {
+            let q4 = e4.clone() * (one.clone() + e4.mul_2si(3) + g2);
+            let big_e = (q4 + q16.clone()).mul_2si(1);
+            let cprime = big_e.clone() / (one + big_e);
+            half_opt.add_r(&-(half_opt.hi.clone() * cprime))
+        };
+        wdd.sqr().norm()
+    }
+
+    /// `−ln(q)/2` (the quarter period `πK/(2K')` at imaginary argument):
+    /// `ln q = ln ε + ln(1 + w)`, `ln(1 + w) = w − w²/2 + w³/3 − w⁴/4
+    /// = 2ε⁴ + 13ε⁸ + (t₈ − 15ε⁸) − 2ε⁴t₈ − t₈²/2 + w³(1/3 − w/4)`, the first two terms
+    /// from `ε` in double-double ([`Dd::ln`] for `ln ε`).
+    #[inline(always)]
+    fn half_log_period(&self) -> Dd<R> {
+        let one = self.q.one();
+        let (w, e4, w_tail) = (&self.w, &self.e4, &self.w_tail);
+        let eps4 = self.eps4();
+        let low = self.tail12.clone()
+            - (e4.clone() * w_tail.clone()).mul_2si(1)
+            - w_tail.sqr().mul_2si(-1)
+            + w.sqr() * w.clone() * (one.from_ratio(1, 3) - w.clone() * one.mul_2si(-2));
+        let ln1p_w = eps4
+            .mul_2si(1)
+            .add(&eps4.sqr().mul_r(&one.from_i64(13)))
+            .add_r(&low);
+        let lnq = self.eps.ln().add(&ln1p_w);
+        Dd {
+            hi: -lnq.hi.mul_2si(-1),
+            lo: -lnq.lo / 2.0,
+        }
+        .norm()
+    }
+}
+
+/// `[q, q², q⁴, q⁶, q⁹, q¹², q¹⁶]` (and `q²⁰` separately where needed).
+#[inline(always)]
 fn powers<R: Real>(q: &R) -> [R; 7] {
     let q2 = q.sqr();
     let q4 = q2.sqr();
@@ -337,14 +435,15 @@ fn powers<R: Real>(q: &R) -> [R; 7] {
 }
 
 /// The theta-null quotients minus one, from `θ₂(0)/(2q^¼) = 1 + E₂`,
-/// `θ₃(0) = 1 + E₃ + O₃`, `θ₄(0) = 1 + E₃ − O₃` (`E₂ = q² + q⁶ + q¹²`,
+/// `θ₃(0) = 1 + E₃ + O₃`, `θ₄(0) = 1 + E₃ − O₃` (`E₂ = q² + q⁶ + q¹² + q²⁰`,
 /// `E₃ = 2q⁴ + 2q¹⁶`, `O₃ = 2q + 2q⁹`; DLMF 20.4.1–4).  Series: `θ₃/θ₂ − 1`,
 /// `θ₄/θ₂ − 1`, `θ₄/θ₃ − 1`; imaginary argument: `θ₃/θ₄ − 1`, `θ₂/θ₄ − 1`,
 /// `θ₂/θ₃ − 1`.  The differences are summed term by term (no cancellation).
+#[inline(always)]
 fn ratios<R: Real>(pow: &[R; 7], imaginary: bool) -> [R; 3] {
     let [q, q2, q4, q6, q9, q12, q16] = pow;
     let one = q.one();
-    let e2 = q2.clone() + q6.clone() + q12.clone();
+    let e2 = q2.clone() + q6.clone() + q12.clone() + q16.clone() * q4.clone();
     let e3 = (q4.clone() + q16.clone()).mul_2si(1);
     let o3 = (q.clone() + q9.clone()).mul_2si(1);
     let th3 = one.clone() + e3.clone() + o3.clone();
@@ -369,7 +468,7 @@ fn ratios<R: Real>(pow: &[R; 7], imaginary: bool) -> [R; 3] {
 
 /// `(sn, cn, dn)(u)` from the values at `u − 2hK`, `2h = j − (j mod 2)`: sn and cn
 /// change sign with `h` (DLMF 22.4.3, `sn(t + 2K) = −sn t`, `cn(t + 2K) = −cn t`).
-#[inline]
+#[inline(always)]
 pub(crate) fn half_period_sign<R: Real>(j: i64, (s, c, d): (R, R, R)) -> (R, R, R) {
     if (j - j.rem_euclid(2)) / 2 % 2 == 0 {
         (s, c, d)
@@ -416,7 +515,7 @@ mod tests {
                 lo: e - k2.lo,
             }
             .norm();
-            let th = Theta::new(&k2, &mc);
+            let th = Theta::with_bottom(&k2, &mc, k2.v() > 0.5, true);
             let p = 256;
             let kf = Float::with_val(p, k);
             let kp = Float::with_val(p, 1 - Float::with_val(p, &kf * &kf)).sqrt();

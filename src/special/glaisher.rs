@@ -1,0 +1,220 @@
+//! The twelve Jacobi elliptic functions `pq` in Glaisher's notation (DLMF 22.2.10):
+//! `pq = pr/qr` for `p, q ∈ {s, c, d, n}`, `p ≠ q`, with `sn, cn, dn` and `nn = 1`.
+
+use super::complex::sncndn_complex;
+use super::jacobi::{sncndn_imp, Spec};
+use super::{check_finite, check_modulus, show, Modulus, SpecialError};
+use crate::numbers::{ComplexScalar, Real};
+
+/// One of the twelve Jacobi elliptic functions (DLMF 22.2.4–9): `sn cn dn cd dc ns nc
+/// nd sc sd cs ds`, each the quotient `p/q` of two of `sn`, `cn`, `dn` and `1`.
+///
+/// ```
+/// use eulertop::special::JacobiFn;
+/// assert_eq!(JacobiFn::ALL.len(), 12);
+/// assert_eq!(JacobiFn::from_name("cd"), Some(JacobiFn::Cd));
+/// assert_eq!(JacobiFn::Cd.name(), "cd");
+/// assert_eq!(JacobiFn::from_name("xy"), None);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum JacobiFn {
+    /// `sn`.
+    Sn,
+    /// `cn`.
+    Cn,
+    /// `dn`.
+    Dn,
+    /// `cd = cn/dn`.
+    Cd,
+    /// `dc = dn/cn`.
+    Dc,
+    /// `ns = 1/sn`.
+    Ns,
+    /// `nc = 1/cn`.
+    Nc,
+    /// `nd = 1/dn`.
+    Nd,
+    /// `sc = sn/cn`.
+    Sc,
+    /// `sd = sn/dn`.
+    Sd,
+    /// `cs = cn/sn`.
+    Cs,
+    /// `ds = dn/sn`.
+    Ds,
+}
+
+/// One of the letters `s, c, d, n`: which of `sn, cn, dn, 1`.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Letter {
+    S,
+    C,
+    D,
+    N,
+}
+
+impl JacobiFn {
+    /// All twelve, in the order `sn cn dn cd dc ns nc nd sc sd cs ds`.
+    pub const ALL: [JacobiFn; 12] = [
+        JacobiFn::Sn,
+        JacobiFn::Cn,
+        JacobiFn::Dn,
+        JacobiFn::Cd,
+        JacobiFn::Dc,
+        JacobiFn::Ns,
+        JacobiFn::Nc,
+        JacobiFn::Nd,
+        JacobiFn::Sc,
+        JacobiFn::Sd,
+        JacobiFn::Cs,
+        JacobiFn::Ds,
+    ];
+
+    /// The two-letter name (`"sn"`, …).
+    pub fn name(self) -> &'static str {
+        const NAMES: [&str; 12] = [
+            "sn", "cn", "dn", "cd", "dc", "ns", "nc", "nd", "sc", "sd", "cs", "ds",
+        ];
+        NAMES[self as usize]
+    }
+
+    /// The function called `name`, if any.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|f| f.name() == name)
+    }
+
+    /// Numerator and denominator letters.
+    fn letters(self) -> (Letter, Letter) {
+        use Letter::*;
+        match self {
+            JacobiFn::Sn => (S, N),
+            JacobiFn::Cn => (C, N),
+            JacobiFn::Dn => (D, N),
+            JacobiFn::Cd => (C, D),
+            JacobiFn::Dc => (D, C),
+            JacobiFn::Ns => (N, S),
+            JacobiFn::Nc => (N, C),
+            JacobiFn::Nd => (N, D),
+            JacobiFn::Sc => (S, C),
+            JacobiFn::Sd => (S, D),
+            JacobiFn::Cs => (C, S),
+            JacobiFn::Ds => (D, S),
+        }
+    }
+}
+
+/// `p/q` from `(sn, cn, dn)`; `Err` with a pole or overflow message.
+fn quotient<T: crate::numbers::Scalar>(
+    f: JacobiFn,
+    (s, c, d): (T, T, T),
+    finite: impl Fn(&T) -> bool,
+    at: impl Fn() -> String,
+) -> Result<T, SpecialError> {
+    let pick = |l: Letter| match l {
+        Letter::S => s.clone(),
+        Letter::C => c.clone(),
+        Letter::D => d.clone(),
+        Letter::N => s.one(),
+    };
+    let (p, q) = f.letters();
+    let (num, den) = (pick(p), pick(q));
+    if q == Letter::N {
+        return Ok(num);
+    }
+    // sn vanishes only at its zeros 2jK (+ 2liK'), of which only 0 is representable; a
+    // zero cn or dn is an underflow (e.g. sech u at k = 1), so the quotient overflows
+    if den.is_zero() && q == Letter::S {
+        return Err(SpecialError::Pole(format!(
+            "{} has a pole at {} ({} = 0)",
+            f.name(),
+            at(),
+            ["sn", "cn", "dn", "1"][q as usize]
+        )));
+    }
+    let v = num / den.clone();
+    if den.is_zero() || !finite(&v) {
+        return Err(SpecialError::NotFinite(format!(
+            "{} overflows at {}",
+            f.name(),
+            at()
+        )));
+    }
+    Ok(v)
+}
+
+/// The Jacobi elliptic function `f` (any of the twelve, [`JacobiFn`]) of a real argument
+/// `u`, modulus `k ≥ 0` (as [`sncndn`](super::sncndn); DLMF 22.2), as the quotient of
+/// two of `sn, cn, dn` at the working precision (one rounding at the end).
+///
+/// Errors: as [`sncndn`](super::sncndn); [`SpecialError::Pole`] where the denominator
+/// vanishes (e.g. `ns(0)`), [`SpecialError::NotFinite`] where the quotient overflows
+/// (e.g. `nc` at `k = 1` for `|u| > 710` in `f64`, where `sech u` underflows).
+///
+/// ```
+/// use eulertop::special::{jacobi, sncndn, JacobiFn};
+/// let (s, c, d) = sncndn(&0.7_f64, &0.5).unwrap();
+/// assert!((jacobi(JacobiFn::Sd, &0.7_f64, &0.5).unwrap() - s / d).abs() < 1e-15);
+/// assert!(jacobi(JacobiFn::Ns, &0.0_f64, &0.5).is_err()); // pole
+/// ```
+pub fn jacobi<R: Real>(f: JacobiFn, u: &R, k: &R) -> Result<R, SpecialError> {
+    check_modulus(k)?;
+    check_finite(u, "u")?;
+    real(f, u, Spec::Modulus(k, Modulus::K), k.prec())
+}
+
+/// [`jacobi`] for the parameter `m = k²`, any real `m` (as [`sncndn_m`](super::sncndn_m)).
+///
+/// ```
+/// use eulertop::special::{jacobi_m, JacobiFn};
+/// // mpmath: ellipfun('cd', 0.7, m=-0.5) = 0.67688118364789303415
+/// let cd = jacobi_m(JacobiFn::Cd, &0.7_f64, &-0.5).unwrap();
+/// assert!((cd - 0.676881183647893).abs() < 1e-15);
+/// ```
+pub fn jacobi_m<R: Real>(f: JacobiFn, u: &R, m: &R) -> Result<R, SpecialError> {
+    if !m.is_finite() {
+        return Err(SpecialError::ModulusOutOfRange(format!(
+            "parameter m = {} is not finite",
+            show(m)
+        )));
+    }
+    check_finite(u, "u")?;
+    real(f, u, Spec::Parameter(m), m.prec())
+}
+
+/// `f(u)` for the modulus `spec` given at `prec` bits.
+fn real<R: Real>(f: JacobiFn, u: &R, spec: Spec<'_, R>, prec: u32) -> Result<R, SpecialError> {
+    let n = u.prec().max(prec);
+    let values = sncndn_imp(u, spec, n)?;
+    let at = || format!("u = {}", show(u));
+    quotient(f, values, |v: &R| v.is_finite(), at).map(|v| v.with_prec(n))
+}
+
+/// [`jacobi`] of a complex argument, real modulus `0 ≤ k < 1` (from
+/// [`sncndn_complex`]).
+///
+/// ```
+/// use eulertop::numbers::C64;
+/// use eulertop::special::{jacobi_complex, sncndn_complex, JacobiFn};
+/// let z = C64::new(0.5, 0.25);
+/// let (s, c, _) = sncndn_complex(&z, &0.5).unwrap();
+/// let sc = jacobi_complex(JacobiFn::Sc, &z, &0.5).unwrap();
+/// let want = s / c;
+/// assert!((sc.re - want.re).abs() < 1e-15 && (sc.im - want.im).abs() < 1e-15);
+/// ```
+pub fn jacobi_complex<C: ComplexScalar>(f: JacobiFn, u: &C, k: &C::R) -> Result<C, SpecialError> {
+    let values = sncndn_complex(u, k)?;
+    let at = || {
+        format!(
+            "u = {} + {}i, k = {}",
+            show(&u.re()),
+            show(&u.im()),
+            show(k)
+        )
+    };
+    quotient(
+        f,
+        values,
+        |v: &C| v.re().is_finite() && v.im().is_finite(),
+        at,
+    )
+}

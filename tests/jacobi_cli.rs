@@ -1,0 +1,100 @@
+//! `eulertop jacobi`: the twelve functions (`--functions`), the parameter `m`
+//! (`--parameter`), `k ≥ 1`, and one-line errors with the line number for overflowing
+//! numbers, non-UTF-8 and overlong lines (exit status 2).
+
+use std::io::Write;
+use std::process::{Command, Stdio};
+
+fn run(args: &[&str], input: &[u8]) -> (i32, String, String) {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_eulertop"))
+        .arg("jacobi")
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let mut stdin = child.stdin.take().unwrap();
+    // the child may stop reading early (overlong line): ignore a broken pipe
+    let _ = stdin.write_all(input);
+    drop(stdin);
+    let out = child.wait_with_output().unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+fn numbers(s: &str) -> Vec<f64> {
+    s.split_whitespace().map(|t| t.parse().unwrap()).collect()
+}
+
+#[test]
+fn help_names_the_modulus() {
+    let out = Command::new(env!("CARGO_BIN_EXE_eulertop"))
+        .args(["jacobi", "--help"])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    let first = text.lines().next().unwrap();
+    assert!(first.contains("k the modulus"), "{first}");
+}
+
+/// mpmath: ellipfun(f, 0.7, m=-0.5) for sn, cd, ns = 0.66395932651367945152,
+/// 0.67688118364789303415, 1.50611635392... ; ellipfun('sn', 0.7, m=2.25) =
+/// 0.55428056884074893... (modulus 1.5); k = 1: tanh 0.7, sech 0.7.
+#[test]
+fn parameter_functions_and_moduli_beyond_one() {
+    let (code, out, err) = run(&["--parameter", "--functions", "sn,cd,ns"], b"0.7 -0.5\n");
+    assert_eq!(code, 0, "{err}");
+    let v = numbers(&out);
+    assert_eq!(v.len(), 3);
+    assert!((v[0] - 0.6639593265136795).abs() < 1e-15);
+    assert!((v[1] - 0.676881183647893).abs() < 1e-15);
+    assert!((v[2] * v[0] - 1.0).abs() < 1e-15);
+    let (code, out, _) = run(&["--functions", "sn,cn,dn"], b"0.7 1\n0.7 1.5\n");
+    assert_eq!(code, 0);
+    let v = numbers(&out);
+    assert!((v[0] - 0.7f64.tanh()).abs() < 1e-16 && (v[1] - 1.0 / 0.7f64.cosh()).abs() < 1e-16);
+    assert!((v[3] - 0.554_280_568_840_748_9).abs() < 1e-15);
+}
+
+#[test]
+fn errors_are_one_line_with_the_line_number() {
+    let long = vec![b'x'; 5_000_000];
+    let cases: Vec<(Vec<&str>, Vec<u8>, &str)> = vec![
+        (
+            vec![],
+            b"0.5 0.5\n1e309 0.5\n".to_vec(),
+            "line 2: u = 1e309 overflows",
+        ),
+        (
+            vec![],
+            b"0.5 0.5\n\xff\xfe 0.5\n".to_vec(),
+            "line 2: not valid UTF-8",
+        ),
+        (vec![], long, "line 1: longer than 4096 bytes"),
+        (
+            vec!["--functions", "ns"],
+            b"0 0.5\n".to_vec(),
+            "line 1: pole",
+        ),
+        (vec![], b"0.5 -0.5\n".to_vec(), "line 1: modulus k = -5e-1"),
+        (
+            vec!["--complex", "--parameter"],
+            b"".to_vec(),
+            "not available",
+        ),
+    ];
+    for (args, input, want) in cases {
+        let (code, _, err) = run(&args, &input);
+        assert_eq!(code, 2, "{want}: {err}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.len() < 200, "{err}");
+        assert!(err.contains(want), "{want}: {err}");
+    }
+    let (code, _, err) = run(&["--functions", "sn,xy"], b"");
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("unknown function 'xy'"), "{err}");
+}
