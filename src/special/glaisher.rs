@@ -4,7 +4,7 @@
 use super::complex::sncndn_complex;
 use super::jacobi::{sncndn_imp, Spec};
 use super::{check_finite, check_modulus, show, Modulus, SpecialError};
-use crate::numbers::{ComplexScalar, Real};
+use crate::numbers::{ComplexScalar, Real, Scalar};
 
 /// One of the twelve Jacobi elliptic functions (DLMF 22.2.4–9): `sn cn dn cd dc ns nc
 /// nd sc sd cs ds`, each the quotient `p/q` of two of `sn`, `cn`, `dn` and `1`.
