@@ -7,7 +7,10 @@ use algebra_identities::{addition, cayley, g0g1, g1_alphabeta, mm, sol_et, Regim
 use eulertop::algebra::{prove_components, Proof, RingOptions};
 
 fn opts() -> RingOptions {
-    RingOptions { certificate: true, ..Default::default() }
+    RingOptions {
+        certificate: true,
+        ..Default::default()
+    }
 }
 
 /// Asserts the proof and, when `EULERTOP_CERT_DIR` is set, writes its certificate there
@@ -15,9 +18,15 @@ fn opts() -> RingOptions {
 fn assert_proved(p: &Proof, what: &str) {
     assert!(p.is_proved(), "{what}: {:?}", p.outcome);
     let cert = p.certificate.as_ref().expect("a certificate");
-    assert!(cert.contains("claim t"), "{what}: certificate without a claim");
+    assert!(
+        cert.contains("claim t"),
+        "{what}: certificate without a claim"
+    );
     if let Ok(dir) = std::env::var("EULERTOP_CERT_DIR") {
-        let file: String = what.chars().map(|c| if c.is_ascii_alphanumeric() { c } else { '_' }).collect();
+        let file: String = what
+            .chars()
+            .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+            .collect();
         std::fs::create_dir_all(&dir).expect("certificate directory");
         std::fs::write(format!("{dir}/{file}.cert"), cert).expect("certificate written");
     }
@@ -48,20 +57,30 @@ fn g0g1_in_both_regimes() {
     for regime in [Regime::Upper, Regime::Lower] {
         let p = prove_components(opts(), "(G0G1)", |r| g0g1(r, regime, Variant::True, false));
         assert_proved(&p, &format!("(G0G1) {regime:?}"));
-        assert!(!p.assumptions.is_empty(), "the roots' branches are assumptions");
+        assert!(
+            !p.assumptions.is_empty(),
+            "the roots' branches are assumptions"
+        );
     }
 }
 
 #[test]
 fn g0g1_with_named_k_and_nu_needs_their_definitions() {
-    let p = prove_components(opts(), "(G0G1) named", |r| g0g1(r, Regime::Upper, Variant::True, true));
+    let p = prove_components(opts(), "(G0G1) named", |r| {
+        g0g1(r, Regime::Upper, Variant::True, true)
+    });
     assert_proved(&p, "(G0G1) named");
     assert!(p.expanded_named, "k and ν free cannot prove it");
 }
 
 #[test]
 fn wrong_g0g1_variants_are_never_proved() {
-    for v in [Variant::SignFlipped, Variant::KForK2, Variant::MissingSquare, Variant::Scaled] {
+    for v in [
+        Variant::SignFlipped,
+        Variant::KForK2,
+        Variant::MissingSquare,
+        Variant::Scaled,
+    ] {
         for regime in [Regime::Upper, Regime::Lower] {
             let p = prove_components(opts(), "wrong (G0G1)", |r| g0g1(r, regime, v, false));
             assert!(!p.is_proved(), "{v:?} {regime:?}");
@@ -87,7 +106,9 @@ fn mm_differences_and_sums_from_the_addition_formulae() {
 
 #[test]
 fn mm_from_phi_and_phi_hat_refines_the_base_arguments() {
-    let p = prove_components(opts(), "(M-M 1-3) from phi, phih", |r| mm(r, Regime::Upper, true));
+    let p = prove_components(opts(), "(M-M 1-3) from phi, phih", |r| {
+        mm(r, Regime::Upper, true)
+    });
     assert_proved(&p, "(M-M) from φ, φ̂");
     assert!(p.attempts >= 2);
 }
@@ -104,5 +125,11 @@ fn the_solution_solves_the_euler_top() {
 fn lemma_2_cayley_form() {
     let p = prove_components(opts(), "Lemma 2", cayley);
     assert_proved(&p, "Lemma 2");
-    assert!(p.assumptions.iter().any(|a| a.statement.starts_with("sqrt(")), "{:?}", p.assumptions);
+    assert!(
+        p.assumptions
+            .iter()
+            .any(|a| a.statement.starts_with("sqrt(")),
+        "{:?}",
+        p.assumptions
+    );
 }

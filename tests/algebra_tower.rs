@@ -51,7 +51,9 @@ fn perfect_squares_take_the_sign_from_the_domain() {
     assert!(asm.iter().any(|x| x.sign == 1), "{asm:?}");
     assert!(asm.iter().all(|x| x.origin == Origin::Claim));
     // 4A²/9 → 2A/3
-    let sq = (&(&(&a * &a) * &r.integer(4)) / &r.integer(9)).sqrt().unwrap();
+    let sq = (&(&(&a * &a) * &r.integer(4)) / &r.integer(9))
+        .sqrt()
+        .unwrap();
     assert_eq!(sq, &(&a * &r.integer(2)) / &r.integer(3));
     // no root symbol was needed
     assert!(r.relations().is_empty(), "{:?}", r.relations());
@@ -95,7 +97,11 @@ fn negative_radicands_bring_i_and_positive_products_stay_real() {
     let c = var(&r, "C", [1.0, 0.5, 2.0]);
     // (C − A)(C − B) > 0: FLINT's factors A − C, B − C are positive, no i
     let p = (&(&c - &a) * &(&c - &b)).sqrt().unwrap();
-    assert!(r.symbols().iter().all(|(n, _)| n != "i_"), "{:?}", r.symbols());
+    assert!(
+        r.symbols().iter().all(|(n, _)| n != "i_"),
+        "{:?}",
+        r.symbols()
+    );
     assert_eq!(&p * &p, &(&c - &a) * &(&c - &b));
     // C − A < 0: √(C − A) = i √(A − C)
     let m = (&c - &a).sqrt().unwrap();
@@ -110,7 +116,10 @@ fn integer_radicands_and_denesting() {
     let r = ring();
     let s2 = r.integer(2).sqrt().unwrap();
     assert_eq!(r.integer(8).sqrt().unwrap(), &r.integer(2) * &s2);
-    assert_eq!(&s2 * &r.integer(3).sqrt().unwrap(), r.integer(6).sqrt().unwrap());
+    assert_eq!(
+        &s2 * &r.integer(3).sqrt().unwrap(),
+        r.integer(6).sqrt().unwrap()
+    );
     // 1/(1 + √2) = √2 − 1 (rationalised denominator)
     let one = r.integer(1);
     assert_eq!(&one / &(&one + &s2), &s2 - &one);
@@ -134,7 +143,10 @@ fn division_by_zero_is_an_error_and_poisons_operators() {
     assert!(r.error().is_none());
     let _ = &a / &z;
     assert_eq!(r.error(), Some(AlgebraError::DivisionByZero));
-    assert!(!r.prove(&a, &a).is_proved(), "a poisoned ring proves nothing");
+    assert!(
+        !r.prove(&a, &a).is_proved(),
+        "a poisoned ring proves nothing"
+    );
 }
 
 #[test]
@@ -147,7 +159,11 @@ fn comparisons_are_decided_and_recorded_with_their_origin() {
     });
     assert!(c < a);
     let asm = r.assumptions();
-    assert!(asm.iter().any(|x| x.origin == Origin::Definition("regime".into())), "{asm:?}");
+    assert!(
+        asm.iter()
+            .any(|x| x.origin == Origin::Definition("regime".into())),
+        "{asm:?}"
+    );
     assert!(asm.iter().any(|x| x.origin == Origin::Claim), "{asm:?}");
     // exact rationals need no assumption
     let n = asm.len();
@@ -265,7 +281,10 @@ fn half_arguments_refine_the_base_arguments_by_a_restart() {
         Ok((lhs, &(&(&(&sb * &cd) * &dd) + &(&(&sd * &cb) * &db)) / &den))
     });
     assert!(proof.is_proved(), "{:?}", proof.outcome);
-    assert!(proof.attempts >= 2, "the first evaluation must ask for refined bases");
+    assert!(
+        proof.attempts >= 2,
+        "the first evaluation must ask for refined bases"
+    );
 }
 
 #[test]
@@ -281,8 +300,14 @@ fn derivatives_of_the_jacobi_functions() {
     let (s2, c2, d2) = (&ra * &u).sncndn(&k).unwrap();
     assert_eq!(s2.derivative(&u).unwrap(), &(&ra * &c2) * &d2);
     // d/da √a = 1/(2√a)
-    assert_eq!(ra.derivative(&a).unwrap(), &r.integer(1) / &(&r.integer(2) * &ra));
-    assert!(matches!(s.derivative(&(&u + &a)), Err(AlgebraError::Derivative(_))));
+    assert_eq!(
+        ra.derivative(&a).unwrap(),
+        &r.integer(1) / &(&r.integer(2) * &ra)
+    );
+    assert!(matches!(
+        s.derivative(&(&u + &a)),
+        Err(AlgebraError::Derivative(_))
+    ));
 }
 
 /// Central difference of sn in k at 256 bits (independent of the prover).
@@ -297,19 +322,28 @@ fn sn_dk_numeric(u: f64, k: f64) -> f64 {
 
 #[test]
 fn derivatives_in_the_modulus() {
-    let (r, u, k) = period_ring();
+    let (_r, u, k) = period_ring();
     let (s, c, d) = u.sncndn(&k).unwrap();
     let dk_s = s.derivative(&k).unwrap();
     // the Pythagorean relations are constant in k
-    assert!((&(&s * &s) + &(&c * &c)).derivative(&k).unwrap().is_exact_zero());
+    assert!((&(&s * &s) + &(&c * &c))
+        .derivative(&k)
+        .unwrap()
+        .is_exact_zero());
     let dn_rel = &(&d * &d) + &(&(&k * &k) * &(&s * &s));
     assert!(dn_rel.derivative(&k).unwrap().is_exact_zero());
     for (p, (uu, kk)) in [(0.3, 0.5), (-0.8, 0.9), (1.2, 0.2)].iter().enumerate() {
         let expect = sn_dk_numeric(*uu, *kk);
         let got = dk_s.shadow(p).real().to_f64();
-        assert!((got - expect).abs() < 1e-12 * expect.abs().max(1.0), "point {p}: {got} vs {expect}");
+        assert!(
+            (got - expect).abs() < 1e-12 * expect.abs().max(1.0),
+            "point {p}: {got} vs {expect}"
+        );
         let nf = dk_s.eval_normal_form()[p].real().to_f64();
-        assert!((nf - expect).abs() < 1e-12 * expect.abs().max(1.0), "point {p}: {nf} vs {expect}");
+        assert!(
+            (nf - expect).abs() < 1e-12 * expect.abs().max(1.0),
+            "point {p}: {nf} vs {expect}"
+        );
     }
 }
 

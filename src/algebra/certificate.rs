@@ -45,7 +45,13 @@ pub(crate) enum Op {
     /// A square root with the sign chosen from the shadows.
     Sqrt(i32),
     /// `f` ∈ {sn, cn, dn} of `Σ nⱼ bⱼ + p·K/2 + q·iK'/2` of table `table`.
-    Elliptic { f: &'static str, table: usize, combo: Vec<(usize, i64)>, half_k: i64, half_kp: i64 },
+    Elliptic {
+        f: &'static str,
+        table: usize,
+        combo: Vec<(usize, i64)>,
+        half_k: i64,
+        half_kp: i64,
+    },
     /// The derivative with respect to an indeterminate.
     Deriv(String),
 }
@@ -70,7 +76,11 @@ impl Node {
         Node::new(Op::Const(q.to_string()), Vec::new())
     }
     pub fn with_nf(op: Op, args: Vec<Arc<Node>>, v: &Val) -> Arc<Node> {
-        Arc::new(Node { op, args, nf: Some((v.num.clone(), v.den.clone())) })
+        Arc::new(Node {
+            op,
+            args,
+            nf: Some((v.num.clone(), v.den.clone())),
+        })
     }
     pub fn sqrt(arg: &Arc<Node>, v: &Val, _ring: &Ring, sigma: i32) -> Arc<Node> {
         Node::with_nf(Op::Sqrt(sigma), vec![arg.clone()], v)
@@ -122,13 +132,30 @@ impl Emitter<'_> {
             Op::Neg => format!("- {}", t(0)),
             Op::Pow(e) => format!("{} ^ {e}", t(0)),
             Op::Sqrt(s) => format!("sqrt {} sign {s}", t(0)),
-            Op::Elliptic { f, table, combo, half_k, half_kp } => {
-                let c: Vec<String> = combo.iter().map(|(b, m)| format!("b_{}_{}:{m}", table + 1, b + 1)).collect();
-                format!("{f} {} table {} combo {} halfK {half_k} halfiKp {half_kp}", t(0), table + 1, c.join(","))
+            Op::Elliptic {
+                f,
+                table,
+                combo,
+                half_k,
+                half_kp,
+            } => {
+                let c: Vec<String> = combo
+                    .iter()
+                    .map(|(b, m)| format!("b_{}_{}:{m}", table + 1, b + 1))
+                    .collect();
+                format!(
+                    "{f} {} table {} combo {} halfK {half_k} halfiKp {half_kp}",
+                    t(0),
+                    table + 1,
+                    c.join(",")
+                )
             }
             Op::Deriv(x) => format!("d {} {x}", t(0)),
         };
-        let nf = n.nf.as_ref().map(|(a, b)| format!(" -> {}", nf_text(a, b, self.names))).unwrap_or_default();
+        let nf =
+            n.nf.as_ref()
+                .map(|(a, b)| format!(" -> {}", nf_text(a, b, self.names)))
+                .unwrap_or_default();
         let _ = writeln!(self.out, "node t{id} = {body}{nf}");
         id
     }
@@ -147,7 +174,11 @@ impl Ring {
         let _ = writeln!(out, "# eulertop certificate 1");
         let _ = writeln!(out, "# claim: {}", title.replace('\n', " "));
         out.push_str(&self.symbol_lines(&names));
-        let mut em = Emitter { names: &names, ids: HashMap::new(), out: String::new() };
+        let mut em = Emitter {
+            names: &names,
+            ids: HashMap::new(),
+            out: String::new(),
+        };
         let mut claims = Vec::new();
         for (ln, rn) in &nodes {
             let a = em.visit(ln);
@@ -171,13 +202,26 @@ impl Ring {
             let what = super::sym::describe_kind(&v.kind);
             let _ = writeln!(out, "field {} {}  # {what}", v.name, kind_tag(&v.kind));
             if let super::ring::VarKind::Named(def) = &v.kind {
-                let _ = writeln!(out, "named {} = {}", v.name, nf_text(&def.num, &def.den, names));
+                let _ = writeln!(
+                    out,
+                    "named {} = {}",
+                    v.name,
+                    nf_text(&def.num, &def.den, names)
+                );
             }
         }
         for r in &st.roots {
-            let _ = writeln!(out, "root {} = {}  # {}", r.name, r.radicand.render(names), r.note);
+            let _ = writeln!(
+                out,
+                "root {} = {}  # {}",
+                r.name,
+                r.radicand.render(names),
+                r.note
+            );
         }
-        let i_name = st.i_root.map_or("none".to_string(), |i| st.roots[i].name.clone());
+        let i_name = st
+            .i_root
+            .map_or("none".to_string(), |i| st.roots[i].name.clone());
         for (ti, t) in st.tables.iter().enumerate() {
             out.push_str(&t.certificate_lines(ti, names, |j| self.inner.kvar(j), &i_name));
         }

@@ -42,10 +42,15 @@ impl Sym {
         let jx = x
             .as_field_var()
             .filter(|&j| matches!(ring.state().vars[j].kind, VarKind::Indeterminate))
-            .ok_or_else(|| AlgebraError::Derivative(format!("{} is not an indeterminate", x.render_short(60))))?;
+            .ok_or_else(|| {
+                AlgebraError::Derivative(format!("{} is not an indeterminate", x.render_short(60)))
+            })?;
         let v = ring.val_derivative(&self.val, jx)?;
         let name = ring.state().vars[jx].name.clone();
-        let node = self.node.as_ref().map(|n| Node::with_nf(Op::Deriv(name), vec![n.clone()], &v));
+        let node = self
+            .node
+            .as_ref()
+            .map(|n| Node::with_nf(Op::Deriv(name), vec![n.clone()], &v));
         Ok(Sym::from_val(ring, v, node))
     }
 }
@@ -54,7 +59,11 @@ impl Ring {
     fn poly_val(&self, p: &Poly) -> Val {
         let one = Poly::from_i64(&self.inner.ctx, 1);
         let sh = self.shadow_of(p, &one);
-        Val { num: p.clone(), den: one, sh }
+        Val {
+            num: p.clone(),
+            den: one,
+            sh,
+        }
     }
 
     /// `d/dx` of a polynomial (as a value).
@@ -128,14 +137,18 @@ impl Ring {
             VarKind::Opaque { constant: true } => Ok(zero),
             VarKind::Opaque { constant: false } => {
                 let name = self.state().vars[j].name.clone();
-                Err(AlgebraError::Derivative(format!("the derivative of {name} is unknown")))
+                Err(AlgebraError::Derivative(format!(
+                    "the derivative of {name} is unknown"
+                )))
             }
             VarKind::QuarterK { table } | VarKind::QuarterKp { table } => {
                 let k = self.state().tables[table].k.clone();
                 if self.val_derivative(&k, jx)?.num.is_zero() {
                     Ok(zero)
                 } else {
-                    Err(AlgebraError::Derivative("of a quarter period whose modulus varies (needs E(k))".into()))
+                    Err(AlgebraError::Derivative(
+                        "of a quarter period whose modulus varies (needs E(k))".into(),
+                    ))
                 }
             }
             VarKind::Sn { table, base } => self.sn_derivative(table, base, jx, false),
@@ -149,7 +162,13 @@ impl Ring {
         let (k, arg, c, d, sj) = {
             let st = self.state();
             let b = &st.tables[table].bases[base];
-            (st.tables[table].k.clone(), b.arg.clone(), b.c.clone(), b.d.clone(), b.s_var)
+            (
+                st.tables[table].k.clone(),
+                b.arg.clone(),
+                b.c.clone(),
+                b.d.clone(),
+                b.s_var,
+            )
         };
         let s = self.var_sym(sj).val;
         let du = self.val_derivative(&arg, jx)?;
@@ -157,7 +176,11 @@ impl Ring {
         let m = |a: &Val, b: &Val| inner.v_mul(a, b);
         let cd = m(&c, &d)?;
         let k2 = m(&k, &k)?;
-        let along = if zeta { m(&m(&k2, &m(&c, &c)?)?, &du)? } else { m(&cd, &du)? };
+        let along = if zeta {
+            m(&m(&k2, &m(&c, &c)?)?, &du)?
+        } else {
+            m(&cd, &du)?
+        };
         if dk.num.is_zero() {
             return Ok(along);
         }
@@ -189,18 +212,27 @@ impl Ring {
         }
         let (k, arg) = {
             let st = self.state();
-            (st.tables[table].k.clone(), st.tables[table].bases[base].arg.clone())
+            (
+                st.tables[table].k.clone(),
+                st.tables[table].bases[base].arg.clone(),
+            )
         };
         let prec = self.precision();
         let mut values = Vec::new();
         for p in 0..self.points() {
             if !arg.sh.is_real_at(p, prec) {
-                return Err(AlgebraError::Derivative("in the modulus at a complex argument".into()));
+                return Err(AlgebraError::Derivative(
+                    "in the modulus at a complex argument".into(),
+                ));
             }
             values.push(zeta_value(&arg.sh, &k.sh, p, prec)?);
         }
         let n = self.state().vars.len();
-        let j = self.inner.add_var(format!("Z_{}", n + 1), VarKind::Zeta { table, base }, values)?;
+        let j = self.inner.add_var(
+            format!("Z_{}", n + 1),
+            VarKind::Zeta { table, base },
+            values,
+        )?;
         self.state().tables[table].bases[base].z_var = Some(j);
         Ok(self.var_sym(j).val)
     }
@@ -213,7 +245,8 @@ fn zeta_value(u: &Shadow, k: &Shadow, p: usize, prec: u32) -> AlgResult<Complex>
     let kf = Float::with_val(prec, k.v[p].real());
     let ud = Dual::constant(uf);
     let kd = Dual::var(kf.clone());
-    let (s, c, d) = sncndn(&ud, &kd).map_err(|e| AlgebraError::Derivative(format!("numeric sn: {e}")))?;
+    let (s, c, d) =
+        sncndn(&ud, &kd).map_err(|e| AlgebraError::Derivative(format!("numeric sn: {e}")))?;
     let damk = if Float::with_val(prec, c.v.abs_ref()) >= Float::with_val(prec, s.v.abs_ref()) {
         Float::with_val(prec, &s.d / &c.v)
     } else {

@@ -87,11 +87,19 @@ fn pad(v: &mut Vec<Rational>, n: usize) {
 /// Solves `v = Σ nⱼ bⱼ` over ℚ (the bases are independent); `None` outside their span.
 pub(crate) fn solve(bases: &[Vec<Rational>], v: &[Rational]) -> Option<Vec<Rational>> {
     let m = bases.len();
-    let n = bases.iter().map(|b| b.len()).max().unwrap_or(0).max(v.len());
+    let n = bases
+        .iter()
+        .map(|b| b.len())
+        .max()
+        .unwrap_or(0)
+        .max(v.len());
     // rows: directions; columns: bases, then v
     let mut a: Vec<Vec<Rational>> = (0..n)
         .map(|i| {
-            let mut row: Vec<Rational> = bases.iter().map(|b| b.get(i).cloned().unwrap_or_default()).collect();
+            let mut row: Vec<Rational> = bases
+                .iter()
+                .map(|b| b.get(i).cloned().unwrap_or_default())
+                .collect();
             row.push(v.get(i).cloned().unwrap_or_default());
             row
         })
@@ -99,18 +107,20 @@ pub(crate) fn solve(bases: &[Vec<Rational>], v: &[Rational]) -> Option<Vec<Ratio
     let mut piv = Vec::new();
     let mut r = 0;
     for c in 0..m {
-        let Some(p) = (r..n).find(|&i| a[i][c] != 0) else { continue };
+        let Some(p) = (r..n).find(|&i| a[i][c] != 0) else {
+            continue;
+        };
         a.swap(r, p);
         let inv = Rational::from(1) / a[r][c].clone();
         for x in a[r].iter_mut() {
             *x *= &inv;
         }
-        for i in 0..n {
-            if i != r && a[i][c] != 0 {
-                let f = a[i][c].clone();
-                for j in 0..=m {
-                    let t = Rational::from(&f * &a[r][j]);
-                    a[i][j] -= t;
+        let pivot_row = a[r].clone();
+        for (i, row) in a.iter_mut().enumerate() {
+            if i != r && row[c] != 0 {
+                let f = row[c].clone();
+                for (x, p) in row.iter_mut().zip(&pivot_row) {
+                    *x -= Rational::from(&f * p);
                 }
             }
         }
@@ -153,11 +163,19 @@ impl Table {
         self.dirs.len() - 1
     }
 
-    pub fn certificate_lines(&self, ti: usize, names: &[String], kvar: impl Fn(usize) -> usize, i_name: &str) -> String {
+    pub fn certificate_lines(
+        &self,
+        ti: usize,
+        names: &[String],
+        kvar: impl Fn(usize) -> usize,
+        i_name: &str,
+    ) -> String {
         let nf = |v: &Val| format!("({})/({})", v.num.render(names), v.den.render(names));
         let mut out = String::new();
         for (bi, b) in self.bases.iter().enumerate() {
-            let z = b.z_var.map_or(String::new(), |j| format!(" z={}", names[kvar(j)]));
+            let z = b
+                .z_var
+                .map_or(String::new(), |j| format!(" z={}", names[kvar(j)]));
             let _ = writeln!(
                 out,
                 "base b_{}_{} k={} s={} c={} d={} arg={}{z}",
@@ -171,7 +189,9 @@ impl Table {
             );
         }
         let triple = |t: &Option<[Val; 3]>| {
-            t.as_ref().map_or("none".to_string(), |[s, c, d]| format!("[{}, {}, {}]", nf(s), nf(c), nf(d)))
+            t.as_ref().map_or("none".to_string(), |[s, c, d]| {
+                format!("[{}, {}, {}]", nf(s), nf(c), nf(d))
+            })
         };
         if self.kp.is_some() || self.half_kp.is_some() {
             let kp = self.kp.as_ref().map_or("none".to_string(), nf);
@@ -215,7 +235,11 @@ impl Ring {
                 )));
             }
         }
-        let found = self.state().tables.iter().position(|t| t.k.num == k.val.num && t.k.den == k.val.den);
+        let found = self
+            .state()
+            .tables
+            .iter()
+            .position(|t| t.k.num == k.val.num && t.k.den == k.val.den);
         if let Some(i) = found {
             return Ok(i);
         }
@@ -298,7 +322,11 @@ impl Ring {
         };
         let is_ikp = |e: &[u64]| match (kpv, iv) {
             (Some(a), Some(b)) => {
-                e[a] == 1 && e[b] == 1 && e.iter().enumerate().all(|(j, &x)| j == a || j == b || x == 0)
+                e[a] == 1
+                    && e[b] == 1
+                    && e.iter()
+                        .enumerate()
+                        .all(|(j, &x)| j == a || j == b || x == 0)
             }
             _ => false,
         };
@@ -316,9 +344,13 @@ impl Ring {
         });
         let to_int = |q: &Rational, what: &str| {
             if *q.denom() == 1 {
-                q.numer().to_i64().ok_or_else(|| AlgebraError::Domain(format!("{what}: multiple too large")))
+                q.numer()
+                    .to_i64()
+                    .ok_or_else(|| AlgebraError::Domain(format!("{what}: multiple too large")))
             } else {
-                Err(AlgebraError::Domain(format!("{what}: only multiples of a half period are supported")))
+                Err(AlgebraError::Domain(format!(
+                    "{what}: only multiples of a half period are supported"
+                )))
             }
         };
         let half_k = to_int(&hk, "K")?;
@@ -332,12 +364,20 @@ impl Ring {
             let i = table.dir_index(key, || {
                 let one = Integer::from(1);
                 let m = Poly::from_terms(ctx, [(&one, e.as_slice())]);
-                Val { num: m, den: dp.clone(), sh: Shadow::leaf(Vec::new()) }
+                Val {
+                    num: m,
+                    den: dp.clone(),
+                    sh: Shadow::leaf(Vec::new()),
+                }
             });
             pad(&mut vec, i + 1);
             vec[i] += q;
         }
-        Ok(Split { vec, half_k, half_kp })
+        Ok(Split {
+            vec,
+            half_k,
+            half_kp,
+        })
     }
 
     /// The value of direction `i` of table `t` (with its shadow).
@@ -351,9 +391,15 @@ impl Ring {
     /// adding a base when `vec` is outside their span.
     fn coordinates(&self, t: usize, vec: &[Rational]) -> AlgResult<Vec<i64>> {
         self.activate_hints(t)?;
-        let bases: Vec<Vec<Rational>> = self.state().tables[t].bases.iter().map(|b| b.vec.clone()).collect();
+        let bases: Vec<Vec<Rational>> = self.state().tables[t]
+            .bases
+            .iter()
+            .map(|b| b.vec.clone())
+            .collect();
         let mut x = solve(&bases, vec);
-        if x.as_ref().is_some_and(|x| x.iter().any(|q| *q.denom() != 1)) {
+        if x.as_ref()
+            .is_some_and(|x| x.iter().any(|q| *q.denom() != 1))
+        {
             // finish this evaluation with a provisional base, then restart refined
             self.state().rebase_wanted = true;
             x = None;
@@ -369,7 +415,11 @@ impl Ring {
             }
         };
         x.iter()
-            .map(|q| q.numer().to_i64().ok_or_else(|| AlgebraError::Domain("argument multiple too large".into())))
+            .map(|q| {
+                q.numer()
+                    .to_i64()
+                    .ok_or_else(|| AlgebraError::Domain("argument multiple too large".into()))
+            })
             .collect()
     }
 
@@ -395,7 +445,10 @@ impl Ring {
                         .collect()
                 })
                 .collect();
-            hints.push(BaseHint { modulus: (terms(&t.k.num), terms(&t.k.den)), bases });
+            hints.push(BaseHint {
+                modulus: (terms(&t.k.num), terms(&t.k.den)),
+                bases,
+            });
         }
         hints
     }
@@ -413,10 +466,11 @@ impl Ring {
                 hint.iter().all(|((e, d), _)| {
                     let ok = |ex: &[u64]| {
                         ex.iter().enumerate().all(|(i, &x)| {
-                            x == 0 || match inner.root_of_var(i) {
-                                Some(r) => r < nr,
-                                None => i - inner.opts.max_roots < nv,
-                            }
+                            x == 0
+                                || match inner.root_of_var(i) {
+                                    Some(r) => r < nr,
+                                    None => i - inner.opts.max_roots < nv,
+                                }
                         })
                     };
                     ok(e) && d.iter().all(|(_, de)| ok(de))
@@ -434,7 +488,11 @@ impl Ring {
                 let m = Poly::from_terms(&ctx, [(&one, e.as_slice())]);
                 let key = (e.clone(), d.clone());
                 let mut st = self.state();
-                let i = st.tables[t].dir_index(key, || Val { num: m, den, sh: Shadow::leaf(Vec::new()) });
+                let i = st.tables[t].dir_index(key, || Val {
+                    num: m,
+                    den,
+                    sh: Shadow::leaf(Vec::new()),
+                });
                 pad(&mut vec, i + 1);
                 vec[i] += q;
             }
@@ -458,7 +516,13 @@ impl Ring {
         }
         let k = self.state().tables[t].k.clone();
         let (sv, cv, dv) = self.numeric_sncndn(&arg.sh, &k.sh)?;
-        let nb: usize = self.state().tables.iter().map(|tb| tb.bases.len()).sum::<usize>() + 1;
+        let nb: usize = self
+            .state()
+            .tables
+            .iter()
+            .map(|tb| tb.bases.len())
+            .sum::<usize>()
+            + 1;
         let argtext = Sym::from_val(self, arg.clone(), None).render_short(60);
         let base = self.state().tables[t].bases.len();
         let j = inner.add_var(format!("sn_{nb}"), VarKind::Sn { table: t, base }, sv)?;
@@ -466,24 +530,47 @@ impl Ring {
         let one = self.integer(1);
         let k2 = Sym::from_val(self, self.state().tables[t].k2.clone(), None);
         let c = self.with_origin(Origin::Definition("cn".into()), || {
-            one.try_sub(&s.try_mul(&s)?)?.sqrt_with(Some(Prescribed { values: &cv, name: &format!("cn_{nb}"), note: &format!("cn({argtext})") }))
+            one.try_sub(&s.try_mul(&s)?)?.sqrt_with(Some(Prescribed {
+                values: &cv,
+                name: &format!("cn_{nb}"),
+                note: &format!("cn({argtext})"),
+            }))
         })?;
         let d = self.with_origin(Origin::Definition("dn".into()), || {
-            one.try_sub(&k2.try_mul(&s)?.try_mul(&s)?)?.sqrt_with(Some(Prescribed { values: &dv, name: &format!("dn_{nb}"), note: &format!("dn({argtext})") }))
+            one.try_sub(&k2.try_mul(&s)?.try_mul(&s)?)?
+                .sqrt_with(Some(Prescribed {
+                    values: &dv,
+                    name: &format!("dn_{nb}"),
+                    note: &format!("dn({argtext})"),
+                }))
         })?;
         self.note(format!("sn_{nb} = sn({argtext})"));
         let mut st = self.state();
-        st.tables[t].bases.push(Base { vec, arg, s_var: j, s_name: format!("sn_{nb}"), c: c.val, d: d.val, z_var: None });
+        st.tables[t].bases.push(Base {
+            vec,
+            arg,
+            s_var: j,
+            s_name: format!("sn_{nb}"),
+            c: c.val,
+            d: d.val,
+            z_var: None,
+        });
         Ok(())
     }
 
     /// sn, cn, dn at every point of an argument and modulus shadow.
-    pub(crate) fn numeric_sncndn(&self, u: &Shadow, k: &Shadow) -> AlgResult<(Vec<Complex>, Vec<Complex>, Vec<Complex>)> {
+    pub(crate) fn numeric_sncndn(
+        &self,
+        u: &Shadow,
+        k: &Shadow,
+    ) -> AlgResult<(Vec<Complex>, Vec<Complex>, Vec<Complex>)> {
         let prec = self.precision();
         let (mut s, mut c, mut d) = (Vec::new(), Vec::new(), Vec::new());
         for p in 0..self.points() {
             let kr = Float::with_val(prec, k.v[p].real());
-            let err = |e: crate::special::SpecialError| AlgebraError::Pole(format!("numeric sn, cn, dn: {e}"));
+            let err = |e: crate::special::SpecialError| {
+                AlgebraError::Pole(format!("numeric sn, cn, dn: {e}"))
+            };
             if u.is_real_at(p, prec) {
                 let ur = Float::with_val(prec, u.v[p].real());
                 let (a, b, e) = sncndn(&ur, &kr).map_err(err)?;
@@ -519,11 +606,27 @@ impl Triples<'_> {
         let [s1, c1, d1] = a;
         let [s2, c2, d2] = b;
         let s1s2 = i.v_mul(s1, s2)?;
-        let den = i.v_add(&i.const_val(&Rational::from(1)), &i.v_mul(&k2, &i.v_mul(&s1s2, &s1s2)?)?, true)?;
-        let sn_n = i.v_add(&i.v_mul(s1, &i.v_mul(c2, d2)?)?, &i.v_mul(s2, &i.v_mul(c1, d1)?)?, false)?;
+        let den = i.v_add(
+            &i.const_val(&Rational::from(1)),
+            &i.v_mul(&k2, &i.v_mul(&s1s2, &s1s2)?)?,
+            true,
+        )?;
+        let sn_n = i.v_add(
+            &i.v_mul(s1, &i.v_mul(c2, d2)?)?,
+            &i.v_mul(s2, &i.v_mul(c1, d1)?)?,
+            false,
+        )?;
         let cn_n = i.v_add(&i.v_mul(c1, c2)?, &i.v_mul(&s1s2, &i.v_mul(d1, d2)?)?, true)?;
-        let dn_n = i.v_add(&i.v_mul(d1, d2)?, &i.v_mul(&k2, &i.v_mul(&s1s2, &i.v_mul(c1, c2)?)?)?, true)?;
-        Ok([i.v_div(&sn_n, &den)?, i.v_div(&cn_n, &den)?, i.v_div(&dn_n, &den)?])
+        let dn_n = i.v_add(
+            &i.v_mul(d1, d2)?,
+            &i.v_mul(&k2, &i.v_mul(&s1s2, &i.v_mul(c1, c2)?)?)?,
+            true,
+        )?;
+        Ok([
+            i.v_div(&sn_n, &den)?,
+            i.v_div(&cn_n, &den)?,
+            i.v_div(&dn_n, &den)?,
+        ])
     }
 
     fn neg(&self, a: &[Val; 3]) -> [Val; 3] {
@@ -555,14 +658,20 @@ impl Triples<'_> {
         } else {
             self.add(&self.multiple(j, n - 1, nb)?, &self.base(j))?
         };
-        self.ring.state().tables[self.t].triples.insert(key, v.clone());
+        self.ring.state().tables[self.t]
+            .triples
+            .insert(key, v.clone());
         Ok(v)
     }
 
     /// `Σ nⱼ bⱼ`.
     fn combination(&self, n: &[i64]) -> AlgResult<[Val; 3]> {
         let i = &self.ring.inner;
-        let mut acc = [i.const_val(&Rational::new()), i.const_val(&Rational::from(1)), i.const_val(&Rational::from(1))];
+        let mut acc = [
+            i.const_val(&Rational::new()),
+            i.const_val(&Rational::from(1)),
+            i.const_val(&Rational::from(1)),
+        ];
         let mut first = true;
         for (j, &m) in n.iter().enumerate() {
             if m != 0 {
@@ -580,7 +689,9 @@ impl Triples<'_> {
         }
         let r = self.ring;
         let k2 = Sym::from_val(r, self.k2(), None);
-        let kp = r.with_origin(Origin::Definition("k' = sqrt(1 - k^2) > 0".into()), || r.integer(1).try_sub(&k2)?.sqrt())?;
+        let kp = r.with_origin(Origin::Definition("k' = sqrt(1 - k^2) > 0".into()), || {
+            r.integer(1).try_sub(&k2)?.sqrt()
+        })?;
         r.state().tables[self.t].kp = Some(kp.val.clone());
         Ok(kp.val)
     }
@@ -590,7 +701,11 @@ impl Triples<'_> {
         let i = &self.ring.inner;
         let kp = self.kp()?;
         let [s, c, d] = a;
-        Ok([i.v_div(c, d)?, i.v_neg(&i.v_div(&i.v_mul(&kp, s)?, d)?), i.v_div(&kp, d)?])
+        Ok([
+            i.v_div(c, d)?,
+            i.v_neg(&i.v_div(&i.v_mul(&kp, s)?, d)?),
+            i.v_div(&kp, d)?,
+        ])
     }
 
     /// DLMF 22.4.3: `z ↦ z + iK'` (`sn = 1/(k s)`, `cn = −i d/(k s)`, `dn = −i c/s`).
@@ -612,26 +727,33 @@ impl Triples<'_> {
         let cached = {
             let st = self.ring.state();
             let t = &st.tables[self.t];
-            if prime { t.half_kp.clone() } else { t.half_k.clone() }
+            if prime {
+                t.half_kp.clone()
+            } else {
+                t.half_k.clone()
+            }
         };
         if let Some(v) = cached {
             return Ok(v);
         }
         let r = self.ring;
         let one = r.integer(1);
-        let v = r.with_origin(Origin::Definition("DLMF 22.5.1".into()), || -> AlgResult<[Val; 3]> {
-            if prime {
-                let k = Sym::from_val(r, r.state().tables[self.t].k.clone(), None);
-                let rk = k.sqrt()?;
-                let r1k = one.try_add(&k)?.sqrt()?;
-                Ok([r.i()?.try_div(&rk)?.val, r1k.try_div(&rk)?.val, r1k.val])
-            } else {
-                let kp = Sym::from_val(r, self.kp()?, None);
-                let rkp = kp.sqrt()?;
-                let r1 = one.try_add(&kp)?.sqrt()?;
-                Ok([one.try_div(&r1)?.val, rkp.try_div(&r1)?.val, rkp.val])
-            }
-        })?;
+        let v = r.with_origin(
+            Origin::Definition("DLMF 22.5.1".into()),
+            || -> AlgResult<[Val; 3]> {
+                if prime {
+                    let k = Sym::from_val(r, r.state().tables[self.t].k.clone(), None);
+                    let rk = k.sqrt()?;
+                    let r1k = one.try_add(&k)?.sqrt()?;
+                    Ok([r.i()?.try_div(&rk)?.val, r1k.try_div(&rk)?.val, r1k.val])
+                } else {
+                    let kp = Sym::from_val(r, self.kp()?, None);
+                    let rkp = kp.sqrt()?;
+                    let r1 = one.try_add(&kp)?.sqrt()?;
+                    Ok([one.try_div(&r1)?.val, rkp.try_div(&r1)?.val, rkp.val])
+                }
+            },
+        )?;
         let mut st = r.state();
         if prime {
             st.tables[self.t].half_kp = Some(v.clone());
@@ -693,10 +815,14 @@ impl Sym {
         }
         let n = ring.coordinates(t, &split.vec)?;
         let tr = Triples { ring, t };
-        let v = tr.at(&n, split.half_k, split.half_kp).map_err(|e| match e {
-            AlgebraError::DivisionByZero => AlgebraError::Pole(format!("sn, cn, dn at {}", self.render_short(80))),
-            e => e,
-        })?;
+        let v = tr
+            .at(&n, split.half_k, split.half_kp)
+            .map_err(|e| match e {
+                AlgebraError::DivisionByZero => {
+                    AlgebraError::Pole(format!("sn, cn, dn at {}", self.render_short(80)))
+                }
+                e => e,
+            })?;
         let (ns, nc, nd) = ring.numeric_sncndn(&self.val.sh, &k.val.sh)?;
         let prec = ring.precision();
         for (val, num) in v.iter().zip([&ns, &nc, &nd]) {
@@ -707,11 +833,22 @@ impl Sym {
                 )));
             }
         }
-        let combo: Vec<(usize, i64)> = n.iter().enumerate().filter(|(_, m)| **m != 0).map(|(j, m)| (j, *m)).collect();
+        let combo: Vec<(usize, i64)> = n
+            .iter()
+            .enumerate()
+            .filter(|(_, m)| **m != 0)
+            .map(|(j, m)| (j, *m))
+            .collect();
         let mk = |f: &'static str, val: &Val| {
             let node = self.node.as_ref().map(|a| {
                 Node::with_nf(
-                    Op::Elliptic { f, table: t, combo: combo.clone(), half_k: split.half_k, half_kp: split.half_kp },
+                    Op::Elliptic {
+                        f,
+                        table: t,
+                        combo: combo.clone(),
+                        half_k: split.half_k,
+                        half_kp: split.half_kp,
+                    },
                     vec![a.clone()],
                     val,
                 )

@@ -205,7 +205,10 @@ impl Poly {
             fm::fmpz_mpoly_init(raw.as_mut_ptr(), ctx.ptr());
             raw.assume_init()
         };
-        Poly { raw, ctx: ctx.clone() }
+        Poly {
+            raw,
+            ctx: ctx.clone(),
+        }
     }
 
     /// The zero polynomial.
@@ -246,7 +249,10 @@ impl Poly {
     }
 
     fn same_ctx(&self, other: &Poly) {
-        assert!(Arc::ptr_eq(&self.ctx, &other.ctx), "polynomials of different contexts");
+        assert!(
+            Arc::ptr_eq(&self.ctx, &other.ctx),
+            "polynomials of different contexts"
+        );
     }
 
     /// Is this the zero polynomial?
@@ -358,9 +364,7 @@ impl Poly {
         let f = Fmpz::from_integer(z);
         let mut p = Poly::blank(&self.ctx);
         // SAFETY: z ≠ 0 and divides every coefficient (checked).
-        unsafe {
-            fm::fmpz_mpoly_scalar_divexact_fmpz(&mut p.raw, &self.raw, &f.0, self.ctx.ptr())
-        };
+        unsafe { fm::fmpz_mpoly_scalar_divexact_fmpz(&mut p.raw, &self.raw, &f.0, self.ctx.ptr()) };
         Ok(p)
     }
 
@@ -372,7 +376,8 @@ impl Poly {
         }
         let mut q = Poly::blank(&self.ctx);
         // SAFETY: divisor non-zero, operands initialised in the same context.
-        let ok = unsafe { fm::fmpz_mpoly_divides(&mut q.raw, &self.raw, &other.raw, self.ctx.ptr()) };
+        let ok =
+            unsafe { fm::fmpz_mpoly_divides(&mut q.raw, &self.raw, &other.raw, self.ctx.ptr()) };
         Ok(if ok != 0 { Some(q) } else { None })
     }
 
@@ -397,7 +402,11 @@ impl Poly {
         if ok == 0 {
             return None;
         }
-        Some(if q.leading_coefficient() < 0 { q.neg() } else { q })
+        Some(if q.leading_coefficient() < 0 {
+            q.neg()
+        } else {
+            q
+        })
     }
 
     /// The coefficients in term order.
@@ -436,7 +445,9 @@ impl Poly {
     fn term_coefficient(&self, i: usize) -> Integer {
         let mut f = Fmpz::new();
         // SAFETY: i < len (callers), f initialised.
-        unsafe { fm::fmpz_mpoly_get_term_coeff_fmpz(&mut f.0, &self.raw, i as i64, self.ctx.ptr()) };
+        unsafe {
+            fm::fmpz_mpoly_get_term_coeff_fmpz(&mut f.0, &self.raw, i as i64, self.ctx.ptr())
+        };
         f.to_integer()
     }
 
@@ -449,7 +460,12 @@ impl Poly {
             // SAFETY: i < len; the exponent buffer has nvars entries; exponents of
             // polynomials built here fit in 64 bits.
             unsafe {
-                fm::fmpz_mpoly_get_term_exp_ui(exps.as_mut_ptr(), &self.raw, i as i64, self.ctx.ptr())
+                fm::fmpz_mpoly_get_term_exp_ui(
+                    exps.as_mut_ptr(),
+                    &self.raw,
+                    i as i64,
+                    self.ctx.ptr(),
+                )
             };
             f(&c, &exps);
         }
@@ -532,11 +548,20 @@ impl Poly {
     /// variables `vars` (with coefficients in the other variables).
     pub fn content_in(&self, vars: &[usize]) -> Result<Poly, FlintError> {
         let mut v: Vec<i64> = vars.iter().map(|&i| i as i64).collect();
-        assert!(vars.iter().all(|&i| i < self.ctx.nvars), "variable index out of range");
+        assert!(
+            vars.iter().all(|&i| i < self.ctx.nvars),
+            "variable index out of range"
+        );
         let mut g = Poly::blank(&self.ctx);
         // SAFETY: indices checked; FLINT reads the index array only.
         let ok = unsafe {
-            fm::fmpz_mpoly_content_vars(&mut g.raw, &self.raw, v.as_mut_ptr(), v.len() as i64, self.ctx.ptr())
+            fm::fmpz_mpoly_content_vars(
+                &mut g.raw,
+                &self.raw,
+                v.as_mut_ptr(),
+                v.len() as i64,
+                self.ctx.ptr(),
+            )
         };
         if ok == 0 {
             return Err(FlintError::Failed("a content"));
@@ -556,9 +581,12 @@ impl Poly {
             assert!(!d.is_zero(), "zero divisor polynomial");
         }
         let mut qs: Vec<Poly> = divisors.iter().map(|_| Poly::blank(&self.ctx)).collect();
-        let mut qp: Vec<*mut fmpz_mpoly_struct> = qs.iter_mut().map(|q| &mut q.raw as *mut _).collect();
-        let bp: Vec<*mut fmpz_mpoly_struct> =
-            divisors.iter().map(|d| &d.raw as *const _ as *mut fmpz_mpoly_struct).collect();
+        let mut qp: Vec<*mut fmpz_mpoly_struct> =
+            qs.iter_mut().map(|q| &mut q.raw as *mut _).collect();
+        let bp: Vec<*mut fmpz_mpoly_struct> = divisors
+            .iter()
+            .map(|d| &d.raw as *const _ as *mut fmpz_mpoly_struct)
+            .collect();
         let mut r = Poly::blank(&self.ctx);
         // SAFETY: all polynomials initialised in the same context, none zero; FLINT only
         // reads the divisors (the `*mut` in the binding is a C `const` array of pointers).
@@ -611,7 +639,10 @@ impl Poly {
                 let e = fmf::fmpz_mpoly_factor_get_exp_si(f, i, self.ctx.ptr());
                 factors.push((b, e as u64));
             }
-            Factored { constant: c.to_integer(), factors }
+            Factored {
+                constant: c.to_integer(),
+                factors,
+            }
         }
     }
 
@@ -685,7 +716,10 @@ pub fn hnf_rows(rows: &[Vec<Integer>]) -> Vec<Vec<Integer>> {
     if r == 0 || c == 0 {
         return Vec::new();
     }
-    assert!(rows.iter().all(|row| row.len() == c), "rows of different lengths");
+    assert!(
+        rows.iter().all(|row| row.len() == c),
+        "rows of different lengths"
+    );
     let mut a = MaybeUninit::<fmpz_mat_struct>::uninit();
     let mut h = MaybeUninit::<fmpz_mat_struct>::uninit();
     // SAFETY: both matrices initialised with r×c entries, indices below r and c,
@@ -703,8 +737,9 @@ pub fn hnf_rows(rows: &[Vec<Integer>]) -> Vec<Vec<Integer>> {
         fmat::fmpz_mat_hnf(&mut h, &a);
         let mut out = Vec::new();
         for i in 0..r {
-            let row: Vec<Integer> =
-                (0..c).map(|j| fmpz_to_integer(fmat::fmpz_mat_entry(&h, i as i64, j as i64))).collect();
+            let row: Vec<Integer> = (0..c)
+                .map(|j| fmpz_to_integer(fmat::fmpz_mat_entry(&h, i as i64, j as i64)))
+                .collect();
             if row.iter().any(|v| *v != 0) {
                 out.push(row);
             }
@@ -747,12 +782,18 @@ mod tests {
         let p = a.mul(&b);
         assert_eq!(p.divides(&a).unwrap(), Some(b.clone()));
         assert_eq!(p.divides(&x).unwrap(), None);
-        assert_eq!(p.divides(&Poly::zero(&ctx)), Err(FlintError::DivisionByZero));
+        assert_eq!(
+            p.divides(&Poly::zero(&ctx)),
+            Err(FlintError::DivisionByZero)
+        );
         let g = p.gcd(&a.mul(&x)).unwrap();
         // gcd is x − y up to sign, normalised to a positive leading coefficient
         assert_eq!(g, a);
         let six = p.scale(&Integer::from(6));
-        assert_eq!(six.div_integer(&Integer::from(3)).unwrap(), p.scale(&Integer::from(2)));
+        assert_eq!(
+            six.div_integer(&Integer::from(3)).unwrap(),
+            p.scale(&Integer::from(2))
+        );
         assert_eq!(p.div_integer(&Integer::from(2)), Err(FlintError::Inexact));
         assert_eq!(six.integer_content(), Integer::from(6));
         assert_eq!(six.neg().integer_content(), Integer::from(-6));
@@ -762,7 +803,13 @@ mod tests {
     fn factorisation_of_a_difference_of_squares_with_content() {
         let (_, x, y, z) = xyz();
         // −12 (x − y)² (x + y) z
-        let p = x.sub(&y).pow(2).unwrap().mul(&x.add(&y)).mul(&z).scale(&Integer::from(-12));
+        let p = x
+            .sub(&y)
+            .pow(2)
+            .unwrap()
+            .mul(&x.add(&y))
+            .mul(&z)
+            .scale(&Integer::from(-12));
         let f = p.factor().unwrap();
         assert_eq!(f.constant, Integer::from(-12));
         let mut back = Poly::from_integer(p.ctx(), &f.constant);
@@ -807,13 +854,20 @@ mod tests {
         assert_eq!(p.coefficient_in(0, 2), Poly::zero(&ctx));
         // content in x of x³y + x z·y is y
         let q = p.mul(&y);
-        assert_eq!(q.content_in(&[0]).unwrap(), y.mul(&y).gcd(&z.mul(&y)).unwrap());
+        assert_eq!(
+            q.content_in(&[0]).unwrap(),
+            y.mul(&y).gcd(&z.mul(&y)).unwrap()
+        );
     }
 
     #[test]
     fn terms_round_trip_and_render() {
         let (ctx, x, y, _) = xyz();
-        let p = x.mul(&x).scale(&Integer::from(-3)).add(&y).sub(&Poly::from_i64(&ctx, 5));
+        let p = x
+            .mul(&x)
+            .scale(&Integer::from(-3))
+            .add(&y)
+            .sub(&Poly::from_i64(&ctx, 5));
         let mut terms: Vec<(Integer, Vec<u64>)> = Vec::new();
         p.for_each_term(|c, e| terms.push((c.clone(), e.to_vec())));
         let back = Poly::from_terms(&ctx, terms.iter().map(|(c, e)| (c, e.as_slice())));
@@ -839,7 +893,10 @@ mod tests {
             .map(|r| r.iter().map(|&v| Integer::from(v)).collect())
             .collect();
         let h = hnf_rows(&rows);
-        let h: Vec<Vec<i64>> = h.iter().map(|r| r.iter().map(|v| v.to_i64().unwrap()).collect()).collect();
+        let h: Vec<Vec<i64>> = h
+            .iter()
+            .map(|r| r.iter().map(|v| v.to_i64().unwrap()).collect())
+            .collect();
         assert_eq!(h, vec![vec![1, 1], vec![0, 2]]);
     }
 }

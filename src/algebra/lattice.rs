@@ -11,7 +11,13 @@ use rug::{Integer, Rational};
 const MAX_CANDIDATES: usize = 2000;
 
 fn to_integers(rows: &[Vec<Rational>], l: &Integer) -> Vec<Vec<Integer>> {
-    rows.iter().map(|r| r.iter().map(|q| Rational::from(q * l).numer().clone()).collect()).collect()
+    rows.iter()
+        .map(|r| {
+            r.iter()
+                .map(|q| Rational::from(q * l).numer().clone())
+                .collect()
+        })
+        .collect()
 }
 
 /// All `m`-subsets of `0..n` in lexicographic order (stops after `limit`).
@@ -26,7 +32,9 @@ fn subsets(n: usize, m: usize, limit: usize) -> Vec<Vec<usize>> {
         if out.len() >= limit {
             return out;
         }
-        let Some(i) = (0..m).rev().find(|&i| idx[i] < n - m + i) else { return out };
+        let Some(i) = (0..m).rev().find(|&i| idx[i] < n - m + i) else {
+            return out;
+        };
         idx[i] += 1;
         for j in i + 1..m {
             idx[j] = idx[j - 1] + 1;
@@ -80,7 +88,14 @@ pub(crate) fn lattice_basis(vectors: &[Vec<Rational>]) -> Vec<Vec<Rational>> {
     }
     match best {
         Some((_, pick)) => pick.iter().map(|&i| distinct[i].clone()).collect(),
-        None => hnf.iter().map(|row| row.iter().map(|v| Rational::from((v.clone(), l.clone()))).collect()).collect(),
+        None => hnf
+            .iter()
+            .map(|row| {
+                row.iter()
+                    .map(|v| Rational::from((v.clone(), l.clone())))
+                    .collect()
+            })
+            .collect(),
     }
 }
 
@@ -95,7 +110,12 @@ mod tests {
     #[test]
     fn half_sums_and_differences_are_preferred_as_bases() {
         // φ, φ̂, (φ+φ̂)/2, (φ̂−φ)/2: the basis {φ̄, Δ} writes all four in 6 steps
-        let seen = vec![v(&[(1, 1), (0, 1)]), v(&[(0, 1), (1, 1)]), v(&[(1, 2), (1, 2)]), v(&[(-1, 2), (1, 2)])];
+        let seen = vec![
+            v(&[(1, 1), (0, 1)]),
+            v(&[(0, 1), (1, 1)]),
+            v(&[(1, 2), (1, 2)]),
+            v(&[(-1, 2), (1, 2)]),
+        ];
         let b = lattice_basis(&seen);
         assert_eq!(b, vec![seen[2].clone(), seen[3].clone()]);
     }

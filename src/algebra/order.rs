@@ -34,7 +34,9 @@ impl Sym {
         let mut sign = 0;
         for p in 0..ring.points() {
             let s = self.val.sh.real_sign(p, prec).ok_or_else(|| {
-                AlgebraError::CannotDecide(format!("the sign of {what}: zero or not real at a domain point"))
+                AlgebraError::CannotDecide(format!(
+                    "the sign of {what}: zero or not real at a domain point"
+                ))
             })?;
             if sign != 0 && s != sign {
                 return Err(AlgebraError::CannotDecide(format!(
@@ -60,7 +62,11 @@ impl Sym {
 
     /// `|self|` for a real value whose sign is decided on the domain.
     pub fn abs(&self) -> AlgResult<Sym> {
-        Ok(if self.sign()? < 0 { self.negate() } else { self.clone() })
+        Ok(if self.sign()? < 0 {
+            self.negate()
+        } else {
+            self.clone()
+        })
     }
 }
 
@@ -68,7 +74,11 @@ impl super::ring::Ring {
     pub(crate) fn record_assumption(&self, statement: String, sign: i32) {
         let mut st = self.state();
         let origin = st.origin.clone();
-        let a = super::ring::Assumption { statement, sign, origin };
+        let a = super::ring::Assumption {
+            statement,
+            sign,
+            origin,
+        };
         if !st.assumptions.contains(&a) {
             st.assumptions.push(a);
         }

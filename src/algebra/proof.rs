@@ -81,9 +81,15 @@ impl Ring {
         let t0 = Instant::now();
         let mut outcome = Outcome::Proved;
         for (i, (l, r)) in pairs.iter().enumerate() {
-            let o = self.zero_test(l, r).unwrap_or_else(|e| Outcome::NotProved(e.to_string()));
+            let o = self
+                .zero_test(l, r)
+                .unwrap_or_else(|e| Outcome::NotProved(e.to_string()));
             if let Outcome::NotProved(why) = o {
-                let which = if pairs.len() > 1 { format!("component {}: ", i + 1) } else { String::new() };
+                let which = if pairs.len() > 1 {
+                    format!("component {}: ", i + 1)
+                } else {
+                    String::new()
+                };
                 outcome = Outcome::NotProved(format!("{which}{why}"));
                 break;
             }
@@ -113,15 +119,23 @@ impl Ring {
         if let Some(e) = self.error() {
             return Err(e);
         }
+        if self.state().rebase_wanted {
+            return Ok(Outcome::NotProved(
+                "provisional elliptic base arguments: evaluate again with refined bases (prove_identity does)".into(),
+            ));
+        }
         let d = lhs.try_sub(rhs)?;
         let prec = self.precision();
         if d.val.sh.has_non_finite() {
-            return Err(AlgebraError::Internal("a value is not finite at a domain point".into()));
+            return Err(AlgebraError::Internal(
+                "a value is not finite at a domain point".into(),
+            ));
         }
         if d.is_exact_zero() {
             if !d.val.sh.all_small(prec) {
                 return Err(AlgebraError::Internal(
-                    "the normal form is 0 but the numeric values differ (a bug in the prover)".into(),
+                    "the normal form is 0 but the numeric values differ (a bug in the prover)"
+                        .into(),
                 ));
             }
             return Ok(Outcome::Proved);
@@ -191,20 +205,32 @@ where
                 opts.base_hints = hints;
                 continue;
             }
-            return Proof::failed("the elliptic base arguments could not be settled".into(), ms(&t0), attempts);
+            return Proof::failed(
+                "the elliptic base arguments could not be settled".into(),
+                ms(&t0),
+                attempts,
+            );
         }
         let pairs = match built {
             Ok(p) => p,
             Err(e) => return Proof::failed(e.to_string(), ms(&t0), attempts),
         };
         let mut proof = ring.prove_all(&pairs);
-        let named = ring.state().vars.iter().any(|v| matches!(v.kind, VarKind::Named(_)));
+        let named = ring
+            .state()
+            .vars
+            .iter()
+            .any(|v| matches!(v.kind, VarKind::Named(_)));
         if !proof.is_proved() && named && !opts.expand_named && attempts < 6 {
             opts.expand_named = true;
             continue;
         }
         if let Some(c) = proof.certificate.as_mut() {
-            *c = c.replacen("# claim: lhs = rhs", &format!("# claim: {}", title.replace('\n', " ")), 1);
+            *c = c.replacen(
+                "# claim: lhs = rhs",
+                &format!("# claim: {}", title.replace('\n', " ")),
+                1,
+            );
         }
         proof.ms = ms(&t0);
         proof.attempts = attempts;

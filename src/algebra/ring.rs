@@ -184,7 +184,13 @@ impl Ring {
             dcache: std::collections::HashMap::new(),
             derivation_lines: Vec::new(),
         };
-        Ring { inner: Arc::new(Inner { ctx, opts, state: Mutex::new(state) }) }
+        Ring {
+            inner: Arc::new(Inner {
+                ctx,
+                opts,
+                state: Mutex::new(state),
+            }),
+        }
     }
 
     /// The options the ring was made with.
@@ -217,14 +223,19 @@ impl Ring {
         self.check_values(name, values)?;
         let prec = self.precision();
         let v = values.iter().map(|z| Complex::with_val(prec, z)).collect();
-        let j = self.inner.add_var(name.to_string(), VarKind::Indeterminate, v)?;
+        let j = self
+            .inner
+            .add_var(name.to_string(), VarKind::Indeterminate, v)?;
         Ok(self.var_sym(j))
     }
 
     /// An indeterminate with real values given as `f64`.
     pub fn indeterminate_f64(&self, name: &str, values: &[f64]) -> AlgResult<Sym> {
         let prec = self.precision();
-        let v: Vec<Complex> = values.iter().map(|&x| Complex::with_val(prec, (x, 0))).collect();
+        let v: Vec<Complex> = values
+            .iter()
+            .map(|&x| Complex::with_val(prec, (x, 0)))
+            .collect();
         self.indeterminate(name, &v)
     }
 
@@ -233,9 +244,9 @@ impl Ring {
         let prec = self.precision();
         let mut v = Vec::with_capacity(values.len());
         for s in values {
-            let q: Rational = s
-                .parse()
-                .map_err(|_| AlgebraError::Domain(format!("malformed rational '{s}' for {name}")))?;
+            let q: Rational = s.parse().map_err(|_| {
+                AlgebraError::Domain(format!("malformed rational '{s}' for {name}"))
+            })?;
             v.push(Complex::with_val(prec, (Float::with_val(prec, &q), 0)));
         }
         self.indeterminate(name, &v)
@@ -249,7 +260,9 @@ impl Ring {
         self.check_values(name, values)?;
         let prec = self.precision();
         let v = values.iter().map(|z| Complex::with_val(prec, z)).collect();
-        let j = self.inner.add_var(name.to_string(), VarKind::Opaque { constant }, v)?;
+        let j = self
+            .inner
+            .add_var(name.to_string(), VarKind::Opaque { constant }, v)?;
         Ok(self.var_sym(j))
     }
 
@@ -280,7 +293,9 @@ impl Ring {
         }
         let st = self.state();
         if st.vars.iter().any(|v| v.name == name) || st.roots.iter().any(|r| r.name == name) {
-            return Err(AlgebraError::Domain(format!("symbol '{name}' defined twice")));
+            return Err(AlgebraError::Domain(format!(
+                "symbol '{name}' defined twice"
+            )));
         }
         Ok(())
     }
@@ -293,7 +308,10 @@ impl Ring {
                 self.points()
             )));
         }
-        if values.iter().any(|z| !z.real().is_finite() || !z.imag().is_finite()) {
+        if values
+            .iter()
+            .any(|z| !z.real().is_finite() || !z.imag().is_finite())
+        {
             return Err(AlgebraError::Domain(format!("{name}: non-finite value")));
         }
         Ok(())
@@ -319,9 +337,17 @@ impl Ring {
         let (p, values, name) = {
             let st = self.state();
             let idx = self.inner.kvar(j);
-            (Poly::var(&self.inner.ctx, idx), st.vars[j].values.clone(), st.vars[j].name.clone())
+            (
+                Poly::var(&self.inner.ctx, idx),
+                st.vars[j].values.clone(),
+                st.vars[j].name.clone(),
+            )
         };
-        let val = Val { num: p, den: Poly::from_i64(&self.inner.ctx, 1), sh: Shadow::leaf(values) };
+        let val = Val {
+            num: p,
+            den: Poly::from_i64(&self.inner.ctx, 1),
+            sh: Shadow::leaf(values),
+        };
         Sym::from_val(self, val, Some(Node::symbol(&name)))
     }
 
@@ -329,9 +355,17 @@ impl Ring {
         let (p, values, name) = {
             let st = self.state();
             let idx = self.inner.root_var(i);
-            (Poly::var(&self.inner.ctx, idx), st.roots[i].values.clone(), st.roots[i].name.clone())
+            (
+                Poly::var(&self.inner.ctx, idx),
+                st.roots[i].values.clone(),
+                st.roots[i].name.clone(),
+            )
         };
-        let val = Val { num: p, den: Poly::from_i64(&self.inner.ctx, 1), sh: Shadow::leaf(values) };
+        let val = Val {
+            num: p,
+            den: Poly::from_i64(&self.inner.ctx, 1),
+            sh: Shadow::leaf(values),
+        };
         Sym::from_val(self, val, Some(Node::symbol(&name)))
     }
 
@@ -382,7 +416,10 @@ impl Ring {
     pub fn relations(&self) -> Vec<String> {
         let names = self.inner.names();
         let st = self.state();
-        st.roots.iter().map(|r| format!("{}**2 = {}", r.name, r.radicand.render(&names))).collect()
+        st.roots
+            .iter()
+            .map(|r| format!("{}**2 = {}", r.name, r.radicand.render(&names)))
+            .collect()
     }
 
     /// Notes on the derivation (addition-theorem instances, period shifts used).
@@ -423,10 +460,19 @@ impl Inner {
         let den = Poly::from_integer(&self.ctx, q.denom());
         let prec = self.opts.precision;
         let z = Complex::with_val(prec, (Float::with_val(prec, q), 0));
-        Val { num, den, sh: Shadow::leaf(vec![z; self.opts.points]) }
+        Val {
+            num,
+            den,
+            sh: Shadow::leaf(vec![z; self.opts.points]),
+        }
     }
 
-    pub(crate) fn add_var(&self, name: String, kind: VarKind, values: Vec<Complex>) -> AlgResult<usize> {
+    pub(crate) fn add_var(
+        &self,
+        name: String,
+        kind: VarKind,
+        values: Vec<Complex>,
+    ) -> AlgResult<usize> {
         let mut st = self.state();
         if st.vars.len() >= self.opts.max_vars {
             return Err(AlgebraError::Capacity(format!(
@@ -439,11 +485,20 @@ impl Inner {
     }
 
     /// Adjoins a root with relation `r² = radicand` and the given values.
-    pub(crate) fn add_root(&self, name: String, radicand: Poly, values: Vec<Complex>, note: String) -> AlgResult<usize> {
+    pub(crate) fn add_root(
+        &self,
+        name: String,
+        radicand: Poly,
+        values: Vec<Complex>,
+        note: String,
+    ) -> AlgResult<usize> {
         let mut st = self.state();
         let i = st.roots.len();
         if i >= self.opts.max_roots {
-            return Err(AlgebraError::Capacity(format!("more than {} square roots", self.opts.max_roots)));
+            return Err(AlgebraError::Capacity(format!(
+                "more than {} square roots",
+                self.opts.max_roots
+            )));
         }
         let r = Poly::var(&self.ctx, self.root_var(i));
         let relation = Arc::new(r.mul(&r).sub(&radicand));
@@ -455,7 +510,14 @@ impl Inner {
         }
         closure.sort_unstable();
         closure.dedup();
-        st.roots.push(RootInfo { name, radicand, relation, values, closure, note });
+        st.roots.push(RootInfo {
+            name,
+            radicand,
+            relation,
+            values,
+            closure,
+            note,
+        });
         Ok(i)
     }
 

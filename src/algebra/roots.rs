@@ -196,7 +196,11 @@ impl Ring {
             if !matches!(factor, Factor::MinusOne) && self.covered_up_to_sign(&v) {
                 continue;
             }
-            let (radicand, v) = if matches!(factor, Factor::Poly(_)) { self.prefer_positive(p, v) } else { (p, v) };
+            let (radicand, v) = if matches!(factor, Factor::Poly(_)) {
+                self.prefer_positive(p, v)
+            } else {
+                (p, v)
+            };
             if self.state().basis.reduce(&v).0.is_zero() {
                 continue;
             }
@@ -236,7 +240,9 @@ impl Ring {
                 return Ok((rad, v));
             }
         }
-        Err(AlgebraError::Internal("no single root covers the class".into()))
+        Err(AlgebraError::Internal(
+            "no single root covers the class".into(),
+        ))
     }
 
     /// Is `v` or `v + [−1]` in the span of the roots (the factor is covered up to a
@@ -272,18 +278,30 @@ impl Ring {
 
     /// Adjoins a root of a radicand in the field with GF(2) vector `v` and optional
     /// prescribed values (default: the principal square root at every point).
-    fn new_field_root(&self, radicand: Poly, v: Bits, values: Option<Vec<Complex>>, is_i: bool) -> AlgResult<usize> {
+    fn new_field_root(
+        &self,
+        radicand: Poly,
+        v: Bits,
+        values: Option<Vec<Complex>>,
+        is_i: bool,
+    ) -> AlgResult<usize> {
         let names = self.inner.names();
         let note = format!("sqrt({})", radicand.render(&names));
         let values = match values {
             Some(v) => v,
             None => {
                 let vals = self.inner.var_values();
-                Shadow::leaf(self.inner.eval_poly(&radicand, &vals)).sqrt().v
+                Shadow::leaf(self.inner.eval_poly(&radicand, &vals))
+                    .sqrt()
+                    .v
             }
         };
         let n = self.state().roots.len();
-        let name = if is_i { "i_".to_string() } else { format!("r_{}", n + 1) };
+        let name = if is_i {
+            "i_".to_string()
+        } else {
+            format!("r_{}", n + 1)
+        };
         let i = self.inner.add_root(name, radicand, values, note)?;
         let mut st = self.state();
         if !st.basis.add(&v, i) {
@@ -299,7 +317,12 @@ impl Ring {
     /// roots for uncovered factors when `adjoin` is set (else `None` if not a square in
     /// the tower).  With `prescribed`, uncovered factors get a single root whose values
     /// are fixed later.
-    fn field_sqrt_poly(&self, nd: &Poly, adjoin: bool, special: Option<(&str, &str)>) -> AlgResult<Option<(Val, Option<usize>)>> {
+    fn field_sqrt_poly(
+        &self,
+        nd: &Poly,
+        adjoin: bool,
+        special: Option<(&str, &str)>,
+    ) -> AlgResult<Option<(Val, Option<usize>)>> {
         let class = self.class_of(nd)?;
         let mut fresh = None;
         if !self.state().basis.reduce(&class.t).0.is_zero() {
@@ -321,7 +344,9 @@ impl Ring {
         }
         let (res, combo) = self.state().basis.reduce(&class.t);
         if !res.is_zero() {
-            return Err(AlgebraError::Internal("a square root left its class uncovered".into()));
+            return Err(AlgebraError::Internal(
+                "a square root left its class uncovered".into(),
+            ));
         }
         self.assemble(nd, &combo).map(|v| Some((v, fresh)))
     }
@@ -336,7 +361,9 @@ impl Ring {
         }
         let (yn, yd) = self.inner.normalise(nd.clone(), r)?;
         let (Some(sn), Some(sd)) = (yn.sqrt(), yd.sqrt()) else {
-            return Err(AlgebraError::Internal("square class mismatch in sqrt".into()));
+            return Err(AlgebraError::Internal(
+                "square class mismatch in sqrt".into(),
+            ));
         };
         let (num, den) = self.inner.normalise(sn, sd)?;
         let sh = self.shadow_of(&num, &den);
@@ -360,13 +387,18 @@ impl Ring {
         let prec = self.precision();
         let mut sigma = 0;
         for i in 0..self.points() {
-            let ratio = Shadow::with_scale(vec![target.v[i].clone()], vec![target.lscale[i]])
-                .div(&Shadow::with_scale(vec![cand.v[i].clone()], vec![cand.lscale[i]]));
+            let ratio = Shadow::with_scale(vec![target.v[i].clone()], vec![target.lscale[i]]).div(
+                &Shadow::with_scale(vec![cand.v[i].clone()], vec![cand.lscale[i]]),
+            );
             if cand.is_small(i, prec) {
-                return Err(AlgebraError::CannotDecide(format!("the branch of {what}: it vanishes at a domain point")));
+                return Err(AlgebraError::CannotDecide(format!(
+                    "the branch of {what}: it vanishes at a domain point"
+                )));
             }
             let s = ratio.real_sign(0, prec).ok_or_else(|| {
-                AlgebraError::Internal(format!("the square of the root of {what} differs from its radicand"))
+                AlgebraError::Internal(format!(
+                    "the square of the root of {what} differs from its radicand"
+                ))
             })?;
             if sigma != 0 && s != sigma {
                 return Err(AlgebraError::CannotDecide(format!(
@@ -377,7 +409,6 @@ impl Ring {
         }
         Ok(sigma)
     }
-
 }
 
 impl Sym {
@@ -423,7 +454,11 @@ impl Sym {
             (v, fresh)
         };
         // divide by D: √(N/D) = √(N·D)/D
-        let dval = Val { num: self.val.den.clone(), den: Poly::from_i64(&inner.ctx, 1), sh: ring.shadow_of(&self.val.den, &Poly::from_i64(&inner.ctx, 1)) };
+        let dval = Val {
+            num: self.val.den.clone(),
+            den: Poly::from_i64(&inner.ctx, 1),
+            sh: ring.shadow_of(&self.val.den, &Poly::from_i64(&inner.ctx, 1)),
+        };
         cand = inner.v_div(&cand, &dval)?;
         if let (Some(i), Some(_)) = (fresh, &prescribed) {
             // fix the new root's values so that the product equals the prescribed values
@@ -436,8 +471,16 @@ impl Sym {
                 }
             }
             drop(st);
-            cand.sh = cand.sh.scale_by(&sigma.iter().map(|&s| Complex::with_val(ring.precision(), s)).collect::<Vec<_>>());
-            let node = self.node.as_ref().map(|n| super::certificate::Node::sqrt(n, &cand, ring, 1));
+            cand.sh = cand.sh.scale_by(
+                &sigma
+                    .iter()
+                    .map(|&s| Complex::with_val(ring.precision(), s))
+                    .collect::<Vec<_>>(),
+            );
+            let node = self
+                .node
+                .as_ref()
+                .map(|n| super::certificate::Node::sqrt(n, &cand, ring, 1));
             return Ok(Sym::from_val(ring, cand, node));
         }
         let sigma = ring.decide_sign(&target, &cand.sh, &what)?;
@@ -448,7 +491,10 @@ impl Sym {
         if !(sigma > 0 && fresh.is_none() && result.is_single_root_of(self)) {
             ring.record_assumption(format!("{what} = {}", result.render_short(160)), sigma);
         }
-        let node = self.node.as_ref().map(|n| super::certificate::Node::sqrt(n, &result.val, ring, sigma));
+        let node = self
+            .node
+            .as_ref()
+            .map(|n| super::certificate::Node::sqrt(n, &result.val, ring, sigma));
         Ok(result.with_node(node))
     }
 
@@ -459,19 +505,31 @@ impl Sym {
         if used.len() != 1 || !self.val.den.is_one() || self.val.num.len() != 1 {
             return false;
         }
-        let Some(i) = self.ring.inner.root_of_var(used[0]) else { return false };
+        let Some(i) = self.ring.inner.root_of_var(used[0]) else {
+            return false;
+        };
         let st = self.ring.state();
-        x.val.den.is_one() && st.roots[i].radicand == x.val.num && self.val.num.leading_coefficient() == 1
+        x.val.den.is_one()
+            && st.roots[i].radicand == x.val.num
+            && self.val.num.leading_coefficient() == 1
     }
 
     /// √ of a polynomial with roots (see the module doc), up to sign.
     fn tower_sqrt(&self, nd: &Poly) -> AlgResult<Val> {
         let ring = &self.ring;
         let inner = &ring.inner;
-        let root_vars: Vec<usize> = (0..ring.state().roots.len()).map(|i| inner.root_var(i)).collect();
+        let root_vars: Vec<usize> = (0..ring.state().roots.len())
+            .map(|i| inner.root_var(i))
+            .collect();
         let g = nd.content_in(&root_vars)?;
-        let g = if nd.leading_coefficient() < 0 { g.neg() } else { g };
-        let rest = nd.divides(&g)?.ok_or_else(|| AlgebraError::Internal("content does not divide".into()))?;
+        let g = if nd.leading_coefficient() < 0 {
+            g.neg()
+        } else {
+            g
+        };
+        let rest = nd
+            .divides(&g)?
+            .ok_or_else(|| AlgebraError::Internal("content does not divide".into()))?;
         let (gv, _) = ring
             .field_sqrt_poly(&g, true, None)?
             .ok_or_else(|| AlgebraError::Internal("sqrt adjoined no root".into()))?;
@@ -491,9 +549,11 @@ impl Ring {
             .map(|i| {
                 let t = Shadow::with_scale(vec![target.v[i].clone()], vec![target.lscale[i]]);
                 let c = Shadow::with_scale(vec![cand.v[i].clone()], vec![cand.lscale[i]]);
-                t.div(&c)
-                    .real_sign(0, prec)
-                    .ok_or_else(|| AlgebraError::Internal(format!("prescribed values do not square to the radicand of {what}")))
+                t.div(&c).real_sign(0, prec).ok_or_else(|| {
+                    AlgebraError::Internal(format!(
+                        "prescribed values do not square to the radicand of {what}"
+                    ))
+                })
             })
             .collect()
     }
@@ -509,7 +569,9 @@ impl Ring {
                 let names = self.inner.names();
                 let note = format!("sqrt({})", rad.render(&names));
                 let n = self.state().roots.len();
-                let i = self.inner.add_root(format!("r_{}", n + 1), rad.clone(), values, note)?;
+                let i = self
+                    .inner
+                    .add_root(format!("r_{}", n + 1), rad.clone(), values, note)?;
                 self.state().tower_roots = true;
                 i
             }
@@ -521,24 +583,43 @@ impl Ring {
     fn exact_tower_sqrt(&self, p: &Poly, depth: usize) -> AlgResult<Option<Val>> {
         let inner = &self.inner;
         if p.is_zero() {
-            return Ok(Some(Val { num: p.clone(), den: Poly::from_i64(&inner.ctx, 1), sh: self.shadow_of(p, &Poly::from_i64(&inner.ctx, 1)) }));
+            return Ok(Some(Val {
+                num: p.clone(),
+                den: Poly::from_i64(&inner.ctx, 1),
+                sh: self.shadow_of(p, &Poly::from_i64(&inner.ctx, 1)),
+            }));
         }
-        let top = p.used_vars().into_iter().find(|&i| inner.root_of_var(i).is_some());
+        let top = p
+            .used_vars()
+            .into_iter()
+            .find(|&i| inner.root_of_var(i).is_some());
         let Some(idx) = top else {
             return Ok(self.field_sqrt_poly(p, false, None)?.map(|(v, _)| v));
         };
         if depth > 2 * self.options().max_roots {
             return Ok(None);
         }
-        let root = inner.root_of_var(idx).ok_or_else(|| AlgebraError::Internal("root index".into()))?;
+        let root = inner
+            .root_of_var(idx)
+            .ok_or_else(|| AlgebraError::Internal("root index".into()))?;
         let f = self.state().roots[root].radicand.clone();
         let one = Poly::from_i64(&inner.ctx, 1);
         let pp = p.coefficient_in(idx, 0);
         let qq = p.coefficient_in(idx, 1);
         let norm = inner.reduce(pp.mul(&pp).sub(&f.mul(&qq).mul(&qq)));
-        let Some(m) = self.exact_tower_sqrt(&norm, depth + 1)? else { return Ok(None) };
-        let pv = Val { num: pp.clone(), den: one.clone(), sh: self.shadow_of(&pp, &one) };
-        let qv = Val { num: qq.clone(), den: one.clone(), sh: self.shadow_of(&qq, &one) };
+        let Some(m) = self.exact_tower_sqrt(&norm, depth + 1)? else {
+            return Ok(None);
+        };
+        let pv = Val {
+            num: pp.clone(),
+            den: one.clone(),
+            sh: self.shadow_of(&pp, &one),
+        };
+        let qv = Val {
+            num: qq.clone(),
+            den: one.clone(),
+            sh: self.shadow_of(&qq, &one),
+        };
         let two = inner.const_val(&rug::Rational::from(2));
         let rv = self.root_sym(root).val;
         for sign in [1, -1] {
@@ -548,8 +629,14 @@ impl Ring {
                 continue;
             }
             let a2nd = inner.reduce(a2.num.mul(&a2.den));
-            let Some(a) = self.exact_tower_sqrt(&a2nd, depth + 1)? else { continue };
-            let dv = Val { num: a2.den.clone(), den: one.clone(), sh: self.shadow_of(&a2.den, &one) };
+            let Some(a) = self.exact_tower_sqrt(&a2nd, depth + 1)? else {
+                continue;
+            };
+            let dv = Val {
+                num: a2.den.clone(),
+                den: one.clone(),
+                sh: self.shadow_of(&a2.den, &one),
+            };
             let a = inner.v_div(&a, &dv)?;
             let b = inner.v_div(&qv, &inner.v_mul(&two, &a)?)?;
             let cand = inner.v_add(&a, &inner.v_mul(&b, &rv)?, false)?;

@@ -74,12 +74,17 @@ impl PartialOrd for Sym {
 
 impl Sym {
     fn not_algebraic(&self, what: &str) -> Sym {
-        self.ring.poison(AlgebraError::NotAlgebraic(what.to_string()));
+        self.ring
+            .poison(AlgebraError::NotAlgebraic(what.to_string()));
         self.ring.nan()
     }
 
     fn first_shadow_f64(&self) -> f64 {
-        self.val.sh.v.first().map_or(f64::NAN, |z| z.real().to_f64())
+        self.val
+            .sh
+            .v
+            .first()
+            .map_or(f64::NAN, |z| z.real().to_f64())
     }
 }
 
@@ -108,7 +113,9 @@ impl Scalar for Sym {
     }
     fn parse_like(&self, s: &str) -> Result<Self, NumError> {
         let q = crate::numbers::parse_rational(s)?;
-        let q: Rational = format!("{}/{}", q.numer(), q.denom()).parse().map_err(|_| NumError::Parse(s.to_string()))?;
+        let q: Rational = format!("{}/{}", q.numer(), q.denom())
+            .parse()
+            .map_err(|_| NumError::Parse(s.to_string()))?;
         Ok(self.ring.rational(&q))
     }
     fn precision(&self) -> Option<u32> {
@@ -118,7 +125,11 @@ impl Scalar for Sym {
         self.is_exact_zero()
     }
     fn magnitude(&self) -> f64 {
-        self.val.sh.v.first().map_or(f64::NAN, |z| Float::with_val(53, z.abs_ref()).to_f64())
+        self.val
+            .sh
+            .v
+            .first()
+            .map_or(f64::NAN, |z| Float::with_val(53, z.abs_ref()).to_f64())
     }
     fn try_sqrt(&self) -> Result<Self, NumError> {
         self.sqrt().map_err(|e| {
@@ -129,7 +140,12 @@ impl Scalar for Sym {
     fn to_decimal(&self, digits: usize) -> String {
         match self.as_rational() {
             Some(q) => q.to_string(),
-            None => format!("{} ≈ {}", self.render_short(80), Float::with_val(64, self.val.sh.v[0].real()).to_string_radix(10, Some(digits.max(1)))),
+            None => format!(
+                "{} ≈ {}",
+                self.render_short(80),
+                Float::with_val(64, self.val.sh.v[0].real())
+                    .to_string_radix(10, Some(digits.max(1)))
+            ),
         }
     }
 }

@@ -60,25 +60,44 @@ impl Shadow {
         self.v.is_empty()
     }
 
-    fn zip(&self, o: &Shadow, f: impl Fn(&Complex, &Complex) -> Complex, s: impl Fn(f64, f64, &Complex, &Complex) -> f64) -> Shadow {
+    fn zip(
+        &self,
+        o: &Shadow,
+        f: impl Fn(&Complex, &Complex) -> Complex,
+        s: impl Fn(f64, f64, &Complex, &Complex) -> f64,
+    ) -> Shadow {
         let v: Vec<Complex> = self.v.iter().zip(&o.v).map(|(a, b)| f(a, b)).collect();
-        let lscale = (0..v.len()).map(|i| s(self.lscale[i], o.lscale[i], &self.v[i], &o.v[i])).collect();
+        let lscale = (0..v.len())
+            .map(|i| s(self.lscale[i], o.lscale[i], &self.v[i], &o.v[i]))
+            .collect();
         Shadow { v, lscale }
     }
 
     /// Pointwise sum.
     pub fn add(&self, o: &Shadow) -> Shadow {
-        self.zip(o, |a, b| Complex::with_val(a.prec(), a + b), |x, y, _, _| x.max(y) + 1.0)
+        self.zip(
+            o,
+            |a, b| Complex::with_val(a.prec(), a + b),
+            |x, y, _, _| x.max(y) + 1.0,
+        )
     }
 
     /// Pointwise difference.
     pub fn sub(&self, o: &Shadow) -> Shadow {
-        self.zip(o, |a, b| Complex::with_val(a.prec(), a - b), |x, y, _, _| x.max(y) + 1.0)
+        self.zip(
+            o,
+            |a, b| Complex::with_val(a.prec(), a - b),
+            |x, y, _, _| x.max(y) + 1.0,
+        )
     }
 
     /// Pointwise product.
     pub fn mul(&self, o: &Shadow) -> Shadow {
-        self.zip(o, |a, b| Complex::with_val(a.prec(), a * b), |x, y, _, _| x + y + 1.0)
+        self.zip(
+            o,
+            |a, b| Complex::with_val(a.prec(), a * b),
+            |x, y, _, _| x + y + 1.0,
+        )
     }
 
     /// Pointwise quotient (an exact zero divisor gives NaN, never a panic).
@@ -95,12 +114,23 @@ impl Shadow {
 
     /// Pointwise negation.
     pub fn neg(&self) -> Shadow {
-        Shadow { v: self.v.iter().map(|a| Complex::with_val(a.prec(), -a)).collect(), lscale: self.lscale.clone() }
+        Shadow {
+            v: self
+                .v
+                .iter()
+                .map(|a| Complex::with_val(a.prec(), -a))
+                .collect(),
+            lscale: self.lscale.clone(),
+        }
     }
 
     /// Pointwise principal square root.
     pub fn sqrt(&self) -> Shadow {
-        let v: Vec<Complex> = self.v.iter().map(|a| Complex::with_val(a.prec(), a.sqrt_ref())).collect();
+        let v: Vec<Complex> = self
+            .v
+            .iter()
+            .map(|a| Complex::with_val(a.prec(), a.sqrt_ref()))
+            .collect();
         let lscale = self
             .lscale
             .iter()
@@ -119,8 +149,18 @@ impl Shadow {
 
     /// Scales each point's value by `c` (exactly representable factors keep the scale).
     pub fn scale_by(&self, c: &[Complex]) -> Shadow {
-        let v: Vec<Complex> = self.v.iter().zip(c).map(|(a, b)| Complex::with_val(a.prec(), a * b)).collect();
-        let lscale = self.lscale.iter().zip(c).map(|(&s, b)| s + log2_abs(b).max(0.0)).collect();
+        let v: Vec<Complex> = self
+            .v
+            .iter()
+            .zip(c)
+            .map(|(a, b)| Complex::with_val(a.prec(), a * b))
+            .collect();
+        let lscale = self
+            .lscale
+            .iter()
+            .zip(c)
+            .map(|(&s, b)| s + log2_abs(b).max(0.0))
+            .collect();
         Shadow { v, lscale }
     }
 
@@ -137,7 +177,9 @@ impl Shadow {
 
     /// Is the value NaN or infinite at some point?
     pub fn has_non_finite(&self) -> bool {
-        self.v.iter().any(|z| !z.real().is_finite() || !z.imag().is_finite())
+        self.v
+            .iter()
+            .any(|z| !z.real().is_finite() || !z.imag().is_finite())
     }
 
     /// Is the value numerically real at point `i` (imaginary part numerically zero)?

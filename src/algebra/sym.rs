@@ -95,9 +95,17 @@ impl Inner {
     }
 
     pub(crate) fn v_add(&self, a: &Val, b: &Val, sub: bool) -> AlgResult<Val> {
-        let sh = if sub { a.sh.sub(&b.sh) } else { a.sh.add(&b.sh) };
+        let sh = if sub {
+            a.sh.sub(&b.sh)
+        } else {
+            a.sh.add(&b.sh)
+        };
         let (n, d) = if a.den == b.den {
-            let n = if sub { a.num.sub(&b.num) } else { a.num.add(&b.num) };
+            let n = if sub {
+                a.num.sub(&b.num)
+            } else {
+                a.num.add(&b.num)
+            };
             (n, a.den.clone())
         } else {
             let g = a.den.gcd(&b.den)?;
@@ -129,7 +137,11 @@ impl Inner {
     }
 
     pub(crate) fn v_neg(&self, a: &Val) -> Val {
-        Val { num: a.num.neg(), den: a.den.clone(), sh: a.sh.neg() }
+        Val {
+            num: a.num.neg(),
+            den: a.den.clone(),
+            sh: a.sh.neg(),
+        }
     }
 
     /// `1/a`: conjugates until the denominator is free of roots.
@@ -138,7 +150,11 @@ impl Inner {
             return Err(AlgebraError::DivisionByZero);
         }
         let one = Poly::from_i64(&self.ctx, 1);
-        let sh = Shadow::leaf(vec![Complex::with_val(self.opts.precision, 1); self.opts.points]).div(&a.sh);
+        let sh = Shadow::leaf(vec![
+            Complex::with_val(self.opts.precision, 1);
+            self.opts.points
+        ])
+        .div(&a.sh);
         let (conj, norm) = self.rationalise(&a.num)?;
         // 1/(N/D) = D·conj/norm
         let num = self.reduce(a.den.mul(&conj));
@@ -152,7 +168,10 @@ impl Inner {
         let mut conj = Poly::from_i64(&self.ctx, 1);
         let mut cur = n.clone();
         loop {
-            let top = cur.used_vars().into_iter().find(|&idx| self.root_of_var(idx).is_some());
+            let top = cur
+                .used_vars()
+                .into_iter()
+                .find(|&idx| self.root_of_var(idx).is_some());
             let Some(idx) = top else { break };
             let r = Poly::var(&self.ctx, idx);
             let p0 = cur.coefficient_in(idx, 0);
@@ -174,15 +193,30 @@ impl Inner {
             return Err(AlgebraError::DivisionByZero);
         }
         let sh = a.sh.div(&b.sh);
-        let has_roots = b.num.used_vars().iter().any(|&i| self.root_of_var(i).is_some());
+        let has_roots = b
+            .num
+            .used_vars()
+            .iter()
+            .any(|&i| self.root_of_var(i).is_some());
         let mut v = if has_roots {
             let inv = self.v_inv(b)?;
             self.v_mul(a, &inv)?
         } else {
             // (an/ad) / (bn/bd) = an·bd / (ad·bn)
-            let flipped = Val { num: b.den.clone(), den: b.num.clone(), sh: b.sh.clone() };
+            let flipped = Val {
+                num: b.den.clone(),
+                den: b.num.clone(),
+                sh: b.sh.clone(),
+            };
             let (n, d) = self.normalise(flipped.num, flipped.den)?;
-            self.v_mul(a, &Val { num: n, den: d, sh: flipped.sh })?
+            self.v_mul(
+                a,
+                &Val {
+                    num: n,
+                    den: d,
+                    sh: flipped.sh,
+                },
+            )?
         };
         v.sh = sh;
         Ok(v)
@@ -213,7 +247,8 @@ impl Inner {
 }
 
 fn exact(a: &Poly, b: &Poly) -> AlgResult<Poly> {
-    a.divides(b)?.ok_or_else(|| AlgebraError::Internal("gcd does not divide".into()))
+    a.divides(b)?
+        .ok_or_else(|| AlgebraError::Internal("gcd does not divide".into()))
 }
 
 /// `(a/g, b/g)` for `g = gcd(a, b)`.
@@ -230,8 +265,16 @@ fn cancel(a: &Poly, b: &Poly) -> AlgResult<(Poly, Poly)> {
 
 impl Sym {
     pub(crate) fn from_val(ring: &Ring, val: Val, node: Option<Arc<Node>>) -> Sym {
-        let node = if ring.inner.opts.certificate { node } else { None };
-        Sym { ring: ring.clone(), val, node }
+        let node = if ring.inner.opts.certificate {
+            node
+        } else {
+            None
+        };
+        Sym {
+            ring: ring.clone(),
+            val,
+            node,
+        }
     }
 
     /// The ring of this value.
@@ -295,7 +338,10 @@ impl Sym {
     /// `self^n` for any integer `n` (negative powers invert), or an error.
     pub fn try_powi(&self, n: i32) -> AlgResult<Sym> {
         let v = self.ring.inner.v_powi(&self.val, n)?;
-        let node = self.node.as_ref().map(|a| Node::with_nf(Op::Pow(n), vec![a.clone()], &v));
+        let node = self
+            .node
+            .as_ref()
+            .map(|a| Node::with_nf(Op::Pow(n), vec![a.clone()], &v));
         Ok(Sym::from_val(&self.ring, v, node))
     }
 
@@ -339,7 +385,10 @@ impl Sym {
         let vals = inner.var_values();
         let n = inner.eval_poly(&self.val.num, &vals);
         let d = inner.eval_poly(&self.val.den, &vals);
-        n.iter().zip(&d).map(|(a, b)| Complex::with_val(inner.opts.precision, a / b)).collect()
+        n.iter()
+            .zip(&d)
+            .map(|(a, b)| Complex::with_val(inner.opts.precision, a / b))
+            .collect()
     }
 
     /// The normal form as `(numerator) / (denominator)` in SymPy syntax.
@@ -364,18 +413,13 @@ impl Sym {
         }
     }
 
-    /// The FLINT variables that occur (in numerator or denominator).
-    pub(crate) fn used_vars(&self) -> Vec<usize> {
-        let mut u = self.val.num.used_vars();
-        u.extend(self.val.den.used_vars());
-        u.sort_unstable();
-        u.dedup();
-        u
-    }
-
     /// Does the normal form contain root symbols?
     pub fn has_roots(&self) -> bool {
-        self.val.num.used_vars().iter().any(|&i| self.ring.inner.root_of_var(i).is_some())
+        self.val
+            .num
+            .used_vars()
+            .iter()
+            .any(|&i| self.ring.inner.root_of_var(i).is_some())
     }
 
     /// If the value is exactly one field variable, its index.
@@ -420,7 +464,15 @@ impl Ring {
         z.mut_real().assign_nan();
         let sh = Shadow::leaf(vec![z; self.points()]);
         let ctx = &self.inner.ctx;
-        Sym::from_val(self, Val { num: Poly::zero(ctx), den: Poly::from_i64(ctx, 1), sh }, None)
+        Sym::from_val(
+            self,
+            Val {
+                num: Poly::zero(ctx),
+                den: Poly::from_i64(ctx, 1),
+                sh,
+            },
+            None,
+        )
     }
 }
 

@@ -102,11 +102,19 @@ pub struct Params {
 
 pub fn params(r: &Ring, s: &Squares) -> AlgResult<Params> {
     let def = |name: &str, x: &Sym| r.with_origin(Origin::Definition(name.into()), || x.sqrt());
-    Ok(Params { k: def("k", &s.k2)?, a: def("a", &s.a2)?, b: def("b", &s.b2)?, c: def("c", &s.c2)?, nu: def("nu", &s.nu2)? })
+    Ok(Params {
+        k: def("k", &s.k2)?,
+        a: def("a", &s.a2)?,
+        b: def("b", &s.b2)?,
+        c: def("c", &s.c2)?,
+        nu: def("nu", &s.nu2)?,
+    })
 }
 
 fn scaled(r: &Ring, x: Sym) -> Sym {
-    let eps: rug::Rational = "1000000000000000000000000000001/1000000000000000000000000000000".parse().unwrap();
+    let eps: rug::Rational = "1000000000000000000000000000001/1000000000000000000000000000000"
+        .parse()
+        .unwrap();
     &x * &r.rational(&eps)
 }
 
@@ -118,17 +126,32 @@ pub fn addition(r: &Ring, f: usize, variant: Variant) -> AlgResult<Vec<(Sym, Sym
     let (su, cu, du) = u.sncndn(&k)?;
     let (sv, cv, dv) = v.sncndn(&k)?;
     let (s, c, d) = (&u + &v).sncndn(&k)?;
-    let kk = if variant == Variant::KForK2 { k.clone() } else { &k * &k };
+    let kk = if variant == Variant::KForK2 {
+        k.clone()
+    } else {
+        &k * &k
+    };
     let one = r.integer(1);
     let q = &(&su * &su) * &(&sv * &sv);
-    let den = if variant == Variant::SignFlipped { &one + &(&kk * &q) } else { &one - &(&kk * &q) };
+    let den = if variant == Variant::SignFlipped {
+        &one + &(&kk * &q)
+    } else {
+        &one - &(&kk * &q)
+    };
     let (lhs, num) = match f {
         0 => (s, &(&su * &cv) * &dv + &(&sv * &cu) * &du),
         1 => (c, &(&cu * &cv) - &(&(&su * &du) * &(&sv * &dv))),
         _ => (d, &(&du * &dv) - &(&kk * &(&(&su * &cu) * &(&sv * &cv)))),
     };
     let rhs = &num / &den;
-    Ok(vec![(lhs, if variant == Variant::Scaled { scaled(r, rhs) } else { rhs })])
+    Ok(vec![(
+        lhs,
+        if variant == Variant::Scaled {
+            scaled(r, rhs)
+        } else {
+            rhs
+        },
+    )])
 }
 
 /// Section 8, (G0G1): `G₁ − k² sn²(Δφ) G₀ = k² ν² cn² dn²`, with a, b, c, k, ν from
@@ -137,7 +160,11 @@ pub fn g0g1(r: &Ring, regime: Regime, variant: Variant, named: bool) -> AlgResul
     let t = top(r, regime)?;
     let sq = squares(&t, regime);
     let p = params(r, &sq)?;
-    let (k, nu) = if named { (r.named("k", &p.k)?, r.named("nu", &p.nu)?) } else { (p.k.clone(), p.nu.clone()) };
+    let (k, nu) = if named {
+        (r.named("k", &p.k)?, r.named("nu", &p.nu)?)
+    } else {
+        (p.k.clone(), p.nu.clone())
+    };
     let dphi = r.indeterminate_f64("dphi", &[0.3, -0.7, 1.1])?;
     let (s, c, d) = dphi.sncndn(&k)?;
     let k2 = &k * &k;
@@ -147,12 +174,26 @@ pub fn g0g1(r: &Ring, regime: Regime, variant: Variant, named: bool) -> AlgResul
     let fc = &c2 / &(&t.c_ * &t.c_);
     let (cc, dd) = (&c * &c, &d * &d);
     let (g0, g1) = match regime {
-        Regime::Upper => (&(&fa * &cc) + &(&fc * &dd), &(&(&fa * &cc) + &(&(&fc * &k2) * &dd)) - &(&(&fb * &cc) * &dd)),
-        Regime::Lower => (&(&fa * &dd) + &(&fc * &cc), &(&(&(&fa * &k2) * &dd) + &(&fc * &cc)) - &(&(&fb * &cc) * &dd)),
+        Regime::Upper => (
+            &(&fa * &cc) + &(&fc * &dd),
+            &(&(&fa * &cc) + &(&(&fc * &k2) * &dd)) - &(&(&fb * &cc) * &dd),
+        ),
+        Regime::Lower => (
+            &(&fa * &dd) + &(&fc * &cc),
+            &(&(&(&fa * &k2) * &dd) + &(&fc * &cc)) - &(&(&fb * &cc) * &dd),
+        ),
     };
     let lhs = &g1 - &(&(&k2 * &(&s * &s)) * &g0);
-    let kk = if variant == Variant::KForK2 { k.clone() } else { k2.clone() };
-    let nn = if variant == Variant::MissingSquare { nu.clone() } else { &nu * &nu };
+    let kk = if variant == Variant::KForK2 {
+        k.clone()
+    } else {
+        k2.clone()
+    };
+    let nn = if variant == Variant::MissingSquare {
+        nu.clone()
+    } else {
+        &nu * &nu
+    };
     let rhs = &(&(&kk * &nn) * &cc) * &dd;
     let rhs = match variant {
         Variant::SignFlipped => -rhs,
@@ -184,8 +225,14 @@ pub fn g1_alphabeta(r: &Ring, regime: Regime) -> AlgResult<Vec<(Sym, Sym)>> {
     let p_ = m2 - &(cc_ * e);
     let q_ = &(a * e) - m2;
     let (alpha, beta) = match regime {
-        Regime::Upper => (&top_ / &(&(b - cc_) * &q_), &(&(a * cc_) / &(&(b - cc_) * &(b - cc_))) * &(&p_ / &q_)),
-        Regime::Lower => (&top_ / &(&(a - b) * &p_), &(&(a * cc_) / &(&(a - b) * &(a - b))) * &(&q_ / &p_)),
+        Regime::Upper => (
+            &top_ / &(&(b - cc_) * &q_),
+            &(&(a * cc_) / &(&(b - cc_) * &(b - cc_))) * &(&p_ / &q_),
+        ),
+        Regime::Lower => (
+            &top_ / &(&(a - b) * &p_),
+            &(&(a * cc_) / &(&(a - b) * &(a - b))) * &(&q_ / &p_),
+        ),
     };
     let s2 = &s * &s;
     let inner = &(&r.integer(1) + &(&alpha * &s2)) - &(&beta * &(&s2 * &s2));
@@ -223,12 +270,29 @@ pub fn mm(r: &Ring, regime: Regime, from_phi: bool) -> AlgResult<Vec<(Sym, Sym)>
     let scsc = &(&(&k2 * &(&sb * &cb)) * &sd) * &cd; // k² sn φ̄ cn φ̄ sn Δ cn Δ
     let f = |x: &Sym, coef: &Sym| &(&(&two * coef) / &den) * x;
     let (d1_, s1_, d3_, s3_) = match regime {
-        Regime::Upper => (-f(&sdsd, &p.a), f(&(&cb * &cd), &p.a), -f(&scsc, &p.c), f(&(&db * &dd), &p.c)),
-        Regime::Lower => (-f(&scsc, &p.a), f(&(&db * &dd), &p.a), -f(&sdsd, &p.c), f(&(&cb * &cd), &p.c)),
+        Regime::Upper => (
+            -f(&sdsd, &p.a),
+            f(&(&cb * &cd), &p.a),
+            -f(&scsc, &p.c),
+            f(&(&db * &dd), &p.c),
+        ),
+        Regime::Lower => (
+            -f(&scsc, &p.a),
+            f(&(&db * &dd), &p.a),
+            -f(&sdsd, &p.c),
+            f(&(&cb * &cd), &p.c),
+        ),
     };
     let d2_ = f(&(&(&cb * &db) * &sd), &p.b);
     let s2_ = f(&(&(&sb * &cd) * &dd), &p.b);
-    let lhs = [&m1h - &m1, &m1h + &m1, &m2h - &m2, &m2h + &m2, &m3h - &m3, &m3h + &m3];
+    let lhs = [
+        &m1h - &m1,
+        &m1h + &m1,
+        &m2h - &m2,
+        &m2h + &m2,
+        &m3h - &m3,
+        &m3h + &m3,
+    ];
     let rhs = [d1_, s1_, d2_, s2_, d3_, s3_];
     combine(r, &lhs, &rhs)
 }
@@ -256,7 +320,11 @@ pub fn sol_et(r: &Ring, regime: Regime) -> AlgResult<Vec<(Sym, Sym)>> {
         &(&inv(&t.c_) - &inv(&t.a_)) * &(&m[2] * &m[0]),
         &(&inv(&t.a_) - &inv(&t.b_)) * &(&m[0] * &m[1]),
     ];
-    let lhs = [m[0].derivative(&time)?, m[1].derivative(&time)?, m[2].derivative(&time)?];
+    let lhs = [
+        m[0].derivative(&time)?,
+        m[1].derivative(&time)?,
+        m[2].derivative(&time)?,
+    ];
     combine(r, &lhs, &rhs)
 }
 
@@ -265,7 +333,11 @@ pub type Mat = [[Sym; 3]; 3];
 
 fn mat(r: &Ring, f: impl Fn(usize, usize) -> Sym) -> Mat {
     let _ = r;
-    [[f(0, 0), f(0, 1), f(0, 2)], [f(1, 0), f(1, 1), f(1, 2)], [f(2, 0), f(2, 1), f(2, 2)]]
+    [
+        [f(0, 0), f(0, 1), f(0, 2)],
+        [f(1, 0), f(1, 1), f(1, 2)],
+        [f(2, 0), f(2, 1), f(2, 2)],
+    ]
 }
 
 fn mat_mul(r: &Ring, a: &Mat, b: &Mat) -> Mat {
@@ -303,7 +375,11 @@ pub fn cayley(r: &Ring) -> AlgResult<Vec<(Sym, Sym)>> {
     let z = r.integer(0);
     // PM(x) = [[0, x3, −x2], [−x3, 0, x1], [x2, −x1, 0]]
     let pm = |x1: &Sym, x2: &Sym, x3: &Sym| -> Mat {
-        [[z.clone(), x3.clone(), -x2], [-x3, z.clone(), x1.clone()], [x2.clone(), -x1, z.clone()]]
+        [
+            [z.clone(), x3.clone(), -x2],
+            [-x3, z.clone(), x1.clone()],
+            [x2.clone(), -x1, z.clone()],
+        ]
     };
     let vm = pm(&v1, &v2, &v3);
     let id = eye(r);
