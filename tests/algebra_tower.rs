@@ -359,3 +359,27 @@ fn normal_forms_evaluate_to_their_shadows() {
         assert!(Float::with_val(64, diff.abs_ref()) < 1e-60, "point {p}");
     }
 }
+
+#[test]
+fn opaque_arguments_are_base_arguments_of_their_own() {
+    // u0 = i·v0 with v0 unknown to the prover: sn(u0 + u) still follows DLMF 22.8.1
+    let (r, u, k) = period_ring();
+    let vals: Vec<Complex> = [0.4, 0.7, 0.2]
+        .iter()
+        .map(|&y| Complex::with_val(256, (0, y)))
+        .collect();
+    let u0 = r.opaque("uzero", &vals, true).unwrap();
+    let (s0, c0, d0) = u0.sncndn(&k).unwrap();
+    let (su, cu, du) = u.sncndn(&k).unwrap();
+    let one = r.integer(1);
+    let den = &one - &(&(&k * &k) * &(&(&s0 * &s0) * &(&su * &su)));
+    let rhs = &(&(&(&s0 * &cu) * &du) + &(&(&su * &c0) * &d0)) / &den;
+    assert_eq!((&u0 + &u).sn(&k).unwrap(), rhs);
+    // constant: no derivative; a non-constant opaque symbol has none to offer
+    assert!(s0.derivative(&u).unwrap().is_exact_zero());
+    let w = r.opaque("w", &vals, false).unwrap();
+    assert!(matches!(
+        w.sn(&k).unwrap().derivative(&u),
+        Err(AlgebraError::Derivative(_))
+    ));
+}
