@@ -383,3 +383,31 @@ fn opaque_arguments_are_base_arguments_of_their_own() {
         Err(AlgebraError::Derivative(_))
     ));
 }
+
+#[test]
+fn a_ring_that_runs_out_of_symbols_is_rebuilt_larger() {
+    // 9 indeterminates and 9 roots in a ring made for 4 of each
+    let small = RingOptions {
+        max_roots: 4,
+        max_vars: 4,
+        ..Default::default()
+    };
+    let proof = prove_identity(small.clone(), "capacity", |r| {
+        let mut lhs = r.integer(0);
+        let mut rhs = r.integer(0);
+        for i in 0..9 {
+            let x = r.indeterminate_f64(&format!("x{i}"), &[1.5 + i as f64, 2.0, 3.5])?;
+            let s = x.sqrt()?;
+            lhs = &lhs + &(&s * &s);
+            rhs = &rhs + &x;
+        }
+        Ok((lhs, rhs))
+    });
+    assert!(proof.is_proved(), "{:?}", proof.outcome);
+    assert!(proof.attempts >= 2);
+    let r = Ring::new(small);
+    let xs: Vec<_> = (0..5)
+        .map(|i| r.indeterminate_f64(&format!("x{i}"), &[1.0, 2.0, 3.0]))
+        .collect();
+    assert!(matches!(xs[4], Err(AlgebraError::Capacity(_))));
+}
