@@ -9,7 +9,7 @@ use eulertop::algebra::{prove_components, RingOptions};
 #[path = "../tests/algebra_identities/mod.rs"]
 mod algebra_identities;
 
-use algebra_identities::{g0g1, mm, sol_et, Regime, Variant};
+use algebra_identities::{g0g1, g1_alphabeta, mm, Regime, Variant};
 
 fn proofs(c: &mut Criterion) {
     let mut g = c.benchmark_group("algebra");
@@ -32,14 +32,17 @@ fn proofs(c: &mut Criterion) {
             assert!(p.is_proved())
         })
     });
-    g.bench_function("(sol) solves (ET) (upper regime)", |b| {
-        b.iter(|| {
-            assert!(
-                prove_components(RingOptions::default(), "sol", |r| sol_et(r, Regime::Upper))
-                    .is_proved()
-            )
-        })
-    });
+    g.bench_function(
+        "(MV alphabeta) G1 = k2 nu2 (1 + alpha sn2 - beta sn4) (upper regime)",
+        |b| {
+            b.iter(|| {
+                let p = prove_components(RingOptions::default(), "G1", |r| {
+                    g1_alphabeta(r, Regime::Upper)
+                });
+                assert!(p.is_proved())
+            })
+        },
+    );
     g.finish();
 }
 
