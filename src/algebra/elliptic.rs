@@ -782,6 +782,40 @@ impl Triples<'_> {
     }
 }
 
+/// The reader's note for one expansion: which bases, shifts and half periods.
+fn instance_note(
+    ring: &Ring,
+    t: usize,
+    combo: &[(usize, i64)],
+    hk: i64,
+    hkp: i64,
+    arg: &Sym,
+) -> String {
+    let st = ring.state();
+    let bases: Vec<String> = combo
+        .iter()
+        .map(|(j, m)| format!("{m}*{}", st.tables[t].bases[*j].s_name.replace("sn_", "b_")))
+        .collect();
+    let mut used = vec!["DLMF 22.8.1-3"];
+    if hk / 2 != 0 || hkp / 2 != 0 {
+        used.push("22.4.3");
+    }
+    if hk % 2 != 0 || hkp % 2 != 0 {
+        used.push("22.5.1");
+    }
+    drop(st);
+    format!(
+        "sn, cn, dn({}) with argument {} + {hk}*K/2 + {hkp}*iK'/2 by {}",
+        arg.render_short(60),
+        if bases.is_empty() {
+            "0".to_string()
+        } else {
+            bases.join(" + ")
+        },
+        used.join(", ")
+    )
+}
+
 impl Sym {
     /// `(sn, cn, dn)` of this argument with modulus `k`, expanded exactly by the
     /// addition theorems over the ring's base arguments (see the module doc).
@@ -839,6 +873,14 @@ impl Sym {
             .filter(|(_, m)| **m != 0)
             .map(|(j, m)| (j, *m))
             .collect();
+        ring.note(instance_note(
+            ring,
+            t,
+            &combo,
+            split.half_k,
+            split.half_kp,
+            self,
+        ));
         let mk = |f: &'static str, val: &Val| {
             let node = self.node.as_ref().map(|a| {
                 Node::with_nf(
