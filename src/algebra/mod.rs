@@ -86,6 +86,7 @@
 //! assert!(proof.is_proved(), "{:?}", proof.outcome);
 //! ```
 
+mod addition;
 pub mod certificate;
 mod derive;
 pub mod elliptic;
