@@ -411,3 +411,23 @@ fn a_ring_that_runs_out_of_symbols_is_rebuilt_larger() {
         .collect();
     assert!(matches!(xs[4], Err(AlgebraError::Capacity(_))));
 }
+
+#[test]
+fn long_derivations_are_recorded_and_dropped_without_recursion() {
+    // 200 000 sequential additions: the certificate DAG is that deep
+    let r = Ring::new(RingOptions {
+        certificate: true,
+        ..Default::default()
+    });
+    let x = var(&r, "x", [0.5, 1.5, 2.5]);
+    let mut acc = r.integer(0);
+    for _ in 0..200_000 {
+        acc = &acc + &x;
+    }
+    let expect = &x * &r.integer(200_000);
+    let cert = r
+        .certificate(&[(acc.clone(), expect.clone())], "long")
+        .expect("recorded");
+    assert!(cert.lines().count() > 200_000);
+    drop(acc);
+}
