@@ -22,5 +22,5 @@ fi
 cache="${FLINT_SYS_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/flint-sys}"
 if ! ls "$cache"/*/libflint.a >/dev/null 2>&1 && ! ls target/release/build/flint-sys-*/out/lib/libflint.a >/dev/null 2>&1; then
   echo "eulertop: the first build compiles FLINT 3 (bundled by flint-sys); this takes a few minutes" >&2
-  echo "eulertop: (about 4 minutes on 2 idle cores); later builds reuse $cache" >&2
+  echo "eulertop: (about 4 minutes of CPU time); later builds reuse $cache" >&2
 fi

@@ -133,3 +133,37 @@ fn lemma_2_cayley_form() {
         p.assumptions
     );
 }
+
+#[test]
+fn the_models_generic_code_runs_on_symbols() {
+    use eulertop::model::{EllipticParams, Inertia, Regime as ModelRegime};
+    // (G0G1) with k², a², b², c², ν² and the regime from the model's own code
+    let p = prove_components(opts(), "(G0G1) from the model", |r| {
+        let t = algebra_identities::top(r, Regime::Upper)?;
+        let inertia = Inertia::new(t.a_.clone(), t.b_.clone(), t.c_.clone())
+            .expect("A > B > C > 0 on the domain");
+        let ep = EllipticParams::new(&inertia, &t.m2, &t.e).expect("E/M² in range");
+        assert_eq!(ep.regime, ModelRegime::Upper);
+        let (k, nu) = (ep.k(), ep.nu());
+        let dphi = r.indeterminate_f64("dphi", &[0.3, -0.7, 1.1])?;
+        let (s, c, d) = dphi.sncndn(&k)?;
+        let (cc, dd) = (&c * &c, &d * &d);
+        let k2 = &k * &k;
+        let fa = &ep.a2 / &(&t.a_ * &t.a_);
+        let fb = &ep.b2 / &(&t.b_ * &t.b_);
+        let fc = &ep.c2 / &(&t.c_ * &t.c_);
+        let g0 = &(&fa * &cc) + &(&fc * &dd);
+        let g1 = &(&(&fa * &cc) + &(&(&fc * &k2) * &dd)) - &(&(&fb * &cc) * &dd);
+        let lhs = &g1 - &(&(&k2 * &(&s * &s)) * &g0);
+        Ok(vec![(lhs, &(&(&k2 * &(&nu * &nu)) * &cc) * &dd)])
+    });
+    assert_proved(&p, "(G0G1) from the model");
+    // the regime and the inertia order are decisions recorded as assumptions
+    assert!(
+        p.assumptions
+            .iter()
+            .any(|a| a.statement.ends_with("> 0") && a.statement.contains("B*E")),
+        "{:?}",
+        p.assumptions
+    );
+}

@@ -322,7 +322,7 @@ fn sn_dk_numeric(u: f64, k: f64) -> f64 {
 
 #[test]
 fn derivatives_in_the_modulus() {
-    let (r, u, k) = period_ring();
+    let (_r, u, k) = period_ring();
     let (s, c, d) = u.sncndn(&k).unwrap();
     let dk_s = s.derivative(&k).unwrap();
     // the Pythagorean relations are constant in k
@@ -358,4 +358,76 @@ fn normal_forms_evaluate_to_their_shadows() {
         let diff = Complex::with_val(256, z - x.shadow(p));
         assert!(Float::with_val(64, diff.abs_ref()) < 1e-60, "point {p}");
     }
+}
+
+#[test]
+fn opaque_arguments_are_base_arguments_of_their_own() {
+    // u0 = i·v0 with v0 unknown to the prover: sn(u0 + u) still follows DLMF 22.8.1
+    let (r, u, k) = period_ring();
+    let vals: Vec<Complex> = [0.4, 0.7, 0.2]
+        .iter()
+        .map(|&y| Complex::with_val(256, (0, y)))
+        .collect();
+    let u0 = r.opaque("uzero", &vals, true).unwrap();
+    let (s0, c0, d0) = u0.sncndn(&k).unwrap();
+    let (su, cu, du) = u.sncndn(&k).unwrap();
+    let one = r.integer(1);
+    let den = &one - &(&(&k * &k) * &(&(&s0 * &s0) * &(&su * &su)));
+    let rhs = &(&(&(&s0 * &cu) * &du) + &(&(&su * &c0) * &d0)) / &den;
+    assert_eq!((&u0 + &u).sn(&k).unwrap(), rhs);
+    // constant: no derivative; a non-constant opaque symbol has none to offer
+    assert!(s0.derivative(&u).unwrap().is_exact_zero());
+    let w = r.opaque("w", &vals, false).unwrap();
+    assert!(matches!(
+        w.sn(&k).unwrap().derivative(&u),
+        Err(AlgebraError::Derivative(_))
+    ));
+}
+
+#[test]
+fn a_ring_that_runs_out_of_symbols_is_rebuilt_larger() {
+    // 9 indeterminates and 9 roots in a ring made for 4 of each
+    let small = RingOptions {
+        max_roots: 4,
+        max_vars: 4,
+        ..Default::default()
+    };
+    let proof = prove_identity(small.clone(), "capacity", |r| {
+        let mut lhs = r.integer(0);
+        let mut rhs = r.integer(0);
+        for i in 0..9 {
+            let x = r.indeterminate_f64(&format!("x{i}"), &[1.5 + i as f64, 2.0, 3.5])?;
+            let s = x.sqrt()?;
+            lhs = &lhs + &(&s * &s);
+            rhs = &rhs + &x;
+        }
+        Ok((lhs, rhs))
+    });
+    assert!(proof.is_proved(), "{:?}", proof.outcome);
+    assert!(proof.attempts >= 2);
+    let r = Ring::new(small);
+    let xs: Vec<_> = (0..5)
+        .map(|i| r.indeterminate_f64(&format!("x{i}"), &[1.0, 2.0, 3.0]))
+        .collect();
+    assert!(matches!(xs[4], Err(AlgebraError::Capacity(_))));
+}
+
+#[test]
+fn long_derivations_are_recorded_and_dropped_without_recursion() {
+    // 200 000 sequential additions: the certificate DAG is that deep
+    let r = Ring::new(RingOptions {
+        certificate: true,
+        ..Default::default()
+    });
+    let x = var(&r, "x", [0.5, 1.5, 2.5]);
+    let mut acc = r.integer(0);
+    for _ in 0..200_000 {
+        acc = &acc + &x;
+    }
+    let expect = &x * &r.integer(200_000);
+    let cert = r
+        .certificate(&[(acc.clone(), expect.clone())], "long")
+        .expect("recorded");
+    assert!(cert.lines().count() > 200_000);
+    drop(acc);
 }

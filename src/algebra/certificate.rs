@@ -65,6 +65,19 @@ pub(crate) struct Node {
     pub nf: Option<(Poly, Poly)>,
 }
 
+/// Dropping a long chain of nodes one by one (a recursive drop could overflow the
+/// stack on deep derivations).
+impl Drop for Node {
+    fn drop(&mut self) {
+        let mut stack = std::mem::take(&mut self.args);
+        while let Some(a) = stack.pop() {
+            if let Ok(mut inner) = Arc::try_unwrap(a) {
+                stack.append(&mut inner.args);
+            }
+        }
+    }
+}
+
 impl Node {
     pub fn new(op: Op, args: Vec<Arc<Node>>) -> Arc<Node> {
         Arc::new(Node { op, args, nf: None })
@@ -113,14 +126,29 @@ struct Emitter<'a> {
 }
 
 impl Emitter<'_> {
-    fn visit(&mut self, n: &Arc<Node>) -> usize {
-        let key = Arc::as_ptr(n);
-        if let Some(&i) = self.ids.get(&key) {
-            return i;
+    /// Emits `root` and everything it depends on (post-order, without recursion, so
+    /// deep derivations cannot overflow the stack); returns its id.
+    fn visit(&mut self, root: &Arc<Node>) -> usize {
+        let mut stack: Vec<(Arc<Node>, bool)> = vec![(root.clone(), false)];
+        while let Some((n, expanded)) = stack.pop() {
+            if self.ids.contains_key(&Arc::as_ptr(&n)) {
+                continue;
+            }
+            if expanded {
+                self.emit(&n);
+            } else {
+                stack.push((n.clone(), true));
+                for a in n.args.iter().rev() {
+                    stack.push((a.clone(), false));
+                }
+            }
         }
-        let args: Vec<usize> = n.args.iter().map(|a| self.visit(a)).collect();
+        self.ids[&Arc::as_ptr(root)]
+    }
+
+    fn emit(&mut self, n: &Arc<Node>) {
+        let args: Vec<usize> = n.args.iter().map(|a| self.ids[&Arc::as_ptr(a)]).collect();
         let id = self.ids.len() + 1;
-        self.ids.insert(key, id);
         let t = |i: usize| format!("t{}", args[i]);
         let body = match &n.op {
             Op::Symbol(s) => s.clone(),
@@ -157,7 +185,7 @@ impl Emitter<'_> {
                 .map(|(a, b)| format!(" -> {}", nf_text(a, b, self.names)))
                 .unwrap_or_default();
         let _ = writeln!(self.out, "node t{id} = {body}{nf}");
-        id
+        self.ids.insert(Arc::as_ptr(n), id);
     }
 }
 

@@ -33,6 +33,39 @@
 //!   Certificates (module [`certificate`]) are rechecked by SymPy with
 //!   `scripts/recheck-certificates.py`.
 //!
+//! # Using it from an expression evaluator
+//!
+//! 1. Per claim, [`prove_components`] with a closure that builds both sides on the ring
+//!    it is given (the closure may run more than once: after a refinement of the
+//!    elliptic base arguments, and with named quantities expanded).
+//! 2. Each variable of the claim: [`Ring::indeterminate`] with its values at the
+//!    domain points (the sampler's points); numbers: [`Ring::rational`]; `i`:
+//!    [`Ring::i`]; definitions such as `k`, `nu`: [`Ring::named`] (free symbol first);
+//!    quarter periods: [`Ring::quarter_period`], [`Ring::quarter_period_prime`]; values
+//!    the prover cannot expand (`u0`): [`Ring::opaque`].
+//! 3. Operators `+ − × ÷`, [`Sym::try_powi`], [`Sym::sqrt`], [`Sym::sncndn`],
+//!    [`Sym::derivative`], [`Sym::abs`], [`Sym::sign`], comparisons
+//!    ([`Sym::compare`] or `PartialOrd`), and [`Sym::function`] for functions by name
+//!    (which refuses exp, ln, asin, am, F, … with [`AlgebraError::NotAlgebraic`]).
+//!    Wrap the evaluation of a definition in [`Ring::with_origin`] so its decisions are
+//!    recorded as coming from that definition.
+//! 4. Generic model code over [`crate::numbers::Real`] runs on [`Sym`] unchanged;
+//!    transcendental functions then record an error in the ring ([`Ring::error`]) and
+//!    the proof reports it.
+//! 5. The [`Proof`] carries the outcome, symbols, relations, assumptions, notes,
+//!    size, time and (with [`RingOptions::certificate`]) the certificate.
+//!
+//! # Limits
+//!
+//! * Radicands with roots in them are tested for being squares by denesting; otherwise
+//!   they get a root of their own, and such towers may have zero divisors (a non-zero
+//!   normal form then proves nothing, as always).
+//! * Half periods: multiples of `K/2` and `iK'/2` only; the derivative of `K(k)` in a
+//!   varying modulus is refused (it would need `E(k)`).
+//! * Decisions from the shadows are assumptions of the proof, never proved: a claim
+//!   whose statement *is* such a condition (an inequality, an indicator) is not proved
+//!   by a normal form.
+//!
 //! # Example
 //!
 //! The addition formula for `sn` (DLMF 22.8.1):
@@ -53,6 +86,7 @@
 //! assert!(proof.is_proved(), "{:?}", proof.outcome);
 //! ```
 
+mod addition;
 pub mod certificate;
 mod derive;
 pub mod elliptic;

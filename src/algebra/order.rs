@@ -68,6 +68,27 @@ impl Sym {
             self.clone()
         })
     }
+
+    /// A function of one argument by name, for evaluators of expression languages:
+    /// `sqrt`, `abs` and `sign` (as ±1) are algebraic; every other name (exp, ln, asin,
+    /// am, F, …) is [`AlgebraError::NotAlgebraic`].  `sn`, `cn`, `dn` take a modulus
+    /// and have their own methods.
+    ///
+    /// ```
+    /// use eulertop::algebra::{AlgebraError, Ring, RingOptions};
+    /// let ring = Ring::new(RingOptions { points: 1, ..Default::default() });
+    /// let x = ring.indeterminate_f64("x", &[0.25]).unwrap();
+    /// assert_eq!(x.function("sqrt").unwrap().shadow(0).real().to_f64(), 0.5);
+    /// assert_eq!(x.function("asin").unwrap_err(), AlgebraError::NotAlgebraic("asin".into()));
+    /// ```
+    pub fn function(&self, name: &str) -> AlgResult<Sym> {
+        match name {
+            "sqrt" => self.sqrt(),
+            "abs" => self.abs(),
+            "sign" => Ok(self.ring.integer(i64::from(self.sign()?))),
+            _ => Err(AlgebraError::NotAlgebraic(name.to_string())),
+        }
+    }
 }
 
 impl super::ring::Ring {

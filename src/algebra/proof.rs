@@ -119,6 +119,11 @@ impl Ring {
         if let Some(e) = self.error() {
             return Err(e);
         }
+        if self.state().rebase_wanted {
+            return Ok(Outcome::NotProved(
+                "provisional elliptic base arguments: evaluate again with refined bases (prove_identity does)".into(),
+            ));
+        }
         let d = lhs.try_sub(rhs)?;
         let prec = self.precision();
         if d.val.sh.has_non_finite() {
@@ -156,8 +161,9 @@ impl Ring {
 }
 
 /// Proves `lhs = rhs` built by `build` on a fresh ring, restarting when the elliptic
-/// base arguments must be refined, and once more with named quantities replaced by
-/// their definitions if the normal form is not 0.  `ms` covers every evaluation.
+/// base arguments must be refined or the ring's capacity runs out, and once more with
+/// named quantities replaced by their definitions if the normal form is not 0.  `ms`
+/// covers every evaluation.
 ///
 /// ```
 /// use eulertop::algebra::{prove_identity, RingOptions};
@@ -187,15 +193,27 @@ where
 {
     let t0 = Instant::now();
     let mut opts = opts;
-    let mut attempts = 0;
+    let (mut attempts, mut rebases, mut grows) = (0, 0, 0);
     let ms = |t0: &Instant| t0.elapsed().as_secs_f64() * 1e3;
     loop {
         attempts += 1;
         let ring = Ring::new(opts.clone());
         let built = build(&ring);
         let wanted = ring.state().rebase_wanted;
+        let capacity = matches!(built, Err(AlgebraError::Capacity(_)))
+            || matches!(ring.error(), Some(AlgebraError::Capacity(_)));
+        if capacity && grows < 3 {
+            grows += 1;
+            opts.max_roots *= 2;
+            opts.max_vars *= 2;
+            if wanted {
+                opts.base_hints = ring.rebase_hints();
+            }
+            continue;
+        }
         if wanted {
-            if attempts < 4 {
+            if rebases < 3 {
+                rebases += 1;
                 let hints: Vec<BaseHint> = ring.rebase_hints();
                 opts.base_hints = hints;
                 continue;
@@ -216,7 +234,7 @@ where
             .vars
             .iter()
             .any(|v| matches!(v.kind, VarKind::Named(_)));
-        if !proof.is_proved() && named && !opts.expand_named && attempts < 6 {
+        if !proof.is_proved() && named && !opts.expand_named {
             opts.expand_named = true;
             continue;
         }

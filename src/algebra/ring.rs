@@ -25,7 +25,8 @@ pub struct RingOptions {
     pub points: usize,
     /// MPFR precision of the shadows, in bits.
     pub precision: u32,
-    /// Capacity for square-root symbols.
+    /// Capacity for square-root symbols (fewer variables make FLINT faster;
+    /// [`crate::algebra::prove_identity`] doubles the capacities when they run out).
     pub max_roots: usize,
     /// Capacity for field variables (indeterminates and transcendental symbols).
     pub max_vars: usize,
@@ -43,8 +44,8 @@ impl Default for RingOptions {
         RingOptions {
             points: 3,
             precision: 256,
-            max_roots: 32,
-            max_vars: 32,
+            max_roots: 16,
+            max_vars: 16,
             certificate: false,
             expand_named: false,
             base_hints: Vec::new(),

@@ -137,11 +137,57 @@ struct Class {
 }
 
 impl Ring {
+    /// Divides out the irreducible factors met so far (cheap), then factors the rest
+    /// with FLINT: `(rest, [(factor index, exponent)])`.
+    fn known_factors(&self, p: &Poly) -> AlgResult<(Poly, Vec<(usize, u64)>)> {
+        let known: Vec<(usize, Poly)> = {
+            let st = self.state();
+            st.basis
+                .factors
+                .iter()
+                .enumerate()
+                .filter_map(|(i, f)| match f {
+                    Factor::Poly(q) => Some((i, q.clone())),
+                    _ => None,
+                })
+                .collect()
+        };
+        let mut rest = p.clone();
+        let mut found = Vec::new();
+        for (i, f) in known {
+            let used = rest.used_vars();
+            if !f.used_vars().iter().all(|v| used.contains(v)) {
+                continue;
+            }
+            let mut e = 0;
+            while let Some(q) = rest.divides(&f)? {
+                rest = q;
+                e += 1;
+            }
+            if e > 0 {
+                found.push((i, e));
+            }
+        }
+        Ok((rest, found))
+    }
+
     fn class_of(&self, p: &Poly) -> AlgResult<Class> {
-        let fac = p.factor()?;
+        let (rest, known) = self.known_factors(p)?;
+        let fac = match rest.as_constant() {
+            Some(c) => super::flint::Factored {
+                constant: c,
+                factors: Vec::new(),
+            },
+            None => rest.factor()?,
+        };
         let (sign, primes) = factor_integer(&fac.constant)?;
         let mut st = self.state();
         let mut t = Bits::default();
+        for (i, e) in known {
+            if e % 2 == 1 {
+                t.flip(i);
+            }
+        }
         if sign < 0 {
             let i = st.basis.index_of(Factor::MinusOne);
             t.flip(i);

@@ -422,15 +422,6 @@ impl Sym {
         }
     }
 
-    /// The FLINT variables that occur (in numerator or denominator).
-    pub(crate) fn used_vars(&self) -> Vec<usize> {
-        let mut u = self.val.num.used_vars();
-        u.extend(self.val.den.used_vars());
-        u.sort_unstable();
-        u.dedup();
-        u
-    }
-
     /// Does the normal form contain root symbols?
     pub fn has_roots(&self) -> bool {
         self.val

@@ -11,8 +11,8 @@
 pub mod decimal;
 pub mod figures;
 pub mod markdown;
-pub mod proof_evidence;
 pub mod paper_text;
+pub mod proof_evidence;
 pub mod proofs;
 pub mod tex;
 
