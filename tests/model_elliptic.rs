@@ -2,8 +2,9 @@
 //! steps (phis) against (master12)/(MV master), and the discrete solution (discr sol).
 
 use eulertop::linalg::Vec3;
-use eulertop::model::discretization::{orbit, step};
+use eulertop::model::discretization::step;
 use eulertop::model::elliptic_coords::{m_to_phi, phi_to_m};
+use eulertop::model::orbit;
 use eulertop::model::phase::{delta, step_phases};
 use eulertop::model::solution::{continuous_from, discrete_from};
 use eulertop::model::{Gamma, Inertia, Regime};
@@ -87,7 +88,10 @@ fn check_phase<R: Real>(like: &R, abc: (f64, f64, f64), m0: (f64, f64, f64), h: 
     for g in [Gamma::G1, Gamma::G2, Gamma::Vm] {
         let d = delta(&i, &c0.params, g, &h).expect("delta solvable for small h");
         // Δφ of actual steps at several φ̄ equals the φ̄-independent δ
-        let pts = orbit(&i, g, &m, &h, 8).unwrap();
+        let pts = orbit(&i, g, &m, &h)
+            .take(8)
+            .collect::<Result<Vec<_>, _>>()
+            .unwrap();
         for p in std::iter::once(&m).chain(pts.iter()) {
             let q = step(&i, g, p, &h).unwrap();
             let (_, _, dphi) = step_phases(&i, p, &q).unwrap();
@@ -107,7 +111,10 @@ fn check_phase<R: Real>(like: &R, abc: (f64, f64, f64), m0: (f64, f64, f64), h: 
 fn check_gamma0_not_poisson<R: Real>(like: &R) {
     let (i, m) = setup(like, (3.0, 2.0, 1.0), (0.4, 0.5, 1.1));
     let h = like.from_f64(0.2);
-    let pts = orbit(&i, Gamma::G0, &m, &h, 40).unwrap();
+    let pts = orbit(&i, Gamma::G0, &m, &h)
+        .take(40)
+        .collect::<Result<Vec<_>, _>>()
+        .unwrap();
     let mut lo = f64::INFINITY;
     let mut hi = f64::NEG_INFINITY;
     for w in pts.windows(2) {

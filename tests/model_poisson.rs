@@ -5,8 +5,9 @@
 //! near the coordinate axes.
 
 use eulertop::linalg::{Mat3, Vec3};
-use eulertop::model::discretization::{orbit, step, step_jacobian};
+use eulertop::model::discretization::{step, step_jacobian};
 use eulertop::model::elliptic_coords::{m_to_phi, phi_near, phi_to_m, quarter_period};
+use eulertop::model::orbit;
 use eulertop::model::phase::delta;
 use eulertop::model::veselov_moser::hat;
 use eulertop::model::{Gamma, Inertia};
@@ -62,7 +63,10 @@ fn phi_continuous_over_periods() {
     let k = quarter_period(&c0.params).unwrap().unwrap();
     let d = delta(&i, &c0.params, Gamma::G1, &h).unwrap();
     let n = (3.0 * 4.0 * k / (2.0 * d)).ceil() as usize; // three periods
-    let pts = orbit(&i, Gamma::G1, &m, &h, n).unwrap();
+    let pts = orbit(&i, Gamma::G1, &m, &h)
+        .take(n)
+        .collect::<Result<Vec<_>, _>>()
+        .unwrap();
     let mut phi = c0.phi;
     for (step_no, p) in pts.iter().enumerate() {
         phi = phi_near(&i, p, &phi).unwrap().phi;

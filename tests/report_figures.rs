@@ -2,10 +2,13 @@
 //! measured orders near 2 (the maps are midpoint-like: γ = 1 + O(h²)), and the
 //! φ̄-independence of Δφ for the Poisson maps γ₁, γ₂, γ_VM against its failure for γ₀.
 
-use eulertop::model::Gamma;
-use eulertop::report::model_figures::{
-    fitted_orders, loglog_slope, phase_curves, write_all, CASES, GAMMAS, PHASE_GRID, PHASE_H,
+use eulertop::model::experiments::{
+    fitted_orders, orbit_comparison, phase_curves, CASES, GAMMAS, ORBIT_SAMPLES, PHASE_GRID,
+    PHASE_H,
 };
+use eulertop::model::Gamma;
+use eulertop::report::figures::model::write_all;
+use eulertop::stats::{loglog_slope, ls_slope};
 use std::path::PathBuf;
 
 const FILES: [&str; 4] = [
@@ -61,8 +64,37 @@ fn loglog_slope_recovers_power_laws() {
                 (h, 7.0 * h.powf(p))
             })
             .collect();
-        assert!((loglog_slope(&pts) - p).abs() < 1e-12);
+        assert!((loglog_slope(&pts).unwrap() - p).abs() < 1e-12);
     }
+    // degenerate data gives no slope instead of a NaN
+    assert_eq!(loglog_slope(&[(0.5, 1.0)]), None);
+    assert_eq!(loglog_slope(&[(0.5, 1.0), (0.25, 0.0)]), None);
+    assert_eq!(ls_slope(&[2.0, 2.0, 2.0], &[1.0, 2.0, 3.0]), None);
+    assert_eq!(ls_slope(&[1.0, 2.0], &[1.0]), None);
+}
+
+#[test]
+fn orbit_comparison_iterates_follow_discrete_solution() {
+    let c = orbit_comparison().expect("orbits computed");
+    assert_eq!(c.continuous.len(), ORBIT_SAMPLES + 1);
+    assert_eq!(c.t_end, c.steps as f64 * c.h);
+    let m0 = CASES[0].start();
+    for run in &c.runs {
+        assert_eq!(run.iterates.len(), c.steps + 1);
+        assert_eq!(run.discrete.len(), c.steps + 1);
+        // M₀ is the start point, and (sol), (discr sol) pass through it
+        assert_eq!(run.iterates[0], m0);
+        assert!((run.discrete[0].clone() - m0.clone()).max_magnitude() < 1e-14);
+        // the Poisson maps follow (discr sol) along the whole orbit
+        for (a, b) in run.iterates.iter().zip(&run.discrete) {
+            assert!(
+                (a.clone() - b.clone()).max_magnitude() < 1e-11,
+                "{:?}",
+                run.gamma
+            );
+        }
+    }
+    assert!((c.continuous[0].1.clone() - m0).max_magnitude() < 1e-14);
 }
 
 #[test]

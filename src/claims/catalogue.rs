@@ -8,6 +8,7 @@ use super::kind::{Form, Kind, Verdict};
 use super::lexer::SyntaxError;
 use super::parser::{parse_bindings, parse_expr};
 use super::registry::Registry;
+use super::structure::Located;
 use serde::Deserialize;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -246,6 +247,12 @@ pub struct Claim {
     pub refute_floor_bits: f64,
     /// Seed.
     pub seed: u64,
+    /// The paper's environment ("Proposition 6", "Section 2", …); see `structure`.
+    pub environment: Option<Located>,
+    /// The claim's role in its environment (statement, proof-step, …).
+    pub role: Option<Located>,
+    /// Ids of the claims this one uses.
+    pub uses: Vec<Located>,
 }
 
 /// The whole catalogue.
@@ -338,6 +345,10 @@ struct ClaimToml {
     max_loss_bits: Option<f64>,
     refute_floor_bits: Option<f64>,
     seed: Option<u64>,
+    environment: Option<Spanned<String>>,
+    role: Option<Spanned<String>>,
+    #[serde(default)]
+    uses: Vec<Spanned<String>>,
 }
 
 fn origin_of(file: &Arc<SourceFile>, s: &Spanned<String>) -> Origin {
@@ -548,6 +559,7 @@ pub fn load_sources(
         sections,
     };
     check_names(&cat, &defs)?;
+    super::structure::check(&cat)?;
     Ok(cat)
 }
 
@@ -850,6 +862,16 @@ fn build_claim(
             .or(outer.map(|o| o.refute_floor_bits))
             .unwrap_or(30.0),
         seed: t.seed.or(outer.map(|o| o.seed)).unwrap_or(0),
+        environment: t
+            .environment
+            .as_ref()
+            .map(|s| Located::new(s, origin_of(file, s))),
+        role: t.role.as_ref().map(|s| Located::new(s, origin_of(file, s))),
+        uses: t
+            .uses
+            .iter()
+            .map(|s| Located::new(s, origin_of(file, s)))
+            .collect(),
     };
     if t.samples == Some(0) || t.samples.is_some_and(|s| s > 10_000) {
         return Err(file.error_at(at.0, at.1, "samples must be between 1 and 10000"));

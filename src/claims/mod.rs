@@ -23,5 +23,6 @@ pub mod lexer;
 pub mod parser;
 pub mod registry;
 pub mod sampler;
+pub mod structure;
 pub mod value;
 pub mod verdict;

@@ -142,7 +142,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         macros,
         bits,
         command,
-        extra_figures: crate::report::model_figures::FIGURES
+        extra_figures: crate::report::figures::model::FIGURES
             .iter()
             .map(|(f, c)| (f.to_string(), c.to_string()))
             .collect(),
@@ -150,7 +150,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     let out = Path::new(&args.out);
     let written = write_reports(&input, out)
         .map_err(|e| CliError(format!("cannot write reports to {}: {e}", out.display())))?;
-    crate::report::model_figures::write_all(&out.join("figures"))
+    crate::report::figures::model::write_all(&out.join("figures"))
         .map_err(|e| CliError(format!("cannot write figures: {e}")))?;
     if !args.readme.is_empty() {
         update_readme(Path::new(&args.readme), &results)?;

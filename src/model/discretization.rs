@@ -333,23 +333,6 @@ pub fn step<R: Real>(
     Ok(step_report(inertia, gamma, m, h, NewtonOptions::default())?.m)
 }
 
-/// The iterates `M₁, …, M_n` of (discr eq) from `M₀ = m`.
-pub fn orbit<R: Real>(
-    inertia: &Inertia<R>,
-    gamma: Gamma,
-    m: &Vec3<R>,
-    h: &R,
-    n: usize,
-) -> Result<Vec<Vec3<R>>, ModelError> {
-    let mut out = Vec::with_capacity(n);
-    let mut cur = m.clone();
-    for _ in 0..n {
-        cur = step(inertia, gamma, &cur, h)?;
-        out.push(cur.clone());
-    }
-    Ok(out)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

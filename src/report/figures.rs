@@ -1,4 +1,11 @@
-//! SVG figures drawn with plotters: residual against precision per section.
+//! SVG figures drawn with plotters: residual against precision per section (here) and
+//! the figures of the Euler-top model ([`model`]).
+
+pub mod model;
+mod orbits;
+mod order;
+mod phase;
+mod style;
 
 use super::Section;
 use crate::claims::kind::Kind;

@@ -9,7 +9,6 @@
 
 pub mod figures;
 pub mod markdown;
-pub mod model_figures;
 pub mod tex;
 
 use crate::claims::verdict::ClaimResult;
