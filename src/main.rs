@@ -1,6 +1,7 @@
 //! The `eulertop` command-line tool.  See `eulertop --help`.
 
 use clap::{Parser, Subcommand};
+use std::io::Write;
 use std::process::ExitCode;
 
 /// Formula-by-formula verification of Bobenko–Lorbeer–Suris,
@@ -31,7 +32,15 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        // help and version (exit 0) go to standard output, usage errors (exit 2) to
+        // standard error; a failed write of either exits with status 2
+        Err(e) => {
+            let code = if e.print().is_ok() { e.exit_code() } else { 2 };
+            return ExitCode::from(u8::try_from(code).unwrap_or(2));
+        }
+    };
     let result: Result<i32, eulertop::cli::CliError> = match cli.command {
         Command::Verify(a) => eulertop::cli::verify::run(a),
         Command::Audit(a) => eulertop::cli::audit::run(a),
@@ -42,9 +51,10 @@ fn main() -> ExitCode {
         Command::Report(a) => eulertop::cli::report::run(a),
     };
     match result {
-        Ok(code) => ExitCode::from(code as u8),
+        Ok(code) => ExitCode::from(u8::try_from(code).unwrap_or(2)),
         Err(e) => {
-            eprintln!("eulertop: {e}");
+            // standard error may be closed too (`2>&1 | head`): never panic on it
+            let _ = writeln!(std::io::stderr(), "eulertop: {e}");
             ExitCode::from(2)
         }
     }

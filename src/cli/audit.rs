@@ -2,10 +2,12 @@
 //! the fitted slope (bits of agreement gained per bit of precision) and the verdict.
 
 use super::verify::{fmt_log2, load, parse_bits};
-use super::CliError;
+use super::{stdout, write_error, CliError};
+use crate::claims::catalogue::{Catalogue, Claim};
 use crate::claims::verdict::{run_claim, Options, Rung};
+use crate::stats::ls_slope;
 use clap::Parser;
-use std::io::IsTerminal;
+use std::io::{IsTerminal, Write};
 
 /// Arguments of `eulertop audit`.
 #[derive(Parser, Debug)]
@@ -20,25 +22,45 @@ pub struct Args {
     pub catalogue: String,
 }
 
-/// Least-squares slope of y against x.
-pub fn fit_slope(xs: &[f64], ys: &[f64]) -> Option<f64> {
-    if xs.len() < 2 {
-        return None;
+/// Writes one row per rung: the residual of the claim run at that precision alone, flushed as
+/// soon as it is known.  Returns `(bits, −log2 residual)` of the rungs with a nonzero
+/// residual.
+fn ladder(
+    out: &mut impl Write,
+    cat: &Catalogue,
+    claim: &Claim,
+    bits: &[u32],
+    bar: Option<&indicatif::ProgressBar>,
+) -> Result<(Vec<f64>, Vec<f64>), CliError> {
+    let err = write_error("standard output");
+    let mut xs = Vec::new();
+    let mut ys = Vec::new();
+    for &b in bits {
+        let opts = Options {
+            bits: vec![b],
+            exact: false,
+        };
+        let r = run_claim(cat, claim, &opts);
+        let rung = r.residuals.first();
+        let cell = match rung {
+            None => format!("- ({})", r.reason),
+            Some(Rung::Slope { slope, .. }) => format!("slope {slope:.3}"),
+            Some(x) => fmt_log2(x.log2()),
+        };
+        if let Some(l) = rung.and_then(|x| x.log2()) {
+            xs.push(f64::from(b));
+            ys.push(-l);
+        }
+        let mut row = || writeln!(out, "{b:>8}  {cell:>14}").and_then(|()| out.flush());
+        match bar {
+            Some(p) => {
+                p.suspend(row).map_err(&err)?;
+                p.inc(1);
+            }
+            None => row().map_err(&err)?,
+        }
     }
-    let n = xs.len() as f64;
-    let mx = xs.iter().sum::<f64>() / n;
-    let my = ys.iter().sum::<f64>() / n;
-    let sxx: f64 = xs.iter().map(|x| (x - mx).powi(2)).sum();
-    if sxx == 0.0 {
-        return None;
-    }
-    Some(
-        xs.iter()
-            .zip(ys)
-            .map(|(x, y)| (x - mx) * (y - my))
-            .sum::<f64>()
-            / sxx,
-    )
+    Ok((xs, ys))
 }
 
 /// Runs `eulertop audit`.
@@ -50,61 +72,44 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         .iter()
         .find(|c| c.id == args.id)
         .ok_or_else(|| CliError(format!("no claim with id '{}'", args.id)))?;
-    let bar = if std::io::stderr().is_terminal() {
-        Some(indicatif::ProgressBar::new(bits.len() as u64 + 1))
-    } else {
-        None
+    let mut out = stdout();
+    let err = write_error("standard output");
+    writeln!(
+        out,
+        "{} ({}, {})",
+        claim.id,
+        claim.location,
+        claim.kind.name()
+    )
+    .and_then(|()| writeln!(out, "{:>8}  {:>14}", "bits", "residual"))
+    .map_err(&err)?;
+    let bar = std::io::stderr()
+        .is_terminal()
+        .then(|| indicatif::ProgressBar::new(bits.len() as u64 + 1));
+    let (xs, ys) = ladder(&mut out, &cat, claim, &bits, bar.as_ref())?;
+    let opts = Options {
+        bits: bits.clone(),
+        exact: true,
     };
-    println!("{} ({}, {})", claim.id, claim.location, claim.kind.name());
-    println!("{:>8}  {:>14}", "bits", "residual");
-    let mut xs = Vec::new();
-    let mut ys = Vec::new();
-    for &b in &bits {
-        let r = run_claim(
-            &cat,
-            claim,
-            &Options {
-                bits: vec![b],
-                exact: false,
-            },
-        );
-        let rung = r.residuals.first();
-        let cell = match rung {
-            None => format!("- ({})", r.reason),
-            Some(Rung::Slope { slope, .. }) => format!("slope {slope:.3}"),
-            Some(x) => fmt_log2(x.log2()),
-        };
-        if let Some(l) = rung.and_then(|x| x.log2()) {
-            xs.push(f64::from(b));
-            ys.push(-l);
-        }
-        if let Some(p) = &bar {
-            p.suspend(|| println!("{b:>8}  {cell:>14}"));
-            p.inc(1);
-        } else {
-            println!("{b:>8}  {cell:>14}");
-        }
-    }
-    let full = run_claim(
-        &cat,
-        claim,
-        &Options {
-            bits: bits.clone(),
-            exact: true,
-        },
-    );
+    let full = run_claim(&cat, claim, &opts);
     if let Some(p) = &bar {
         p.finish_and_clear();
     }
-    match fit_slope(&xs, &ys) {
-        Some(s) => println!("fitted slope: {s:.3} bits of agreement per bit of precision"),
-        None => println!("fitted slope: n/a (residual exactly zero or fewer than two rungs)"),
-    }
-    println!(
-        "verdict: {} (expect {}): {}",
-        full.verdict.name(),
-        full.expect.map_or("-", |v| v.name()),
-        full.reason
-    );
+    let slope = match ls_slope(&xs, &ys) {
+        Some(s) => format!("fitted slope: {s:.3} bits of agreement per bit of precision"),
+        None => "fitted slope: n/a (residual exactly zero or fewer than two rungs)".to_string(),
+    };
+    writeln!(out, "{slope}")
+        .and_then(|()| {
+            writeln!(
+                out,
+                "verdict: {} (expect {}): {}",
+                full.verdict.name(),
+                full.expect.map_or("-", |v| v.name()),
+                full.reason
+            )
+        })
+        .and_then(|()| out.flush())
+        .map_err(&err)?;
     Ok(i32::from(!full.as_expected))
 }

@@ -81,6 +81,6 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             args.bits
         )));
     };
-    println!("{out}");
+    super::print(&out)?;
     Ok(0)
 }

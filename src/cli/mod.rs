@@ -3,6 +3,8 @@
 //! Every subcommand lives in its own module with an `Args` struct (clap derive) and a
 //! `run(args) -> Result<i32, CliError>` function returning the exit status.
 //! A [`CliError`] is printed as one line on standard error and exits with status 2.
+//! Every write is checked: a full disk or a closed pipe on standard output is a
+//! [`CliError`] too ([`write_error`]), never a panic and never a silent exit 0.
 
 /// A user-facing error: one line naming what was wrong and where; exit status 2.
 #[derive(Debug, thiserror::Error)]
@@ -16,8 +18,44 @@ impl CliError {
     }
 }
 
+/// A buffered, locked standard output.  Flush it explicitly and check the result: the
+/// flush on drop ignores errors.
+pub fn stdout() -> std::io::BufWriter<std::io::StdoutLock<'static>> {
+    std::io::BufWriter::new(std::io::stdout().lock())
+}
+
+/// Turns a failed write to `dest` (a file name, or "standard output") into a
+/// [`CliError`] naming the destination and the cause.
+pub fn write_error(dest: impl std::fmt::Display) -> impl Fn(std::io::Error) -> CliError {
+    move |e| CliError(format!("cannot write to {dest}: {e}"))
+}
+
+/// Writes `text` and a newline to standard output and flushes it; errors as
+/// [`write_error`].
+pub fn print(text: &str) -> Result<(), CliError> {
+    use std::io::Write;
+    let mut out = stdout();
+    let err = write_error("standard output");
+    writeln!(out, "{text}").map_err(&err)?;
+    out.flush().map_err(&err)
+}
+
+/// The largest `--jobs` accepted (worker threads).
+pub const MAX_JOBS: usize = 1024;
+
+/// Checks `--jobs`: 1 to [`MAX_JOBS`] worker threads, or none given (all cores).
+pub fn check_jobs(jobs: Option<usize>) -> Result<(), CliError> {
+    match jobs {
+        Some(j) if !(1..=MAX_JOBS).contains(&j) => Err(CliError(format!(
+            "--jobs {j} is outside 1..={MAX_JOBS} (worker threads)"
+        ))),
+        _ => Ok(()),
+    }
+}
+
 pub mod jacobi;
 pub mod orbit;
+mod orbit_svg;
 pub mod step;
 
 /// Parses a comma-separated list such as `53,128,256`.

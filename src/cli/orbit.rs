@@ -2,22 +2,28 @@
 //! continuous solution (sol) through the start point, and the phase steps
 //! `Δφ` against `φ̄` (phis) along the orbit.
 //!
-//! Prints the iterates like `step`.  `--csv FILE` writes one row per iterate:
-//! `n,t,M1,M2,M3,sol1,sol2,sol3,phibar,dphi` (`t = n·h`; `phibar`, `dphi` belong to the
-//! step from `n−1` to `n`, empty for `n = 0`).  `--svg FILE` draws (plotters, SVG)
-//! the components of the continuous solution (lines) and the iterates (dots) against
-//! `t`, and `Δφ` against `φ̄`, with the predicted `δ` of (master12)/(MV master) as a
-//! horizontal line when it exists.  Errors as for `step`, plus: a start point on a
-//! coordinate axis (where `φ` is undefined) → exit status 2.
+//! Prints the iterates like `step`, as they are computed.  `--csv FILE` writes one row
+//! per iterate, also as it is computed: `n,t,M1,M2,M3,sol1,sol2,sol3,phibar,dphi`
+//! (`t = n·h`; `phibar`, `dphi` belong to the step from `n−1` to `n`, empty for
+//! `n = 0`).  `--svg FILE` draws (plotters, SVG) the components of the continuous
+//! solution (lines) and the iterates (dots) against `t`, and `Δφ` against `φ̄`, with the
+//! predicted `δ` of (master12)/(MV master) as a horizontal line when it exists; the
+//! figure holds every row, so `--svg` accepts at most [`MAX_SVG_STEPS`] steps.  Errors
+//! as for `step`, plus: a start point on a coordinate axis (where `φ` is undefined) →
+//! exit status 2.
 
-use super::step::{check_bits, digits_for, iterate, parse};
-use super::CliError;
+use super::step::{check_bits, digits_for, iterates, parse, write_point, Problem};
+use super::{stdout, write_error, CliError};
 use crate::linalg::Vec3;
-use crate::model::elliptic_coords::{m_to_phi, phi_near};
+use crate::model::elliptic_coords::{m_to_phi, phi_near, EllCoords};
 use crate::model::phase::delta;
 use crate::model::solution::continuous_from;
 use crate::numbers::Real;
-use std::io::Write;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
+
+/// The largest `--steps` that `--svg` draws (the figure keeps every row in memory).
+pub const MAX_SVG_STEPS: usize = 20_000;
 
 /// Arguments of `eulertop orbit`.
 #[derive(clap::Args, Debug, Clone)]
@@ -29,10 +35,10 @@ pub struct Args {
     pub step: super::step::Args,
     /// Write a CSV table to this file.
     #[arg(long)]
-    pub csv: Option<std::path::PathBuf>,
-    /// Write an SVG plot to this file.
+    pub csv: Option<PathBuf>,
+    /// Write an SVG plot to this file (at most 20000 steps).
     #[arg(long)]
-    pub svg: Option<std::path::PathBuf>,
+    pub svg: Option<PathBuf>,
 }
 
 /// One row of the orbit table.
@@ -50,183 +56,168 @@ pub struct Row<R> {
     pub phase: Option<(R, R)>,
 }
 
-/// The orbit table and the predicted δ (if any).
-pub type OrbitData<R> = (Vec<Row<R>>, Option<R>);
+/// Turns the iterates `M₀, M₁, …` into [`Row`]s, one at a time: (sol) at `t = n·h` and
+/// (phis) of each step, with `φ` continued along the orbit.
+pub struct Table<'a, R> {
+    problem: &'a Problem<R>,
+    c0: EllCoords<R>,
+    prev_phi: R,
+    n: usize,
+}
 
-/// Computes the table for `args` at the precision of `like`.
-pub fn compute<R: Real>(like: &R, args: &super::step::Args) -> Result<OrbitData<R>, CliError> {
-    let p = parse(like, args)?;
-    let c0 = m_to_phi(&p.inertia, &p.m0).map_err(|e| CliError::new(format!("start point: {e}")))?;
-    let pts = iterate(&p, args.steps)?;
-    let pred = delta(&p.inertia, &c0.params, p.gamma, &p.h).ok();
-    let mut rows = Vec::with_capacity(pts.len() + 1);
-    let mut prev_phi = c0.phi.clone();
-    let half = like.from_ratio(1, 2);
-    for (n, m) in std::iter::once(p.m0.clone()).chain(pts).enumerate() {
-        let t = p.h.clone() * like.from_i64(n as i64);
-        let sol = continuous_from(&c0, &t).map_err(|e| CliError::new(format!("solution: {e}")))?;
+impl<'a, R: Real> Table<'a, R> {
+    /// The table of `problem`; errors if `φ` is undefined at the start point.
+    pub fn new(problem: &'a Problem<R>) -> Result<Self, CliError> {
+        let c0 = m_to_phi(&problem.inertia, &problem.m0)
+            .map_err(|e| CliError::new(format!("start point: {e}")))?;
+        let prev_phi = c0.phi.clone();
+        Ok(Table {
+            problem,
+            c0,
+            prev_phi,
+            n: 0,
+        })
+    }
+
+    /// The predicted `δ` of (master12)/(MV master), if it exists (not for γ₀).
+    pub fn predicted_delta(&self) -> Option<R> {
+        let p = self.problem;
+        delta(&p.inertia, &self.c0.params, p.gamma, &p.h).ok()
+    }
+
+    /// The row of the next iterate `m` (the first call takes `M₀`).
+    pub fn row(&mut self, m: Vec3<R>) -> Result<Row<R>, CliError> {
+        let (n, p) = (self.n, self.problem);
+        let t = p.h.clone() * p.h.from_i64(n as i64);
+        let sol =
+            continuous_from(&self.c0, &t).map_err(|e| CliError::new(format!("solution: {e}")))?;
         let phase = if n == 0 {
             None
         } else {
-            let c = phi_near(&p.inertia, &m, &prev_phi)
+            let c = phi_near(&p.inertia, &m, &self.prev_phi)
                 .map_err(|e| CliError::new(format!("step {n}: {e}")))?;
-            let bar = (c.phi.clone() + prev_phi.clone()) * half.clone();
-            let d = (c.phi.clone() - prev_phi.clone()) * half.clone();
-            prev_phi = c.phi;
+            let half = p.h.from_ratio(1, 2);
+            let bar = (c.phi.clone() + self.prev_phi.clone()) * half.clone();
+            let d = (c.phi.clone() - self.prev_phi.clone()) * half;
+            self.prev_phi = c.phi;
             Some((bar, d))
         };
-        rows.push(Row {
+        self.n += 1;
+        Ok(Row {
             n,
             t,
             m,
             sol,
             phase,
-        });
+        })
     }
-    Ok((rows, pred))
 }
 
-fn io(path: &std::path::Path) -> impl Fn(std::io::Error) -> CliError + '_ {
-    move |e| CliError::new(format!("writing {}: {e}", path.display()))
+/// Writes one CSV row.
+fn csv_row<R: Real>(w: &mut impl Write, r: &Row<R>, d: usize) -> std::io::Result<()> {
+    let (pb, dp) = match &r.phase {
+        Some((a, b)) => (a.to_decimal(d), b.to_decimal(d)),
+        None => (String::new(), String::new()),
+    };
+    let m = r.m.0.iter().chain(r.sol.0.iter()).map(|x| x.to_decimal(d));
+    let cells: Vec<String> = m.collect();
+    writeln!(
+        w,
+        "{},{},{},{},{}",
+        r.n,
+        r.t.to_decimal(d),
+        cells.join(","),
+        pb,
+        dp
+    )
 }
 
-fn write_csv<R: Real>(path: &std::path::Path, rows: &[Row<R>], d: usize) -> Result<(), CliError> {
-    let f = std::fs::File::create(path).map_err(io(path))?;
-    let mut w = std::io::BufWriter::new(f);
-    writeln!(w, "n,t,M1,M2,M3,sol1,sol2,sol3,phibar,dphi").map_err(io(path))?;
-    for r in rows {
-        let (pb, dp) = match &r.phase {
-            Some((a, b)) => (a.to_decimal(d), b.to_decimal(d)),
-            None => (String::new(), String::new()),
+/// Where the rows go: standard output (iterates `n ≥ 1`), the CSV file, the rows kept
+/// for the SVG figure.
+struct Sinks<'p> {
+    out: BufWriter<std::io::StdoutLock<'static>>,
+    csv: Option<(BufWriter<std::fs::File>, &'p Path)>,
+    kept: Option<Vec<Row<f64>>>,
+    digits: usize,
+}
+
+impl<'p> Sinks<'p> {
+    fn open(args: &'p Args) -> Result<Self, CliError> {
+        let csv = match &args.csv {
+            Some(p) => {
+                let f = std::fs::File::create(p).map_err(write_error(p.display()))?;
+                let mut w = BufWriter::new(f);
+                writeln!(w, "n,t,M1,M2,M3,sol1,sol2,sol3,phibar,dphi")
+                    .map_err(write_error(p.display()))?;
+                Some((w, p.as_path()))
+            }
+            None => None,
         };
-        writeln!(
-            w,
-            "{},{},{},{},{},{},{},{},{},{}",
-            r.n,
-            r.t.to_decimal(d),
-            r.m.0[0].to_decimal(d),
-            r.m.0[1].to_decimal(d),
-            r.m.0[2].to_decimal(d),
-            r.sol.0[0].to_decimal(d),
-            r.sol.0[1].to_decimal(d),
-            r.sol.0[2].to_decimal(d),
-            pb,
-            dp
-        )
-        .map_err(io(path))?;
+        Ok(Sinks {
+            out: stdout(),
+            csv,
+            kept: args.svg.is_some().then(Vec::new),
+            digits: digits_for(args.step.bits),
+        })
     }
-    Ok(())
-}
 
-fn range(v: impl Iterator<Item = f64>) -> (f64, f64) {
-    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for x in v {
-        lo = lo.min(x);
-        hi = hi.max(x);
+    fn emit<R: Real>(&mut self, r: Row<R>) -> Result<(), CliError> {
+        if r.n > 0 {
+            write_point(&mut self.out, &r.m, self.digits)
+                .map_err(write_error("standard output"))?;
+        }
+        if let Some((w, p)) = &mut self.csv {
+            csv_row(w, &r, self.digits).map_err(write_error(p.display()))?;
+        }
+        if let Some(k) = &mut self.kept {
+            let f = |v: &Vec3<R>| Vec3(std::array::from_fn(|i| v.0[i].to_f64()));
+            k.push(Row {
+                n: r.n,
+                t: r.t.to_f64(),
+                m: f(&r.m),
+                sol: f(&r.sol),
+                phase: r.phase.map(|(a, b)| (a.to_f64(), b.to_f64())),
+            });
+        }
+        Ok(())
     }
-    if !lo.is_finite() {
-        return (0.0, 1.0);
-    }
-    let pad = ((hi - lo) * 0.05).max(1e-12 * hi.abs().max(1.0));
-    (lo - pad, hi + pad)
-}
 
-fn write_svg<R: Real>(
-    path: &std::path::Path,
-    rows: &[Row<R>],
-    pred: Option<f64>,
-) -> Result<(), CliError> {
-    use plotters::prelude::*;
-    let err = |e: String| CliError::new(format!("writing {}: {e}", path.display()));
-    let root = SVGBackend::new(path, (900, 900)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(e.to_string()))?;
-    let (top, bottom) = root.split_vertically(450);
-    let ts: Vec<f64> = rows.iter().map(|r| r.t.to_f64()).collect();
-    let (t0, t1) = range(ts.iter().copied());
-    let (y0, y1) = range(
-        rows.iter()
-            .flat_map(|r| r.m.0.iter().chain(r.sol.0.iter()).map(|x| x.to_f64())),
-    );
-    let mut ch = ChartBuilder::on(&top)
-        .margin(20)
-        .x_label_area_size(30)
-        .y_label_area_size(50)
-        .build_cartesian_2d(t0..t1, y0..y1)
-        .map_err(|e| err(e.to_string()))?;
-    ch.configure_mesh()
-        .x_desc("t")
-        .y_desc("M1 (red), M2 (green), M3 (blue): sol lines, iterates dots")
-        .draw()
-        .map_err(|e| err(e.to_string()))?;
-    let colors = [RED, GREEN, BLUE];
-    for (k, col) in colors.iter().enumerate() {
-        ch.draw_series(LineSeries::new(
-            rows.iter().map(|r| (r.t.to_f64(), r.sol.0[k].to_f64())),
-            col,
-        ))
-        .map_err(|e| err(e.to_string()))?;
-        ch.draw_series(
-            rows.iter()
-                .map(|r| Circle::new((r.t.to_f64(), r.m.0[k].to_f64()), 2, col.filled())),
-        )
-        .map_err(|e| err(e.to_string()))?;
+    fn finish(mut self, svg: Option<&Path>, pred: Option<f64>) -> Result<(), CliError> {
+        self.out.flush().map_err(write_error("standard output"))?;
+        if let Some((mut w, p)) = self.csv.take() {
+            w.flush().map_err(write_error(p.display()))?;
+        }
+        if let (Some(path), Some(rows)) = (svg, &self.kept) {
+            let text = super::orbit_svg::render(rows, pred)
+                .map_err(|e| CliError::new(format!("drawing {}: {e}", path.display())))?;
+            std::fs::write(path, text).map_err(write_error(path.display()))?;
+        }
+        Ok(())
     }
-    let ph: Vec<(f64, f64)> = rows
-        .iter()
-        .filter_map(|r| r.phase.as_ref().map(|(a, b)| (a.to_f64(), b.to_f64())))
-        .collect();
-    let (x0, x1) = range(ph.iter().map(|p| p.0));
-    let (d0, d1) = range(ph.iter().map(|p| p.1).chain(pred));
-    let mut ch2 = ChartBuilder::on(&bottom)
-        .margin(20)
-        .x_label_area_size(30)
-        .y_label_area_size(80)
-        .build_cartesian_2d(x0..x1, d0..d1)
-        .map_err(|e| err(e.to_string()))?;
-    ch2.configure_mesh()
-        .x_desc("phibar")
-        .y_desc("dphi (dots); predicted delta (red line)")
-        .draw()
-        .map_err(|e| err(e.to_string()))?;
-    ch2.draw_series(ph.iter().map(|p| Circle::new(*p, 2, BLACK.filled())))
-        .map_err(|e| err(e.to_string()))?;
-    if let Some(d) = pred {
-        ch2.draw_series(LineSeries::new(vec![(x0, d), (x1, d)], &RED))
-            .map_err(|e| err(e.to_string()))?;
-    }
-    root.present().map_err(|e| err(e.to_string()))?;
-    Ok(())
 }
 
 fn run_generic<R: Real>(like: R, args: &Args) -> Result<i32, CliError> {
-    let (rows, pred) = compute(&like, &args.step)?;
-    let d = digits_for(args.step.bits);
-    {
-        let stdout = std::io::stdout();
-        let mut out = std::io::BufWriter::new(stdout.lock());
-        for r in rows.iter().skip(1) {
-            writeln!(
-                out,
-                "{} {} {}",
-                r.m.0[0].to_decimal(d),
-                r.m.0[1].to_decimal(d),
-                r.m.0[2].to_decimal(d)
-            )
-            .map_err(|e| CliError::new(format!("writing output: {e}")))?;
-        }
+    let p = parse(&like, &args.step)?;
+    let mut table = Table::new(&p)?;
+    let pred = table.predicted_delta().map(|x| x.to_f64());
+    let mut sinks = Sinks::open(args)?;
+    sinks.emit(table.row(p.m0.clone())?)?;
+    for m in iterates(&p, args.step.steps) {
+        sinks.emit(table.row(m?)?)?;
     }
-    if let Some(p) = &args.csv {
-        write_csv(p, &rows, d)?;
-    }
-    if let Some(p) = &args.svg {
-        write_svg(p, &rows, pred.map(|x| x.to_f64()))?;
-    }
+    sinks.finish(args.svg.as_deref(), pred)?;
     Ok(0)
 }
 
 /// Runs the subcommand; returns the exit status.
 pub fn run(args: Args) -> Result<i32, CliError> {
     check_bits(args.step.bits)?;
+    if args.svg.is_some() && args.step.steps > MAX_SVG_STEPS {
+        return Err(CliError::new(format!(
+            "--svg draws at most {MAX_SVG_STEPS} steps, got --steps {} (use --csv for longer orbits)",
+            args.step.steps
+        )));
+    }
     if args.step.bits == 53 {
         run_generic(0.0f64, &args)
     } else {

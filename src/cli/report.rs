@@ -7,6 +7,7 @@ use crate::claims::verdict::{ClaimResult, Options};
 use crate::report::{write_reports, Convention, ReportInput, Section};
 use clap::Parser;
 use std::collections::BTreeMap;
+use std::io::Write;
 use std::path::Path;
 
 /// Arguments of `eulertop report`.
@@ -21,7 +22,7 @@ pub struct Args {
     /// Catalogue directory.
     #[arg(long, default_value = "identities")]
     pub catalogue: String,
-    /// Number of worker threads (default: all cores).
+    /// Number of worker threads, 1..=1024 (default: all cores).
     #[arg(long)]
     pub jobs: Option<usize>,
     /// A README whose verdict-count block (between `<!-- verdicts -->` and
@@ -74,37 +75,109 @@ fn read_conventions(dir: &Path) -> Result<Vec<Convention>, CliError> {
         .collect())
 }
 
-/// Rewrites the verdict block of a README.
-pub fn update_readme(path: &Path, results: &[ClaimResult]) -> Result<(), CliError> {
-    let text =
-        std::fs::read_to_string(path).map_err(|e| CliError(format!("{}: {e}", path.display())))?;
+/// The verdict block of a README: its text and the byte range of the block (from the
+/// opening marker to the end of the closing one).
+pub struct ReadmeBlock {
+    path: std::path::PathBuf,
+    text: String,
+    block: std::ops::Range<usize>,
+}
+
+/// Reads `path` and finds its verdict block (`<!-- verdicts -->` … `<!-- /verdicts -->`);
+/// errors name `--readme`.
+pub fn read_readme(path: &Path) -> Result<ReadmeBlock, CliError> {
+    let shown = path.display();
+    let skip = "pass --readme '' to skip the README update";
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| CliError(format!("--readme {shown}: {e}; {skip}")))?;
     let (open, close) = ("<!-- verdicts -->", "<!-- /verdicts -->");
     let (Some(a), Some(b)) = (text.find(open), text.find(close)) else {
         return Err(CliError(format!(
-            "{}: no '{open}' … '{close}' block to update",
-            path.display()
+            "--readme {shown}: no '{open}' … '{close}' block to update; {skip}"
         )));
     };
     if b < a {
         return Err(CliError(format!(
-            "{}: verdict block markers out of order",
-            path.display()
+            "--readme {shown}: verdict block markers out of order"
         )));
     }
-    let block = format!(
-        "{open}\n{}.\n{close}",
-        crate::report::markdown::counts_line(results)
-    );
-    let new = format!("{}{}{}", &text[..a], block, &text[b + close.len()..]);
-    if new != text {
-        std::fs::write(path, new).map_err(|e| CliError(format!("{}: {e}", path.display())))?;
+    Ok(ReadmeBlock {
+        path: path.to_path_buf(),
+        text,
+        block: a..b + close.len(),
+    })
+}
+
+impl ReadmeBlock {
+    /// Rewrites the block with the verdict counts of `results` (the file is left
+    /// untouched when nothing changes).
+    pub fn update(&self, results: &[ClaimResult]) -> Result<(), CliError> {
+        let block = format!(
+            "<!-- verdicts -->\n{}.\n<!-- /verdicts -->",
+            crate::report::markdown::counts_line(results)
+        );
+        let (a, b) = (self.block.start, self.block.end);
+        let new = format!("{}{}{}", &self.text[..a], block, &self.text[b..]);
+        if new != self.text {
+            std::fs::write(&self.path, new).map_err(super::write_error(self.path.display()))?;
+        }
+        Ok(())
+    }
+}
+
+/// Checks `--out` before anything is written: not empty, not an existing file, and not
+/// a directory whose `README.md` is the README given by `--readme`.
+fn check_out(out: &Path, readme: Option<&ReadmeBlock>) -> Result<(), CliError> {
+    if out.as_os_str().is_empty() {
+        return Err(CliError("--out '' names no directory".into()));
+    }
+    if out.exists() && !out.is_dir() {
+        return Err(CliError(format!(
+            "--out {}: exists and is not a directory",
+            out.display()
+        )));
+    }
+    let same = |a: &Path, b: &Path| match (a.canonicalize(), b.canonicalize()) {
+        (Ok(x), Ok(y)) => x == y,
+        _ => false,
+    };
+    if let Some(r) = readme {
+        if same(&out.join("README.md"), &r.path) {
+            return Err(CliError(format!(
+                "--out {} would overwrite the README given by --readme {}",
+                out.display(),
+                r.path.display()
+            )));
+        }
     }
     Ok(())
 }
 
-/// Runs `eulertop report`.
+fn sections(cat: &crate::claims::catalogue::Catalogue) -> Vec<Section> {
+    cat.sections
+        .iter()
+        .map(|(file, number, title)| Section {
+            stem: Path::new(file)
+                .file_stem()
+                .and_then(|s| s.to_str())
+                .unwrap_or(file)
+                .to_string(),
+            number: number.clone(),
+            title: title.clone(),
+        })
+        .collect()
+}
+
+/// Runs `eulertop report`: every argument is checked before anything is written.
 pub fn run(args: Args) -> Result<i32, CliError> {
     let bits = parse_bits(&args.bits)?;
+    super::check_jobs(args.jobs)?;
+    let readme = match args.readme.as_str() {
+        "" => None,
+        r => Some(read_readme(Path::new(r))?),
+    };
+    let out = Path::new(&args.out);
+    check_out(out, readme.as_ref())?;
     let cat = load(&args.catalogue)?;
     let dir = Path::new(&args.catalogue);
     let macros = match std::fs::read_to_string(dir.join("paper-macros.tex")) {
@@ -117,26 +190,13 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         exact: true,
     };
     let results = run_with_progress(&cat, &opts, &|_| true, cat.claims.len(), args.jobs)?;
-    let sections = cat
-        .sections
-        .iter()
-        .map(|(file, number, title)| Section {
-            stem: Path::new(file)
-                .file_stem()
-                .and_then(|s| s.to_str())
-                .unwrap_or(file)
-                .to_string(),
-            number: number.clone(),
-            title: title.clone(),
-        })
-        .collect();
     let command = if args.bits == "53,128,256,512,1024" {
         "eulertop report".to_string()
     } else {
         format!("eulertop report --bits {}", args.bits)
     };
     let input = ReportInput {
-        sections,
+        sections: sections(&cat),
         results: &results,
         conventions,
         macros,
@@ -147,19 +207,19 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             .map(|(f, c)| (f.to_string(), c.to_string()))
             .collect(),
     };
-    let out = Path::new(&args.out);
     let written = write_reports(&input, out)
         .map_err(|e| CliError(format!("cannot write reports to {}: {e}", out.display())))?;
     crate::report::figures::model::write_all(&out.join("figures"))
         .map_err(|e| CliError(format!("cannot write figures: {e}")))?;
-    if !args.readme.is_empty() {
-        update_readme(Path::new(&args.readme), &results)?;
+    if let Some(r) = &readme {
+        r.update(&results)?;
     }
-    eprintln!(
+    let summary = format!(
         "wrote {} files to {}; {}",
         written.len(),
         out.display(),
         crate::report::markdown::counts_line(&results)
     );
+    let _ = writeln!(std::io::stderr(), "{summary}");
     Ok(0)
 }

@@ -6,7 +6,7 @@ use crate::claims::catalogue::{latex_labels, load_dir, Catalogue};
 use crate::claims::verdict::{coverage_table, verify, ClaimResult, Options, Rung, Verdict};
 use clap::Parser;
 use serde::Serialize;
-use std::io::IsTerminal;
+use std::io::{IsTerminal, Write};
 use std::path::Path;
 
 /// Arguments of `eulertop verify`.
@@ -21,7 +21,7 @@ pub struct Args {
     /// Output format: text or json.
     #[arg(long, default_value = "text")]
     pub format: String,
-    /// Number of worker threads (default: all cores).
+    /// Number of worker threads, 1..=1024 (default: all cores).
     #[arg(long)]
     pub jobs: Option<usize>,
     /// Catalogue directory.
@@ -175,6 +175,7 @@ pub fn run_with_progress(
             b.inc(1);
         }
     };
+    super::check_jobs(jobs)?;
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(jobs.unwrap_or(0))
         .build()
@@ -233,17 +234,26 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             coverage,
         };
         let s = serde_json::to_string_pretty(&rep).map_err(|e| CliError(e.to_string()))?;
-        println!("{s}");
+        super::print(&s)?;
     } else {
-        print_text(&results, &bits, &sum);
-        if args.coverage {
-            print_coverage(&results);
-        }
+        let mut out = super::stdout();
+        let written = print_text(&mut out, &results, &bits, &sum).and_then(|()| {
+            if args.coverage {
+                print_coverage(&mut out, &results)?;
+            }
+            out.flush()
+        });
+        written.map_err(super::write_error("standard output"))?;
     }
     Ok(code)
 }
 
-fn print_text(results: &[ClaimResult], bits: &[u32], sum: &Summary) {
+fn print_text(
+    w: &mut impl Write,
+    results: &[ClaimResult],
+    bits: &[u32],
+    sum: &Summary,
+) -> std::io::Result<()> {
     let idw = results.iter().map(|r| r.id.len()).max().unwrap_or(2).max(2);
     let locw = results
         .iter()
@@ -258,7 +268,7 @@ fn print_text(results: &[ClaimResult], bits: &[u32], sum: &Summary) {
     for b in bits {
         head.push_str(&format!("  {:>10}", format!("{b} bits")));
     }
-    println!("{head}");
+    writeln!(w, "{head}")?;
     for r in results {
         let loc: String = r.location.chars().take(40).collect();
         let mark = if r.as_expected { "" } else { " !" };
@@ -280,35 +290,40 @@ fn print_text(results: &[ClaimResult], bits: &[u32], sum: &Summary) {
             };
             line.push_str(&format!("  {cell:>10}"));
         }
-        println!("{line}");
+        writeln!(w, "{line}")?;
         if !r.as_expected {
-            println!("    reason: {}", r.reason);
+            writeln!(w, "    reason: {}", r.reason)?;
             if let Some(c) = &r.counterexample {
                 let pt: Vec<String> = c
                     .point
                     .iter()
                     .map(|n| format!("{} = {}", n.name, n.value))
                     .collect();
-                println!("    counterexample: {}", pt.join(", "));
-                println!("      lhs = {}\n      rhs = {}", c.lhs, c.rhs);
+                writeln!(w, "    counterexample: {}", pt.join(", "))?;
+                writeln!(w, "      lhs = {}\n      rhs = {}", c.lhs, c.rhs)?;
             }
             for f in r.failures.iter().take(2) {
-                println!("    failed sample ({} bits): {}", f.bits, f.message);
+                writeln!(w, "    failed sample ({} bits): {}", f.bits, f.message)?;
             }
         }
     }
     if sum.failed_samples > 0 {
-        println!("\nsamples that could not be evaluated (reported, replaced, never counted):");
+        writeln!(
+            w,
+            "\nsamples that could not be evaluated (reported, replaced, never counted):"
+        )?;
         for r in results.iter().filter(|r| !r.failures.is_empty()) {
-            println!(
+            writeln!(
+                w,
                 "  {}: {} (first: {})",
                 r.id,
                 r.failures.len(),
                 r.failures[0].message
-            );
+            )?;
         }
     }
-    println!(
+    writeln!(
+        w,
         "\n{} claims: {} holds, {} proved, {} refuted, {} inconclusive, {} definitions; {} not as expected{}",
         sum.claims,
         sum.holds,
@@ -322,26 +337,28 @@ fn print_text(results: &[ClaimResult], bits: &[u32], sum: &Summary) {
         } else {
             format!(": {}", sum.unexpected.join(", "))
         }
-    );
+    )
 }
 
-fn print_coverage(results: &[ClaimResult]) {
+fn print_coverage(w: &mut impl Write, results: &[ClaimResult]) -> std::io::Result<()> {
     let labels = paper_labels();
     let table = coverage_table(&labels, results);
     let covered = table.iter().filter(|(_, ids)| !ids.is_empty()).count();
-    println!(
+    writeln!(
+        w,
         "\nCoverage: {covered} of {} paper labels have claims",
         labels.len()
-    );
+    )?;
     for (l, ids) in &table {
         if ids.is_empty() {
-            println!("  {l:24}  (no claim)");
+            writeln!(w, "  {l:24}  (no claim)")?;
         } else {
             let s: Vec<String> = ids
                 .iter()
                 .map(|(i, v)| format!("{i} [{}]", v.name()))
                 .collect();
-            println!("  {l:24}  {}", s.join(", "));
+            writeln!(w, "  {l:24}  {}", s.join(", "))?;
         }
     }
+    Ok(())
 }

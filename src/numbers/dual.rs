@@ -142,6 +142,7 @@ impl<S: Scalar> Scalar for Dual<S> {
 }
 
 impl<R: Real> Real for Dual<R> {
+    const FIXED: bool = R::FIXED;
     fn prec(&self) -> u32 {
         self.v.prec()
     }

@@ -50,6 +50,7 @@ impl Scalar for f64 {
 }
 
 impl Real for f64 {
+    const FIXED: bool = true;
     fn prec(&self) -> u32 {
         53
     }

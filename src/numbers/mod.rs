@@ -138,6 +138,16 @@ pub trait Scalar:
 
 /// An ordered real scalar with elementary functions.
 pub trait Real: Scalar + PartialOrd {
+    /// Is the precision fixed by the type (`f64`, `Dual<f64>`), so that algorithms get
+    /// no guard bits and every rounding counts?  `false` for `rug::Float`, whose
+    /// precision travels with each value and can be raised for intermediate results.
+    ///
+    /// ```
+    /// use eulertop::numbers::{Dual, Real};
+    /// assert!(<f64 as Real>::FIXED && <Dual<f64> as Real>::FIXED);
+    /// assert!(!<rug::Float as Real>::FIXED);
+    /// ```
+    const FIXED: bool;
     /// Precision in bits (53 for `f64`).
     fn prec(&self) -> u32;
     /// The same value rounded to `bits` of precision (identity for `f64`).

@@ -93,6 +93,7 @@ macro_rules! unary {
 }
 
 impl Real for Float {
+    const FIXED: bool = false;
     fn prec(&self) -> u32 {
         Float::prec(self)
     }

@@ -1,6 +1,6 @@
 //! Complete elliptic integrals of the first kind by the arithmetic–geometric mean.
 
-use super::{check_modulus, SpecialError, GUARD};
+use super::{check_modulus_below_one, SpecialError, GUARD};
 use crate::numbers::Real;
 
 /// `AGM(a, b)` for `a, b > 0` at the precision of `a` (DLMF 19.8.1).  Quadratic
@@ -49,7 +49,7 @@ pub(crate) fn complementary<R: Real>(k: &R) -> R {
 /// assert!(ellipk(&1.0_f64).is_err());
 /// ```
 pub fn ellipk<R: Real>(k: &R) -> Result<R, SpecialError> {
-    check_modulus(k)?;
+    check_modulus_below_one(k)?;
     let n = k.prec();
     let kw = k.with_prec(n + GUARD);
     let m = agm(&kw.one(), &complementary(&kw))?;
@@ -73,7 +73,7 @@ pub fn ellipk<R: Real>(k: &R) -> Result<R, SpecialError> {
 /// assert!(ellipkp(&0.0_f64).is_err());
 /// ```
 pub fn ellipkp<R: Real>(k: &R) -> Result<R, SpecialError> {
-    check_modulus(k)?;
+    check_modulus_below_one(k)?;
     if k.is_zero() {
         return Err(SpecialError::Pole("K'(k) is infinite at k = 0".into()));
     }

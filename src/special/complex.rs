@@ -1,7 +1,8 @@
 //! sn, cn, dn of a complex argument with a real modulus.
 
-use super::jacobi::sncndn_at;
-use super::{check_finite, check_modulus, show, SpecialError, GUARD};
+use super::jacobi::{sncndn_imp, Spec};
+use super::Modulus;
+use super::{check_finite, check_modulus_below_one, show, SpecialError, GUARD};
 use crate::numbers::{ComplexScalar, Real, Scalar};
 
 /// `(sn, cn, dn)(u, k)` for complex `u = x + iy` and real **modulus** `0 ≤ k < 1`.
@@ -38,7 +39,7 @@ use crate::numbers::{ComplexScalar, Real, Scalar};
 /// assert!(e2.re.abs() < 1e-15 && e2.im.abs() < 1e-15);
 /// ```
 pub fn sncndn_complex<C: ComplexScalar>(u: &C, k: &C::R) -> Result<(C, C, C), SpecialError> {
-    check_modulus(k)?;
+    check_modulus_below_one(k)?;
     let (x, y) = (u.re(), u.im());
     check_finite(&x, "Re u")?;
     check_finite(&y, "Im u")?;
@@ -64,8 +65,8 @@ pub fn sncndn_complex<C: ComplexScalar>(u: &C, k: &C::R) -> Result<(C, C, C), Sp
         let dn = out(xw.one(), xw.zero())?;
         return Ok((sn, cn, dn));
     }
-    let (s, c, d) = sncndn_at(&x, k, false, n)?;
-    let (s1, c1, d1) = sncndn_at(&y, k, true, n)?;
+    let (s, c, d) = sncndn_imp(&x, Spec::Modulus(k, Modulus::K), n)?;
+    let (s1, c1, d1) = sncndn_imp(&y, Spec::Modulus(k, Modulus::Complement), n)?;
     let p = |v: C::R| v.with_prec(w);
     let (s, c, d, s1, c1, d1) = (p(s), p(c), p(d), p(s1), p(c1), p(d1));
     let k2 = k.with_prec(w).sqr();

@@ -2,7 +2,7 @@
 
 use super::agm::complementary;
 use super::reduce::reduce_dd;
-use super::{check_finite, check_modulus, show, SpecialError, GUARD};
+use super::{check_finite, check_modulus_below_one, show, SpecialError, GUARD};
 use crate::numbers::Real;
 
 /// π as an unevaluated sum of three doubles.
@@ -86,7 +86,7 @@ fn f_agm<R: Real>(q0: i64, r0: &R, kp: &R) -> Result<R, SpecialError> {
 /// assert!((f3 - 3.0 * kk).abs() < 1e-14);
 /// ```
 pub fn ellipf<R: Real>(phi: &R, k: &R) -> Result<R, SpecialError> {
-    check_modulus(k)?;
+    check_modulus_below_one(k)?;
     check_finite(phi, "phi")?;
     let n = phi.prec().max(k.prec());
     let ratio = phi.to_f64() / std::f64::consts::FRAC_PI_2;

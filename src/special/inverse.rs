@@ -1,7 +1,7 @@
 //! Inverse of the Jacobi functions: the argument from `(sn, cn, dn)`.
 
 use super::ellint::ellipf;
-use super::{check_finite, check_modulus, show, SpecialError};
+use super::{check_finite, check_modulus_below_one, show, SpecialError};
 use crate::numbers::Real;
 
 /// The real argument `u ∈ (−2K, 2K]` with `sn(u,k) = sn` and `cn(u,k) = cn`
@@ -24,7 +24,7 @@ use crate::numbers::Real;
 /// assert!(jacobi_inverse(&0.6_f64, &0.6, &0.9, &0.8).is_err()); // sn² + cn² ≠ 1
 /// ```
 pub fn jacobi_inverse<R: Real>(sn: &R, cn: &R, dn: &R, k: &R) -> Result<R, SpecialError> {
-    check_modulus(k)?;
+    check_modulus_below_one(k)?;
     check_finite(sn, "sn")?;
     check_finite(cn, "cn")?;
     check_finite(dn, "dn")?;

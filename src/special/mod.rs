@@ -3,9 +3,13 @@
 //!
 //! **Modulus convention.** Every function takes the *modulus* `k` (as in the paper and
 //! in DLMF §22.2), **not** the parameter `m = k²` used by mpmath, SciPy and
-//! Abramowitz–Stegun.  The complementary modulus is `k' = √(1−k²)`, computed as
-//! `√((1−k)(1+k))` so that it keeps full relative accuracy as `k → 1`.
-//! The domain is `0 ≤ k < 1`; anything else (including NaN) is an error, never a panic.
+//! Abramowitz–Stegun (for that, [`sncndn_m`]).  The complementary modulus is
+//! `k' = √(1−k²)`, computed as `√((1−k)(1+k))` so that it keeps full relative accuracy
+//! as `k → 1`.  The Jacobi functions of a real argument take any `k ≥ 0` (`k = 1`:
+//! `tanh`, `sech`, DLMF 22.5.ii; `k > 1`: DLMF 22.17.2–4) and [`sncndn_m`] any real
+//! `m` (`m < 0`: imaginary modulus, DLMF 22.17.6–8); the elliptic integrals and the
+//! complex argument take `0 ≤ k < 1`.  Anything else (including NaN) is an error,
+//! never a panic.
 //!
 //! All functions are written once, generically over [`Real`] / [`ComplexScalar`](crate::numbers::ComplexScalar):
 //! they run on `f64`, on `rug::Float` at any precision, on complex pairs and on
@@ -14,10 +18,29 @@
 //!
 //! # Algorithms (and why)
 //!
-//! * **Moduli chain** (module `landen`): the descending Landen / Gauss transformation
-//!   `k₁ = k²/(1+k')²`, `k₁' = 2√k'/(1+k')`, `1−k₁ = 2k'/(1+k')` (DLMF 22.7.1–3,
-//!   19.8.12), iterated until `k_N⁴` is below the working epsilon (quadratic
-//!   convergence: 3 steps for k = 0.8 in double, ~10 at 4096 bits).  The quarter period
+//! One function, `jacobi::sncndn_imp`, chooses the algorithm, trying the special cases
+//! in order (as Boost's `jacobi_elliptic` does): the modulus transformations of DLMF
+//! §22.17 to `κ ∈ [0, 1]`; `κ = 0` (DLMF 22.5.3); `κ = 1` (DLMF 22.5.ii); then the
+//! fixed-precision theta bottoms or the multi-precision Landen chain.  The bottoms
+//! (`Bottom`) are cross-checked against each other and MPFR at random moduli
+//! (`special/tests.rs`).
+//!
+//! * **Fixed precision** (`Real::FIXED`: `f64`, `Dual<f64>`; no guard bits, so every
+//!   rounding counts and speed matters; module `theta`): sn, cn, dn as theta quotients
+//!   (DLMF 22.2.4) of a nome `q ≤ e^{−π}` — the modulus itself for `κ² ≤ ½`, else the
+//!   complementary modulus at imaginary argument (DLMF Table 22.6.1) — written as
+//!   `leading factor × (1 + small)` with the leading factor `sin ζ`, `cos ζ`, `tanh y`
+//!   or `sech y`, so every output keeps relative accuracy next to its zeros.  Every
+//!   per-modulus quantity (the nome from Jacobi's series in `ε = (1−√κ')/(2(1+√κ'))`,
+//!   `π/(2K)` from two AGM steps, the period at imaginary argument from a table-driven
+//!   logarithm) is computed in `f64` / double-double (module `dd`), so a new modulus
+//!   costs about as much as one evaluation; the last few are cached per thread.
+//!   Measured (dense sweeps, `reports/accuracy.md`): absolute error below 2 ε for every
+//!   `k`.
+//! * **Moduli chain** (module `landen`, multi-precision): the descending Landen / Gauss
+//!   transformation `k₁ = k²/(1+k')²`, `k₁' = 2√k'/(1+k')` (DLMF 22.7.1–3, 19.8.12),
+//!   iterated until `k_N⁴` is below the working epsilon (quadratic convergence, about
+//!   10 steps at 4096 bits).  The quarter period
 //!   follows as `K = (π/2)·Π(1+k_n)·(1+k_N²/4)`.
 //! * **sn, cn, dn of a real argument, multi-precision** (module `jacobi`): the argument
 //!   is reduced to `u = jK + t`, `|t| ≤ K/2`; at the bottom of the chain
@@ -29,43 +52,14 @@
 //!   `j mod 4` is applied with the quarter-period shifts DLMF 22.4.3
 //!   (`sn(t+K) = cd t`, `cn(t+K) = −k' sd t`, `dn(t+K) = k' nd t`), which keep relative
 //!   accuracy next to the zeros (the complex case needs that near its poles).
-//! * **sn, cn, dn of a real argument, fixed precision** (`f64`, `Dual<f64>`; no guard
-//!   bits, so every rounding counts and speed matters):
-//!   - `j = round(u/K)` and `r = u − jK`, `|r| ≤ K/2`, formed exactly (Cody–Waite with a
-//!     triple-double `K`, module `reduce`);
-//!   - the chain is descended only until the nome `q = exp(−πK'/K)` is at most 0.06
-//!     (0.09 after two levels); each step squares the nome, so `k ≤ 0.8` needs at most
-//!     one level.  At the bottom the nome series DLMF 22.11.1–3 is summed as polynomials
-//!     in `x = sin²v`, `v = πt/(2K)` (module `fourier`): `sn = sin v·P(x)`,
-//!     `cn = cos v·(1 + x Q₁(x))`, `dn = 1 + x R₁(x)`, with coefficients summed in
-//!     192-bit MPFR per modulus and one `sin_cos` from the fdlibm kernel polynomials
-//!     (`Real::sin_cos_kernel`).  For odd `j`, `sin v = cos v_r`, `cos v = −sin v_r`
-//!     (`v = π/2 + v_r`), so no quotient is needed at the end; the levels above the
-//!     series are climbed with DLMF 22.7.1–3 written as "value + small correction",
-//!     with `1 − dn` tracked next to `dn`;
-//!   - `k` near 1 (`q > 0.2`, `k ≳ 0.986`): no Landen level at all; the series of the
-//!     complementary modulus (nome `q' = exp(π²/ln q) < 2.2·10⁻³`) at imaginary argument,
-//!     through Jacobi's imaginary transformation (DLMF Table 22.6.1):
-//!     `sn(t,k) = tanh w·P(−y)/Q(−y)`, `cn(t,k) = 1/(cosh w·Q(−y))`, `dn = R(−y)·cn`,
-//!     `w = πt/(2K')`, `y = sinh²w` (all terms positive, no cancellation);
-//!   - tiny `k` (`k⁴ < ε/4`) or tiny `k'` (`k'² < ε/8`, only reached as the
-//!     complementary modulus of a tiny `k` in the complex case): DLMF 22.10.4–6 resp.
-//!     the `tanh`/`sech` expansion DLMF 22.10.7–9 directly, exact to rounding there.
-//!
-//!   Measured (dense sweeps, `reports/accuracy.md`): absolute error below 2 ε for every
-//!   `k` (below 1.9 ε for `k ≥ 0.99`), every output with relative accuracy next to its
-//!   zeros.
-//!   The chain depends only on `k`; the last few chains are cached per thread for
-//!   `f64` and `rug::Float` (typed caches; not for `Dual`, whose derivative parts differ
-//!   per call).
 //! * **Argument reduction.**  For MPFR the working precision is raised to
 //!   `N + 40 + log2(1/k') + log2|j| + (cancellation bits of t)`, adaptively: if `t = u − jK`
 //!   cancels, the reduction is repeated with more bits.  For fixed-precision types
-//!   (`f64`, `Dual<f64>`) `K` is taken as a triple-double from a 200-bit MPFR AGM
-//!   (computed once per modulus) and `t` is formed with error-free transformations
-//!   (Cody–Waite with a 32-bit head for `|j| < 2²⁰`, FMA beyond), so `t` is accurate to
-//!   ~2⁻¹⁰⁰·|u| while the derivative with respect to `k` still flows through the
-//!   generic `K`.
+//!   `ζ = u·π/(2K)` is reduced by the double-double period for `|u/K| ≤ 256`; beyond
+//!   that, or when the reduced argument cancels by more than 20 bits, `t = u − jK` is
+//!   formed with error-free transformations from `K` as a triple-double of a 200-bit
+//!   MPFR AGM (module `reduce`, cached per modulus), while the derivative with respect
+//!   to `k` still flows through the generic `K`.
 //! * **Complex argument** (module `complex`): the addition theorem DLMF 22.8.1–3 with
 //!   Jacobi's imaginary transformation (DLMF Table 22.6.1) in the form of
 //!   Abramowitz–Stegun 16.21.1–4: `sn(x+iy) = (s d₁ + i c d s₁ c₁)/(c₁² + k²s²s₁²)`,
@@ -87,24 +81,29 @@
 //! measured errors (see `reports/accuracy.md`) are below `2^(4−N)` absolute for real
 //! arguments and relative to `max(1,|value|)` for complex ones.  `f64` results are
 //! within a few ulp of 1 in absolute terms (see the report for measured maxima).
-//! Errors are reported as [`SpecialError`]: modulus outside `[0,1)`, non-finite input,
+//! Errors are reported as [`SpecialError`]: modulus outside the domain, non-finite input,
 //! arguments so large that `u/K ≥ 2⁵⁰`, poles (complex argument exactly at a pole,
 //! `K'(0)`), inconsistent input to [`jacobi_inverse`].
 
 mod agm;
+mod cache;
 mod complex;
+mod dd;
 mod ellint;
-mod fourier;
 mod inverse;
 mod jacobi;
 mod landen;
 mod reduce;
+#[cfg(test)]
+mod tests;
+mod theta;
 
 pub use agm::{ellipk, ellipkp};
 pub use complex::sncndn_complex;
 pub use ellint::ellipf;
 pub use inverse::jacobi_inverse;
-pub use jacobi::{am, sncndn, sncndn_many};
+pub use jacobi::{am, sncndn, sncndn_m, sncndn_many};
+pub(crate) use jacobi::{Bottom, Modulus};
 
 use crate::numbers::Real;
 
@@ -112,8 +111,8 @@ use crate::numbers::Real;
 /// naming the offending value.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SpecialError {
-    /// The modulus is not in `[0, 1)` (or is NaN).
-    #[error("modulus k = {0} is outside [0, 1)")]
+    /// The modulus (or parameter) is outside the domain of the function (or is NaN).
+    #[error("modulus {0}")]
     ModulusOutOfRange(String),
     /// The function has a pole at the given argument.
     #[error("pole: {0}")]
@@ -132,18 +131,28 @@ pub enum SpecialError {
     Inconsistent(String),
 }
 
-/// Checks `0 <= k < 1` and finiteness.
+/// Checks that the modulus `k` is finite and `k ≥ 0` (the Jacobi functions of a real
+/// argument take any such `k`).
 #[inline]
 pub(crate) fn check_modulus<R: Real>(k: &R) -> Result<(), SpecialError> {
+    if !k.is_finite() || *k < k.zero() {
+        return Err(modulus_error(k, "[0, ∞)"));
+    }
+    Ok(())
+}
+
+/// Checks `0 ≤ k < 1` and finiteness (elliptic integrals, complex argument).
+#[inline]
+pub(crate) fn check_modulus_below_one<R: Real>(k: &R) -> Result<(), SpecialError> {
     if !k.is_finite() || *k < k.zero() || *k >= k.one() {
-        return Err(modulus_error(k));
+        return Err(modulus_error(k, "[0, 1)"));
     }
     Ok(())
 }
 
 #[cold]
-fn modulus_error<R: Real>(k: &R) -> SpecialError {
-    SpecialError::ModulusOutOfRange(show(k))
+fn modulus_error<R: Real>(k: &R, range: &str) -> SpecialError {
+    SpecialError::ModulusOutOfRange(format!("k = {} is outside {range}", show(k)))
 }
 
 /// Checks that an argument is finite.
@@ -168,12 +177,6 @@ pub(crate) fn show<R: Real>(x: &R) -> String {
     } else {
         format!("{v:e}")
     }
-}
-
-/// Is `x`'s type of fixed precision (`f64`, `Dual<f64>`), i.e. unable to hold `bits`?
-/// Such types get no guard bits and take the fixed-precision algorithms.
-pub(crate) fn is_fixed<R: Real>(x: &R, bits: u32) -> bool {
-    x.with_prec(bits).prec() < bits
 }
 
 /// Guard bits added to the working precision of every multi-precision evaluation.

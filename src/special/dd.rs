@@ -1,0 +1,264 @@
+//! Double-double arithmetic for the fixed-precision types (`f64`, `Dual<f64>`).
+//!
+//! A [`Dd`] is an unevaluated sum `hi + lo` with `hi: R` and `lo: f64`, `|lo| ≲ ulp(hi)`.
+//! The error-free transformations (Knuth's two-sum, Dekker's two-product) act on the
+//! `f64` values (`R::to_f64`), while `hi` is formed with `R`'s own operations, so the
+//! derivative parts of a `Dual` ride along in `hi` (the derivative of `lo`, about
+//! `2⁻⁵³` of the derivative of `hi`, is dropped).  For `R = f64` this is plain
+//! double-double arithmetic at no extra cost.
+//!
+//! References: T. J. Dekker, *A floating-point technique for extending the available
+//! precision*, Numer. Math. 18 (1971); Y. Hida, X. S. Li, D. H. Bailey, *Library for
+//! double-double and quad-double arithmetic* (2007).
+
+use crate::numbers::Real;
+use rug::Float;
+use std::sync::OnceLock;
+
+/// `hi + lo`; see the module docs.
+#[derive(Clone, Debug)]
+pub(crate) struct Dd<R> {
+    pub hi: R,
+    pub lo: f64,
+}
+
+/// `(s, e)` with `s = fl(a + b)` and `s + e = a + b` exactly (Knuth).
+#[inline]
+pub(crate) fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+/// `(p, e)` with `p = fl(a·b)` and `p + e = a·b` exactly: one FMA when the target has
+/// it, Dekker's splitting otherwise (|a|, |b| < 2⁹⁹⁵).
+#[inline]
+pub(crate) fn two_prod(a: f64, b: f64) -> (f64, f64) {
+    let p = a * b;
+    #[cfg(target_feature = "fma")]
+    {
+        (p, a.mul_add(b, -p))
+    }
+    #[cfg(not(target_feature = "fma"))]
+    {
+        let split = |x: f64| {
+            let c = 134_217_729.0 * x; // 2^27 + 1
+            let h = c - (c - x);
+            (h, x - h)
+        };
+        let (ah, al) = split(a);
+        let (bh, bl) = split(b);
+        (p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
+    }
+}
+
+/// `x` with its value replaced by `v` and its derivative parts kept: `v − (x.v − x)`.
+/// For `f64` this is exactly `v` (also for `v = −0`).
+#[inline]
+pub(crate) fn with_value<R: Real>(x: &R, v: f64) -> R {
+    x.from_f64(v) - (x.from_f64(x.to_f64()) - x.clone())
+}
+
+impl<R: Real> Dd<R> {
+    /// `x + 0`.
+    #[inline]
+    pub(crate) fn from(x: R) -> Self {
+        Dd { hi: x, lo: 0.0 }
+    }
+
+    /// The value rounded into `R` (`hi + lo`).
+    #[inline]
+    pub(crate) fn to_r(&self) -> R {
+        self.hi.clone() + self.hi.from_f64(self.lo)
+    }
+
+    /// `hi` as an `f64`.
+    #[inline]
+    pub(crate) fn v(&self) -> f64 {
+        self.hi.to_f64()
+    }
+
+    /// Renormalised so that `hi = fl(hi + lo)`.
+    #[inline]
+    pub(crate) fn norm(&self) -> Self {
+        let (s, e) = two_sum(self.v(), self.lo);
+        Dd {
+            hi: with_value(&self.hi, s),
+            lo: e,
+        }
+    }
+
+    /// `self + o`.
+    #[inline]
+    pub(crate) fn add(&self, o: &Self) -> Self {
+        let (_, e) = two_sum(self.v(), o.v());
+        Dd {
+            hi: self.hi.clone() + o.hi.clone(),
+            lo: e + (self.lo + o.lo),
+        }
+    }
+
+    /// `self + x` for a plain `x`.
+    #[inline]
+    pub(crate) fn add_r(&self, x: &R) -> Self {
+        let (_, e) = two_sum(self.v(), x.to_f64());
+        Dd {
+            hi: self.hi.clone() + x.clone(),
+            lo: e + self.lo,
+        }
+    }
+
+    /// `self · o`.
+    #[inline]
+    pub(crate) fn mul(&self, o: &Self) -> Self {
+        let (a, b) = (self.v(), o.v());
+        let (_, e) = two_prod(a, b);
+        Dd {
+            hi: self.hi.clone() * o.hi.clone(),
+            lo: e + (a * o.lo + self.lo * b),
+        }
+    }
+
+    /// `self · x` for a plain `x`.
+    #[inline]
+    pub(crate) fn mul_r(&self, x: &R) -> Self {
+        let b = x.to_f64();
+        let (_, e) = two_prod(self.v(), b);
+        Dd {
+            hi: self.hi.clone() * x.clone(),
+            lo: e + self.lo * b,
+        }
+    }
+
+    /// `self²`.
+    #[inline]
+    pub(crate) fn sqr(&self) -> Self {
+        self.mul(self)
+    }
+
+    /// `self / o`: one correction of the quotient of the leading parts.
+    #[inline]
+    pub(crate) fn div(&self, o: &Self) -> Self {
+        let hi = self.hi.clone() / o.hi.clone();
+        let (q, b) = (hi.to_f64(), o.v());
+        let (p, e) = two_prod(q, b);
+        let r = ((self.v() - p) - e) + (self.lo - q * o.lo);
+        Dd { hi, lo: r / b }
+    }
+
+    /// `√self` (`self > 0`): one Newton correction of the root of the leading part.
+    #[inline]
+    pub(crate) fn sqrt(&self) -> Self {
+        let hi = self.hi.sqrt();
+        let h = hi.to_f64();
+        let (p, e) = two_prod(h, h);
+        let r = ((self.v() - p) - e) + self.lo;
+        Dd {
+            hi,
+            lo: r / (h + h),
+        }
+    }
+
+    /// `ln self` (`self > 0`, normal): the leading part from `R::ln` (which carries the
+    /// derivative), corrected by the table-driven [`ln_dd`] to about `2⁻⁸⁷`
+    /// absolutely (plus the relative error of `self`).
+    #[inline]
+    pub(crate) fn ln(&self) -> Self {
+        let x = self.v();
+        let hi = self.hi.ln();
+        let (a, b) = ln_dd(x);
+        Dd {
+            lo: (a - hi.to_f64()) + (b + self.lo / x),
+            hi,
+        }
+    }
+}
+
+/// Table for [`ln_dd`]: for `i = 0..1024`, `1/cᵢ` rounded to `f64` (`cᵢ = 1 + (i+½)/1024`)
+/// and `−ln(1/cᵢ)` as a double-double, from MPFR at 160 bits (built once).
+fn ln_table() -> &'static [(f64, f64, f64)] {
+    static TABLE: OnceLock<Vec<(f64, f64, f64)>> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        (0..1024)
+            .map(|i| {
+                let c = 1.0 + (i as f64 + 0.5) / 1024.0;
+                let inv = 1.0 / c;
+                let l = -Float::with_val(160, inv).ln();
+                let hi = l.to_f64();
+                let lo = Float::with_val(160, &l - hi).to_f64();
+                (inv, hi, lo)
+            })
+            .collect()
+    })
+}
+
+/// `ln x` for a positive normal double as a double-double, absolute error about
+/// `2⁻⁸⁷` (plus `2⁻¹⁰⁰·|ln x|`): `x = 2ᵉ·m`, `m ∈ [1, 2)`, `m·(1/cᵢ) = 1 + r` exactly
+/// as a double-double with `|r| ≲ 2⁻¹¹` (table [`ln_table`]), and
+/// `ln x = e·ln 2 − ln(1/cᵢ) + ln(1 + r)` with `ln(1+r) = r − r²/2 + r³/3 − …`
+/// (DLMF 4.6.1), the first two terms in double-double.
+pub(crate) fn ln_dd(x: f64) -> (f64, f64) {
+    const LN2: (f64, f64) = (std::f64::consts::LN_2, 2.319_046_813_846_299_6e-17);
+    let bits = x.to_bits();
+    let e = ((bits >> 52) & 0x7ff) as i64 - 1023;
+    let m = f64::from_bits((bits & ((1u64 << 52) - 1)) | (1023u64 << 52));
+    let i = ((bits >> 42) & 0x3ff) as usize;
+    let (inv, th, tl) = ln_table()[i];
+    let (p, pe) = two_prod(m, inv);
+    let (r, rl) = two_sum(p - 1.0, pe);
+    // ln(1 + r) = r − r²/2 + r³·(1/3 − r/4 + r²/5 − …)
+    let (r2, r2e) = two_prod(r, r);
+    let tail = r * r2 * (1.0 / 3.0 + r * (-0.25 + r * (0.2 + r * (-1.0 / 6.0 + r * (1.0 / 7.0)))));
+    let (h1, l1) = two_sum(r, -0.5 * r2);
+    let l1 = l1 + rl + (-0.5 * r2e - r * rl) + tail;
+    // e·ln 2 + table + ln(1 + r)
+    let (eh, el) = two_prod(e as f64, LN2.0);
+    let (s, se) = two_sum(eh, th);
+    let (s, se2) = two_sum(s, h1);
+    let lo = se + se2 + el + (e as f64) * LN2.1 + tl + l1;
+    two_sum(s, lo)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ln_dd_against_mpfr() {
+        let mut worst = 0f64;
+        let mut x = 1.3e-30_f64;
+        while x < 1e5 {
+            for y in [x, x.next_up(), x * 1.000_976_5, x * 1.707] {
+                let (h, l) = ln_dd(y);
+                let want = Float::with_val(200, y).ln();
+                let err = Float::with_val(200, Float::with_val(200, &want - h) - l)
+                    .abs()
+                    .to_f64();
+                worst = worst.max(err);
+            }
+            x *= 1.37;
+        }
+        assert!(worst < 2f64.powi(-86), "worst ln_dd error {worst:e}");
+    }
+
+    #[test]
+    fn dd_ops_against_mpfr() {
+        let a = Dd::from(0.7_f64).add_r(&1e-17);
+        let b = Dd::from(1.9_f64).add_r(&-3e-17);
+        let mp = |d: &Dd<f64>| Float::with_val(200, d.hi) + d.lo;
+        let (ma, mb) = (mp(&a), mp(&b));
+        let close = |d: Dd<f64>, want: Float| {
+            let e = Float::with_val(200, mp(&d) - &want).abs().to_f64() / want.to_f64().abs();
+            assert!(e < 2f64.powi(-100), "{e:e}");
+        };
+        close(a.mul(&b), Float::with_val(200, &ma * &mb));
+        close(a.div(&b), Float::with_val(200, &ma / &mb));
+        close(a.add(&b), Float::with_val(200, &ma + &mb));
+        close(b.sqrt(), mb.clone().sqrt());
+        let (p, e) = two_prod(0.1, 0.3);
+        assert_eq!(
+            Float::with_val(200, p) + e,
+            Float::with_val(200, 0.1) * Float::with_val(200, 0.3)
+        );
+    }
+}

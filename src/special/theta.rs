@@ -1,0 +1,456 @@
+//! The fixed-precision bottoms (`f64`, `Dual<f64>`): sn, cn, dn as quotients of theta
+//! functions of a small nome, with every per-modulus quantity computed in `f64` /
+//! double-double (no multi-precision arithmetic), so a new modulus costs about as much
+//! as one evaluation.
+//!
+//! For the modulus `κ` with nome `q = exp(−πK'/K)` and `ζ = πu/(2K)` (DLMF 22.2.4,
+//! theta functions DLMF 20.2.1–4):
+//!
+//! * `sn = θ₃(0)/θ₂(0) · θ₁(ζ)/θ₄(ζ)`, `cn = θ₄(0)/θ₂(0) · θ₂(ζ)/θ₄(ζ)`,
+//!   `dn = θ₄(0)/θ₃(0) · θ₃(ζ)/θ₄(ζ)`.
+//!
+//! [`Bottom::Series`] takes these for `κ² ≤ ½` (`q ≤ e^{−π} ≈ 0.0432`), and
+//! [`Bottom::Imaginary`] for `κ² > ½` takes them for the complementary modulus `κ'`
+//! (nome `q' ≤ e^{−π}`) at imaginary argument, by Jacobi's imaginary transformation
+//! (DLMF Table 22.6.1): `sn(t,κ) = −i sn(it,κ')/cn(it,κ')`, `cn(t,κ) = 1/cn(it,κ')`,
+//! `dn(t,κ) = dn(it,κ')/cn(it,κ')`.  With `q ≤ e^{−π}` five terms of each theta series
+//! reach `2⁻⁷⁰` (the exponents grow like `n²`).
+//!
+//! Written with `x = sin²ζ` (resp. `x = −sinh²y` at imaginary argument),
+//! `θ₁(ζ)/(2q^¼) = sin ζ·S(x)`, `θ₂(ζ)/(2q^¼) = cos ζ·C(x)`, `θ₃(ζ) = 1 + h(x)`,
+//! `θ₄(ζ) = 1 + d(x)` with `S = 1 + s`, `C = 1 + c` and the Chebyshev polynomials
+//! `sin((2n+1)ζ)/sin ζ`, `cos((2n+1)ζ)/cos ζ`, `cos 2nζ = Tₙ(1 − 2x)`; then for
+//! example `sn = sin ζ·(1 + A/θ₄(ζ))` with `A = (r − 1)(1 + s) + (s − d)`,
+//! `r = θ₃(0)/θ₂(0)`, where `s − d` is summed term by term (the ones cancel
+//! symbolically) and `r − 1` from the series of `θ₃(0) − θ₂(0)`.  So every output is
+//! `leading factor × (1 + small)`: it keeps the relative accuracy of `sin ζ`, `cos ζ`,
+//! `tanh y`, `sech y` (also next to its zeros), and `1 − dn` comes without
+//! cancellation.
+//!
+//! Per-modulus quantities: with `λ` the theta modulus (`κ` or `κ'`), `T = √λ'` (double-
+//! double, one Newton step on `λ'² ` = the exact input), the nome from Jacobi's series
+//! `q = ε + 2ε⁵ + 15ε⁹ + 150ε¹³ + 1707ε¹⁷ + …`, `ε = (1 − T)/(2(1 + T)) =
+//! λ²/(2(1 + λ')(1 + T)²)` (DLMF 22.2.2 and its inversion), and the scale
+//! `π/(2K_λ) = AGM(1, λ') = ((1 + T)/(2θ₃(0, q⁴)))²` (two AGM steps take `(1, λ')` to
+//! `θ₃(q⁴)²/θ₃(q)²·(1, …)`, DLMF 19.8.1 with 20.7.E: `θ₃(q)² = AGM(1, λ')⁻¹`), all in
+//! double-double (about `2⁻⁹⁵` relative), so that `ζ = u·π/(2K)` is exact enough for
+//! `|u| ≤ 256 K`.  At imaginary argument the period in `y = πt/(2K')` is
+//! `πK/(2K') = −ln(q')/2`, also in double-double ([`Dd::ln`]).
+
+use super::dd::{two_prod, two_sum, with_value, Dd};
+use super::Bottom;
+use crate::numbers::Real;
+
+/// `π/2` as a double-double.
+const PI_2: (f64, f64) = (std::f64::consts::FRAC_PI_2, 6.123_233_995_736_766e-17);
+
+/// Largest quadrant handled by the double-double reduction.  Beyond it (and when the
+/// reduced argument cancels by more than 20 bits) the caller reduces with the
+/// quarter period known to 150 bits.
+const J_FAST: i64 = 256;
+
+/// Per-modulus data of the fixed-precision theta bottoms.
+#[derive(Clone, Debug)]
+pub(crate) struct Theta<R> {
+    /// [`Bottom::Series`] or [`Bottom::Imaginary`].
+    pub bottom: Bottom,
+    /// `q, q², q⁴, q⁶, q⁹, q¹², q¹⁶` of the theta modulus.
+    pow: [R; 7],
+    /// `ratio − 1` of the theta-null quotients of sn, cn, dn (see [`Theta::new`]).
+    ratio: [R; 3],
+    /// `π/(2K)` (series) or `π/(2K')` (imaginary argument).
+    pub scale: Dd<R>,
+    /// The quarter period in the scaled variable: `π/2` or `πK/(2K')`.
+    pub period: Dd<R>,
+    /// `1/period` rounded to `f64` (quadrant choice).
+    inv_period: f64,
+    /// `κ'` of the evaluated modulus (odd quadrants at imaginary argument).
+    kp: R,
+}
+
+/// `x^{1/4}` of a positive double-double: two square roots, then one Newton step
+/// `t + (x − t⁴)/(4t³)` with `x − t⁴` formed exactly.
+fn quarter_root<R: Real>(x: &Dd<R>) -> Dd<R> {
+    let t = x.hi.sqrt().sqrt();
+    let tv = t.to_f64();
+    let t2 = Dd::from(t.clone()).sqr();
+    let t4 = t2.sqr();
+    let resid = (x.v() - t4.v()) + (x.lo - t4.lo);
+    Dd {
+        lo: resid / (4.0 * tv * tv * tv),
+        hi: t,
+    }
+}
+
+impl<R: Real> Theta<R> {
+    /// The data for the modulus `κ` given by `m = κ²` and `mc = κ'² = 1 − κ²` (both as
+    /// double-doubles, `0 ≤ m`, `0 < mc`).
+    pub(crate) fn new(m: &Dd<R>, mc: &Dd<R>) -> Self {
+        Self::with_bottom(m, mc, m.v() > 0.5)
+    }
+
+    /// [`Theta::new`] with the bottom chosen by the caller (`imaginary`); both forms are
+    /// exact for every modulus, the choice only keeps the nome small (tests cross-check
+    /// them where both nomes are moderate).
+    pub(crate) fn with_bottom(m: &Dd<R>, mc: &Dd<R>, imaginary: bool) -> Self {
+        let (a, b) = if imaginary { (mc, m) } else { (m, mc) };
+        let (a, b) = (a.norm(), b.norm());
+        let one = m.hi.one();
+        let t = quarter_root(&b);
+        let lp = t.sqr();
+        let opt = t.add_r(&one);
+        let den = lp.add_r(&one).mul(&opt.sqr()).mul_r(&one.from_i64(2));
+        let eps = a.div(&den).norm();
+        let e = eps.hi.clone();
+        let e4 = e.sqr().sqr();
+        // q = ε(1 + w), w = 2ε⁴ + 15ε⁸ + 150ε¹² + 1707ε¹⁶
+        let tail12 = e4.sqr()
+            * e4.clone()
+            * (one.from_i64(150)
+                + e4.clone()
+                    * (one.from_i64(1707)
+                        + e4.clone() * (one.from_i64(20910) + e4.clone() * one.from_i64(268_616))));
+        let w_tail = e4.sqr() * one.from_i64(15) + tail12.clone();
+        let w = e4.clone().mul_2si(1) + w_tail.clone();
+        let eps4 = eps.sqr().sqr();
+        let q = e.clone() + e.clone() * w.clone();
+        let pow = powers(&q);
+        // q⁴ = ε⁴(1 + g), g = (1 + w)⁴ − 1 = 8ε⁴ + g₂, with ε⁴ in double-double and
+        // g₂ = 4·w_tail + w²(6 + 4w + w²) (about 84ε⁸) in `R`
+        let g2 = w_tail.mul_2si(2)
+            + w.sqr() * (one.from_i64(6) + w.clone() * (one.from_i64(4) + w.clone()));
+        let q4 = eps4.add(
+            &eps4
+                .sqr()
+                .mul_r(&one.from_i64(8))
+                .add_r(&(eps4.hi.clone() * g2)),
+        );
+        // 1/θ₃(0, q⁴) = 1 − c', c' = E/(1 + E), E = 2q⁴ + 2q¹⁶
+        let big_e = q4.add_r(&pow[6]).mul_r(&one.from_i64(2)).norm();
+        let ev = big_e.hi.clone();
+        let cprime = big_e.add_r(&(-(ev.sqr() / (one.clone() + ev))));
+        let half_opt = opt.mul_r(&one.mul_2si(-1));
+        let wdd = half_opt.add(
+            &Dd {
+                hi: -half_opt.hi.clone(),
+                lo: -half_opt.lo,
+            }
+            .mul(&cprime),
+        );
+        let scale = wdd.sqr().norm();
+        let period = if imaginary {
+            // πK/(2K') = −ln(q)/2, ln q = ln ε + ln(1 + w), w = 2ε⁴ + t₈ with
+            // t₈ = 15ε⁸ + 150ε¹² + …: ln(1 + w) = w − w²/2 + w³/3 − w⁴/4
+            // = 2ε⁴ + 13ε⁸ + (t₈ − 15ε⁸) − 2ε⁴t₈ − t₈²/2 + w³(1/3 − w/4), the first two
+            // terms from ε in double-double
+            let eps8 = eps4.sqr();
+            let t8_rest = tail12.clone();
+            let low = t8_rest - (e4.clone() * w_tail.clone()).mul_2si(1) - w_tail.sqr().mul_2si(-1)
+                + w.sqr() * w.clone() * (one.from_ratio(1, 3) - w.clone() * one.mul_2si(-2));
+            let ln1p_w = eps4
+                .mul_r(&one.from_i64(2))
+                .add(&eps8.mul_r(&one.from_i64(13)))
+                .add_r(&low);
+            let lnq = eps.ln().add(&ln1p_w);
+            Dd {
+                hi: -lnq.hi.mul_2si(-1),
+                lo: -lnq.lo / 2.0,
+            }
+            .norm()
+        } else {
+            Dd {
+                hi: one.from_f64(PI_2.0),
+                lo: PI_2.1,
+            }
+        };
+        let ratio = ratios(&pow, imaginary);
+        Theta {
+            bottom: if imaginary {
+                Bottom::Imaginary
+            } else {
+                Bottom::Series
+            },
+            inv_period: 1.0 / period.v(),
+            pow,
+            ratio,
+            scale,
+            period,
+            kp: mc.hi.sqrt(),
+        }
+    }
+
+    /// The quarter period `K` of the evaluated modulus (`period/scale`).
+    pub(crate) fn quarter_period(&self) -> R {
+        self.period.div(&self.scale).to_r()
+    }
+
+    /// `u/K` rounded to `f64`.
+    #[inline]
+    pub(crate) fn ratio_of(&self, u: f64) -> f64 {
+        u * self.scale.v() * self.inv_period
+    }
+
+    /// Fast reduction of `u + u_lo` (`|u_lo| ≤ ulp(u)`): `(j, w_hi, w_lo)` with
+    /// `u·scale = j·period + w`, or `None` when `|j| > 256` or `w` cancelled by more
+    /// than 20 bits (then the caller reduces with the 150-bit quarter period).
+    #[inline]
+    pub(crate) fn reduce_fast(&self, u: &R, u_lo: f64, j: i64) -> Option<(R, f64)> {
+        let z = self.scale.mul_r(u);
+        let zl = z.lo + self.scale.v() * u_lo;
+        if j == 0 {
+            return Some((z.hi, zl));
+        }
+        if j.abs() > J_FAST {
+            return None;
+        }
+        let jf = j as f64;
+        let (a, ae) = two_prod(jf, self.period.v());
+        let zv = z.v();
+        let r1 = zv - a;
+        let (h, l) = two_sum(r1, (zl - ae) - jf * self.period.lo);
+        if h.abs() < zv.abs() * 2f64.powi(-20) {
+            return None;
+        }
+        let hi = z.hi - self.period.hi.clone() * u.from_i64(j);
+        Some((with_value(&hi, h), l))
+    }
+
+    /// `(sn, cn, dn)` from the reduced scaled argument `w = w_hi + w_lo` (`|w| ≲
+    /// period/2`) in quadrant `j`.
+    #[inline]
+    pub(crate) fn eval(&self, j: i64, w: R, w_lo: f64) -> (R, R, R) {
+        let out = match self.bottom {
+            Bottom::Imaginary => self.eval_imaginary(j, w, w_lo),
+            _ => self.eval_series(j, w, w_lo),
+        };
+        half_period_sign(j, out)
+    }
+
+    /// [`Bottom::Series`]: `ζ = jπ/2 + w`.
+    #[inline]
+    fn eval_series(&self, j: i64, w: R, w_lo: f64) -> (R, R, R) {
+        let (s0, c0) = w.sin_cos_kernel();
+        let lo = w.from_f64(w_lo);
+        let s = s0.clone() + c0.clone() * lo.clone();
+        let c = c0 - s0 * lo;
+        let (sv, cv) = if j & 1 == 0 { (s, c) } else { (c, -s) };
+        let x = sv.sqr();
+        let [s_, c_, d_, h_] = self.sums(&x);
+        let one = x.one();
+        let [r_s, r_c, r_d] = &self.ratio;
+        let a_s = r_s.clone() * (one.clone() + s_.clone()) + (s_ - d_.clone());
+        let a_c = r_c.clone() * (one.clone() + c_.clone()) + (c_ - d_.clone());
+        let a_d = r_d.clone() * (one.clone() + h_.clone()) + (h_ - d_.clone());
+        let rd = (one.clone() + d_).recip();
+        (
+            sv.clone() + sv * (a_s * rd.clone()),
+            cv.clone() + cv * (a_c * rd.clone()),
+            one + a_d * rd,
+        )
+    }
+
+    /// [`Bottom::Imaginary`]: `y = |w|`, `t = u − jK`, `y = πt/(2K')`.
+    #[inline]
+    fn eval_imaginary(&self, j: i64, w: R, w_lo: f64) -> (R, R, R) {
+        let neg = w.to_f64() < 0.0;
+        let (y, y_lo) = if neg { (-w, -w_lo) } else { (w, w_lo) };
+        let one = y.one();
+        let two = one.from_i64(2);
+        let h0 = y.mul_2si(1).exp_m1();
+        // e^{2y} − 1 at y + y_lo
+        let h = h0.clone() + (one.clone() + h0) * y.from_f64(2.0 * y_lo);
+        let g = (one.clone() + h.clone()).sqrt(); // e^y
+        let rg = g.recip();
+        let sh = h.clone() * rg.clone() * one.mul_2si(-1); // sinh y
+        let x = -sh.sqr();
+        let [s_, c_, d_, h_] = self.sums(&x);
+        let den = one.clone() + c_.clone();
+        let [r_s, r_c, r_d] = &self.ratio;
+        let b_s = r_s.clone() * (one.clone() + s_.clone()) + (s_ - c_.clone());
+        let b_c = r_c.clone() * (one.clone() + d_.clone()) + (d_ - c_.clone());
+        let b_d = r_d.clone() * (one.clone() + h_.clone()) + (h_ - c_);
+        let (sn, cn, dn) = if j & 1 == 0 {
+            let rr = (h.clone() + two).recip();
+            let th = h * rr.clone();
+            let sech = g.mul_2si(1) * rr;
+            let r = den.recip();
+            (
+                th.clone() + th * (b_s * r.clone()),
+                sech.clone() + sech.clone() * (b_c * r.clone()),
+                sech.clone() + sech * (b_d * r),
+            )
+        } else {
+            // DLMF 22.4.3: sn(t+K) = cd t, cn(t+K) = −κ' sd t, dn(t+K) = κ' nd t
+            let ch = sh.clone() + rg;
+            let ww = (den.clone() + b_d.clone()).recip();
+            let kw = self.kp.clone() * ww.clone();
+            (
+                one + (b_c - b_d) * ww,
+                -(sh * (den.clone() + b_s) * kw.clone()),
+                ch * den * kw,
+            )
+        };
+        if neg {
+            if j & 1 == 0 {
+                (-sn, cn, dn)
+            } else {
+                (sn, -cn, dn)
+            }
+        } else {
+            (sn, cn, dn)
+        }
+    }
+
+    /// `[s, c, d, h]` at `x`: `S = 1 + s`, `C = 1 + c`, `θ₄ = 1 + d`, `θ₃ = 1 + h`.
+    #[inline]
+    fn sums(&self, x: &R) -> [R; 4] {
+        let [q, q2, q4, q6, q9, q12, q16] = &self.pow;
+        let one = x.one();
+        let t1 = one.clone() - x.mul_2si(1);
+        let t1x2 = t1.mul_2si(1);
+        let t2 = t1x2.clone() * t1.clone() - one.clone();
+        let t3 = t1x2.clone() * t2.clone() - t1.clone();
+        let t4 = t2.sqr().mul_2si(1) - one.clone();
+        let s1 = t1x2.clone() + one.clone();
+        let s2 = t1x2.clone() * s1.clone() - one.clone();
+        let s3 = t1x2.clone() * s2.clone() - s1.clone();
+        let c1 = t1x2.clone() - one.clone();
+        let c2 = t1x2.clone() * c1.clone() - one;
+        let c3 = t1x2 * c2.clone() - c1.clone();
+        let s = -(q2.clone() * s1) + q6.clone() * s2 - q12.clone() * s3;
+        let c = q2.clone() * c1 + q6.clone() * c2 + q12.clone() * c3;
+        let even = (q4.clone() * t2 + q16.clone() * t4).mul_2si(1);
+        let odd = (q.clone() * t1 + q9.clone() * t3).mul_2si(1);
+        [s, c, even.clone() - odd.clone(), even + odd]
+    }
+}
+
+/// `[q, q², q⁴, q⁶, q⁹, q¹², q¹⁶]`.
+fn powers<R: Real>(q: &R) -> [R; 7] {
+    let q2 = q.sqr();
+    let q4 = q2.sqr();
+    let q6 = q4.clone() * q2.clone();
+    let q9 = q6.clone() * q2.clone() * q.clone();
+    let q12 = q6.sqr();
+    let q16 = q12.clone() * q4.clone();
+    [q.clone(), q2, q4, q6, q9, q12, q16]
+}
+
+/// The theta-null quotients minus one, from `θ₂(0)/(2q^¼) = 1 + E₂`,
+/// `θ₃(0) = 1 + E₃ + O₃`, `θ₄(0) = 1 + E₃ − O₃` (`E₂ = q² + q⁶ + q¹²`,
+/// `E₃ = 2q⁴ + 2q¹⁶`, `O₃ = 2q + 2q⁹`; DLMF 20.4.1–4).  Series: `θ₃/θ₂ − 1`,
+/// `θ₄/θ₂ − 1`, `θ₄/θ₃ − 1`; imaginary argument: `θ₃/θ₄ − 1`, `θ₂/θ₄ − 1`,
+/// `θ₂/θ₃ − 1`.  The differences are summed term by term (no cancellation).
+fn ratios<R: Real>(pow: &[R; 7], imaginary: bool) -> [R; 3] {
+    let [q, q2, q4, q6, q9, q12, q16] = pow;
+    let one = q.one();
+    let e2 = q2.clone() + q6.clone() + q12.clone();
+    let e3 = (q4.clone() + q16.clone()).mul_2si(1);
+    let o3 = (q.clone() + q9.clone()).mul_2si(1);
+    let th3 = one.clone() + e3.clone() + o3.clone();
+    if imaginary {
+        let th4 = one + e3.clone() - o3.clone();
+        let (r4, r3) = (th4.recip(), th3.recip());
+        [
+            o3.mul_2si(1) * r4.clone(),
+            (e2.clone() - e3.clone() + o3.clone()) * r4,
+            (e2 - e3 - o3) * r3,
+        ]
+    } else {
+        let th2 = one + e2.clone();
+        let (r2, r3) = (th2.recip(), th3.recip());
+        [
+            (e3.clone() + o3.clone() - e2.clone()) * r2.clone(),
+            (e3 - o3.clone() - e2) * r2,
+            -(o3.mul_2si(1) * r3),
+        ]
+    }
+}
+
+/// `(sn, cn, dn)(u)` from the values at `u − 2hK`, `2h = j − (j mod 2)`: sn and cn
+/// change sign with `h` (DLMF 22.4.3, `sn(t + 2K) = −sn t`, `cn(t + 2K) = −cn t`).
+#[inline]
+pub(crate) fn half_period_sign<R: Real>(j: i64, (s, c, d): (R, R, R)) -> (R, R, R) {
+    if (j - j.rem_euclid(2)) / 2 % 2 == 0 {
+        (s, c, d)
+    } else {
+        (-s, -c, d)
+    }
+}
+
+/// [`Bottom::TanhSech`]: DLMF 22.10.7–9 for `κ'² = kp2` (exact at `κ = 1`, where
+/// `sn = tanh u`, `cn = dn = sech u`, DLMF 22.5.ii; the `κ'²` terms carry the first
+/// derivative in `κ` for `Dual` numbers and the leading correction for tiny `κ'`).
+pub(crate) fn tanh_sech<R: Real>(u: &R, kp2: &R) -> (R, R, R) {
+    let th = u.tanh();
+    let sech = u.cosh().recip();
+    if u.to_f64().abs() > 350.0 {
+        // sinh·cosh overflows; the κ'² terms (zero in value at κ = 1) are dropped
+        return (th, sech.clone(), sech);
+    }
+    let sh = u.sinh();
+    let quarter = kp2.mul_2si(-2);
+    // a·sech² = κ'²/4 (tanh − u sech²), a·tanh·sech = κ'²/4 (sinh − u sech) tanh
+    let s = th.clone() + quarter.clone() * (th.clone() - u.clone() * sech.sqr());
+    let c = sech.clone() - quarter.clone() * (sh.clone() - u.clone() * sech.clone()) * th.clone();
+    let d = sech.clone() + quarter * (sh + u.clone() * sech.clone()) * th;
+    (s, c, d)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rug::float::Constant;
+    use rug::Float;
+
+    /// `scale` and `period` in double-double against MPFR (to 2⁻⁸⁴; the reduction needs
+    /// 2⁻⁸⁰ for `|j| ≤ 256` and 20 bits of cancellation) (`π/(2K)`, `π/(2K')`,
+    /// `πK/(2K')` from 256-bit AGMs).
+    #[test]
+    fn scale_and_period_against_mpfr() {
+        for k in [1e-9, 0.1, 0.5, 0.7, 0.71, 0.8, 0.99, 0.999999, 1.0 - 1e-12] {
+            let k2 = Dd::from(k).sqr();
+            let (s, e) = two_sum(1.0, -k2.v());
+            let mc = Dd {
+                hi: s,
+                lo: e - k2.lo,
+            }
+            .norm();
+            let th = Theta::new(&k2, &mc);
+            let p = 256;
+            let kf = Float::with_val(p, k);
+            let kp = Float::with_val(p, 1 - Float::with_val(p, &kf * &kf)).sqrt();
+            let pi = Float::with_val(p, Constant::Pi);
+            let big_k = Float::with_val(
+                p,
+                &pi / Float::with_val(p, 2 * Float::with_val(p, 1).agm(&kp)),
+            );
+            let big_kp = Float::with_val(
+                p,
+                &pi / Float::with_val(p, 2 * Float::with_val(p, 1).agm(&kf)),
+            );
+            let (scale, period) = if th.bottom == Bottom::Imaginary {
+                (
+                    Float::with_val(p, &pi / (2 * big_kp.clone())),
+                    Float::with_val(p, &pi * &big_k) / (2 * big_kp),
+                )
+            } else {
+                (
+                    Float::with_val(p, &pi / (2 * big_k)),
+                    Float::with_val(p, &pi / 2),
+                )
+            };
+            let rel = |d: &Dd<f64>, want: &Float| {
+                (Float::with_val(p, Float::with_val(p, d.hi) + d.lo) - want)
+                    .abs()
+                    .to_f64()
+                    / want.to_f64()
+            };
+            let (es, ep) = (rel(&th.scale, &scale), rel(&th.period, &period));
+            assert!(
+                es < 2f64.powi(-84) && ep < 2f64.powi(-84),
+                "k = {k}: scale {es:e}, period {ep:e}"
+            );
+        }
+    }
+}

@@ -1,0 +1,515 @@
+//! Hostile input to the command-line tool, one test per row of the robustness table:
+//! every row ends with exit 0 and correct output, or exit 2 and one line naming the cause
+//! on standard error (data errors: `file:line:col: message`, optionally followed by the
+//! source excerpt and a caret line).  No row may panic, abort, or lose output with exit 0.
+
+use std::io::{BufRead, BufReader, Write};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// The outcome of one run.
+struct Outcome {
+    code: Option<i32>,
+    stdout: String,
+    stderr: String,
+}
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_eulertop"))
+}
+
+fn run_in(dir: Option<&Path>, args: &[&str], stdin: &[u8], stdout: Stdio) -> Outcome {
+    let mut cmd = bin();
+    cmd.args(args)
+        .stdin(Stdio::piped())
+        .stdout(stdout)
+        .stderr(Stdio::piped());
+    if let Some(d) = dir {
+        cmd.current_dir(d);
+    }
+    let mut child = cmd.spawn().expect("binary runs");
+    let mut input = child.stdin.take().expect("stdin piped");
+    // a closed stdin (the tool stopped reading early) is not an error of the test
+    let _ = input.write_all(stdin);
+    drop(input);
+    let o = child.wait_with_output().expect("binary finishes");
+    Outcome {
+        code: o.status.code(),
+        stdout: String::from_utf8_lossy(&o.stdout).into_owned(),
+        stderr: String::from_utf8_lossy(&o.stderr).into_owned(),
+    }
+}
+
+fn run(args: &[&str]) -> Outcome {
+    run_in(None, args, b"", Stdio::piped())
+}
+
+fn dev_full() -> Stdio {
+    Stdio::from(
+        std::fs::OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .expect("/dev/full exists"),
+    )
+}
+
+fn temp_dir(name: &str) -> PathBuf {
+    let d = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("hostile-{name}"));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).expect("temp dir");
+    d
+}
+
+fn catalogue(name: &str, text: &[u8]) -> PathBuf {
+    let d = temp_dir(name);
+    std::fs::write(d.join("t.toml"), text).expect("catalogue written");
+    d
+}
+
+/// Exit 2 and exactly one line `eulertop: …` on standard error containing every needle.
+fn assert_one_line_error(o: &Outcome, needles: &[&str], what: &str) {
+    assert_eq!(o.code, Some(2), "{what}: exit status; stderr: {}", o.stderr);
+    let lines: Vec<&str> = o.stderr.lines().collect();
+    assert_eq!(lines.len(), 1, "{what}: not one line: {:?}", o.stderr);
+    assert!(lines[0].starts_with("eulertop: "), "{what}: {}", lines[0]);
+    for n in needles {
+        assert!(lines[0].contains(n), "{what}: '{n}' not in: {}", lines[0]);
+    }
+}
+
+/// Exit 2 with a data error: a first line `eulertop: FILE:LINE:COL: message` (line and
+/// column from 1), optionally followed by the excerpt and a caret line.
+fn assert_data_error(o: &Outcome, needles: &[&str], what: &str) {
+    assert_eq!(o.code, Some(2), "{what}: exit status; stderr: {}", o.stderr);
+    let lines: Vec<&str> = o.stderr.lines().collect();
+    assert!(
+        lines.len() == 1 || lines.len() == 3,
+        "{what}: {:?}",
+        o.stderr
+    );
+    let first = lines[0];
+    assert!(!first.contains(":0:"), "{what}: position 0 in {first}");
+    for n in needles {
+        assert!(first.contains(n), "{what}: '{n}' not in: {first}");
+    }
+    if lines.len() == 3 {
+        let pos = first.split(": ").nth(1).unwrap_or("");
+        let nums: Vec<&str> = pos.rsplitn(3, ':').take(2).collect();
+        assert!(
+            nums.len() == 2 && nums.iter().all(|n| n.parse::<u32>().is_ok_and(|v| v > 0)),
+            "{what}: no file:line:col in {first}"
+        );
+        assert!(!lines[1].trim().is_empty(), "{what}: empty excerpt");
+        assert!(
+            lines[2].trim().chars().all(|c| c == '^') && lines[2].contains('^'),
+            "{what}: no caret line: {:?}",
+            lines[2]
+        );
+    }
+}
+
+/// Not killed by a signal, no panic, and at most one line on standard error.
+fn assert_no_crash(o: &Outcome, what: &str) {
+    assert!(o.code.is_some(), "{what}: killed by a signal");
+    assert_ne!(o.code, Some(101), "{what}: panicked: {}", o.stderr);
+    assert!(!o.stderr.contains("panicked"), "{what}: {}", o.stderr);
+    assert!(o.stderr.lines().count() <= 1, "{what}: {}", o.stderr);
+}
+
+fn wait_for(mut child: Child, secs: u64) -> Outcome {
+    let start = Instant::now();
+    loop {
+        if let Some(_status) = child.try_wait().expect("wait") {
+            let o = child.wait_with_output().expect("output");
+            return Outcome {
+                code: o.status.code(),
+                stdout: String::from_utf8_lossy(&o.stdout).into_owned(),
+                stderr: String::from_utf8_lossy(&o.stderr).into_owned(),
+            };
+        }
+        if start.elapsed() > Duration::from_secs(secs) {
+            let _ = child.kill();
+            panic!("still running after {secs} s");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+/// Peak resident memory of a running process in kB (Linux), if readable.
+fn peak_rss_kb(pid: u32) -> Option<u64> {
+    let s = std::fs::read_to_string(format!("/proc/{pid}/status")).ok()?;
+    let line = s.lines().find(|l| l.starts_with("VmHWM:"))?;
+    line.split_whitespace().nth(1)?.parse().ok()
+}
+
+/// Reads `n` lines of a long run, checks its memory, closes the pipe: the run must
+/// stop with exit 2 (the closed pipe) or quietly, and never panic.
+fn stream_then_close(args: &[&str], n: usize) {
+    let mut child = bin()
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let mut r = BufReader::new(child.stdout.take().expect("stdout piped"));
+    let mut line = String::new();
+    for j in 0..n {
+        line.clear();
+        r.read_line(&mut line).expect("read");
+        assert_eq!(line.split_whitespace().count(), 3, "line {j}: {line:?}");
+    }
+    // the rows arrive while the run goes on, and memory does not grow with --steps
+    if let Some(kb) = peak_rss_kb(child.id()) {
+        assert!(kb < 64 * 1024, "{args:?}: peak RSS {kb} kB");
+    }
+    drop(r);
+    let o = wait_for(child, 60);
+    assert_no_crash(&o, &format!("{args:?}"));
+    assert_eq!(o.code, Some(2), "{args:?}: {}", o.stderr);
+}
+
+// -- row 1: long flat chains ---------------------------------------------------------
+
+#[test]
+fn row01_long_flat_sum_in_eval() {
+    let expr = format!("{}1", "1+".repeat(8400));
+    let o = run(&["eval", &expr]);
+    assert_no_crash(&o, "eval 1+1+…");
+    if o.code == Some(0) {
+        let v: f64 = o.stdout.trim().parse().expect("a number");
+        assert_eq!(v, 8401.0);
+    } else {
+        assert_one_line_error(&o, &[], "eval 1+1+…");
+    }
+}
+
+#[test]
+fn row01_long_flat_sum_in_a_catalogue() {
+    let lhs = format!("{}x", "x+".repeat(2999));
+    let text = format!(
+        "[[claim]]\nid = \"t.flat\"\nlocation = \"test\"\nprinted = 'x'\nkind = \"identity\"\n\
+         expect = \"holds\"\nvars = [[\"x\", \"uniform(1, 2)\"]]\nlhs = \"{lhs}\"\nrhs = \"3000*x\"\n"
+    );
+    let dir = catalogue("flat", text.as_bytes());
+    let o = run(&[
+        "verify",
+        "--bits",
+        "53",
+        "--catalogue",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(o.code.is_some(), "verify killed by a signal: {}", o.stderr);
+    if o.code == Some(2) {
+        assert_data_error(&o, &["t.toml"], "flat chain in a catalogue");
+    } else {
+        assert_eq!(o.code, Some(0), "{}{}", o.stdout, o.stderr);
+    }
+}
+
+// -- row 2: step and orbit stream their rows ------------------------------------------
+
+#[test]
+fn row02_step_streams_a_billion_steps() {
+    let base = ["--inertia", "3,2,1", "--h", "0.1", "--steps", "1000000000"];
+    stream_then_close(&[&["step"], &base[..], &["1", "2", "3"]].concat(), 1000);
+    stream_then_close(&[&["orbit"], &base[..], &["1", "2", "3"]].concat(), 1000);
+}
+
+#[test]
+fn row02_steps_at_usize_max_never_panic() {
+    let args = [
+        "--inertia",
+        "3,2,1",
+        "--h",
+        "0.1",
+        "--steps",
+        "18446744073709551615",
+        "1",
+        "2",
+        "3",
+    ];
+    stream_then_close(&[&["step"], &args[..]].concat(), 5);
+    stream_then_close(&[&["orbit"], &args[..]].concat(), 5);
+    // --svg keeps every row: refused before anything is computed
+    let mut svg = vec!["orbit", "--svg", "unused.svg"];
+    svg.extend_from_slice(&args);
+    let o = run(&svg);
+    assert_one_line_error(
+        &o,
+        &["--svg", "--steps"],
+        "orbit --svg with usize::MAX steps",
+    );
+}
+
+// -- rows 3 and 4: writes to a full disk or a closed pipe -----------------------------
+
+#[test]
+fn row03_eval_to_a_full_disk() {
+    let o = run_in(None, &["eval", "1"], b"", dev_full());
+    assert_one_line_error(&o, &["standard output", "No space"], "eval 1 >/dev/full");
+}
+
+#[test]
+fn row03_verify_json_into_head() {
+    let mut child = bin()
+        .args(["verify", "--format", "json", "--bits", "53", "--jobs", "2"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let mut r = BufReader::new(child.stdout.take().expect("stdout piped"));
+    let mut line = String::new();
+    r.read_line(&mut line).expect("read");
+    assert_eq!(line.trim(), "{");
+    drop(r);
+    let o = wait_for(child, 120);
+    assert_no_crash(&o, "verify --format json | head -1");
+    assert_eq!(o.code, Some(2), "{}", o.stderr);
+}
+
+#[test]
+fn row04_step_and_orbit_to_a_full_disk() {
+    let step = [
+        "step",
+        "--inertia",
+        "3,2,1",
+        "--h",
+        "0.1",
+        "--steps",
+        "20",
+        "1",
+        "2",
+        "3",
+    ];
+    let o = run_in(None, &step, b"", dev_full());
+    assert_one_line_error(&o, &["standard output", "No space"], "step >/dev/full");
+    let mut orbit = step.to_vec();
+    orbit[0] = "orbit";
+    let o = run_in(None, &orbit, b"", dev_full());
+    assert_one_line_error(&o, &["standard output", "No space"], "orbit >/dev/full");
+    for opt in ["--csv", "--svg"] {
+        let mut a = orbit.clone();
+        a.extend_from_slice(&[opt, "/dev/full"]);
+        let o = run(&a);
+        assert_one_line_error(&o, &["/dev/full", "No space"], opt);
+    }
+}
+
+// -- rows 5 and 6: the real cause of an out-of-range start point ----------------------
+
+#[test]
+fn row05_overflow_and_underflow_of_m2() {
+    for cmd in ["orbit", "step"] {
+        let o = run(&[
+            cmd,
+            "--inertia",
+            "3,2,1",
+            "--h",
+            "0.1",
+            "1e200",
+            "1e200",
+            "1e200",
+        ]);
+        assert_one_line_error(&o, &["M²", "overflows", "53 bits"], cmd);
+        let o = run(&[
+            cmd,
+            "--inertia",
+            "3,2,1",
+            "--h",
+            "0.1",
+            "1e-200",
+            "1e-200",
+            "1e-200",
+        ]);
+        assert_one_line_error(&o, &["M²", "underflows"], cmd);
+        assert!(!o.stderr.contains("M = 0"), "{}", o.stderr);
+    }
+    // at 256 bits (MPFR) the same start points are fine, and |M| is preserved
+    let o = run(&[
+        "step",
+        "--bits",
+        "256",
+        "--inertia",
+        "3,2,1",
+        "--h",
+        "1e-201",
+        "1e200",
+        "1e200",
+        "1e200",
+    ]);
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    let m: Vec<f64> = o
+        .stdout
+        .split_whitespace()
+        .map(|x| x.parse().unwrap())
+        .collect();
+    let norm = m.iter().map(|x| (x / 1e200).powi(2)).sum::<f64>().sqrt();
+    assert!((norm - 3f64.sqrt()).abs() < 1e-12, "{m:?}");
+}
+
+#[test]
+fn row06_modulus_that_cannot_be_formed() {
+    for cmd in ["orbit", "step"] {
+        let o = run(&[
+            cmd,
+            "--inertia",
+            "1e308,2,1",
+            "--h",
+            "0.1",
+            "--steps",
+            "3",
+            "1",
+            "2",
+            "3",
+        ]);
+        assert_one_line_error(&o, &["modulus k cannot be formed", "1e308,2,1"], cmd);
+        assert!(o.stdout.is_empty(), "{cmd}: {}", o.stdout);
+    }
+}
+
+// -- row 7: undefined names and recursion are load errors -----------------------------
+
+const CLAIM_HEAD: &str = "[[claim]]\nid = \"t.c\"\nlocation = \"test\"\nprinted = 'x'\n\
+    kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(1, 2)\"]]\n";
+
+#[test]
+fn row07_undefined_scale_name_is_a_load_error() {
+    let text = format!("{CLAIM_HEAD}lhs = \"x\"\nrhs = \"x\"\nscale = \"Mzz\"\n");
+    let dir = catalogue("scale", text.as_bytes());
+    let o = run(&[
+        "verify",
+        "--bits",
+        "53",
+        "--catalogue",
+        dir.to_str().unwrap(),
+    ]);
+    assert_data_error(&o, &["t.toml:", "Mzz"], "scale = Mzz");
+}
+
+#[test]
+fn row07_recursive_definition_is_a_load_error() {
+    let text = format!(
+        "[[claim]]\nid = \"t.f\"\nlocation = \"test\"\nprinted = 'f'\nkind = \"definition\"\n\
+         define = '''f(M) = f(M)'''\n\n{CLAIM_HEAD}lhs = \"f(x)\"\nrhs = \"x\"\n"
+    );
+    let dir = catalogue("recursion", text.as_bytes());
+    let o = run(&[
+        "verify",
+        "--bits",
+        "53",
+        "--catalogue",
+        dir.to_str().unwrap(),
+    ]);
+    assert_data_error(&o, &["t.toml:", "recursi"], "f(M) = f(M)");
+    assert!(o.stderr.matches("in function").count() <= 1, "{}", o.stderr);
+}
+
+// -- row 8: overflow is named as overflow ---------------------------------------------
+
+#[test]
+fn row08_overflow_is_not_called_malformed() {
+    let o = run_in(None, &["jacobi"], b"1e309 0.5\n", Stdio::piped());
+    assert_one_line_error(&o, &["line 1"], "jacobi 1e309");
+    assert!(!o.stderr.contains("malformed"), "{}", o.stderr);
+    let o = run(&["eval", "sum(k,1,1e30,k)"]);
+    assert_eq!(o.code, Some(2), "{}", o.stderr);
+    assert_eq!(o.stderr.lines().count(), 1, "{}", o.stderr);
+    assert!(!o.stderr.contains("expected an integer"), "{}", o.stderr);
+}
+
+// -- row 9: jacobi's stdin: invalid UTF-8 and huge lines ------------------------------
+
+#[test]
+fn row09_non_utf8_and_huge_lines() {
+    let o = run_in(None, &["jacobi"], b"0.5 0.5\n0.5 \xff\n", Stdio::piped());
+    assert_one_line_error(&o, &["line 2"], "non-UTF-8 line");
+    let mut big = b"0.5 0.5\n".to_vec();
+    big.extend(std::iter::repeat_n(b'x', 5 << 20));
+    big.push(b'\n');
+    let o = run_in(None, &["jacobi"], &big, Stdio::piped());
+    assert_one_line_error(&o, &["line 2"], "5 MB line");
+    assert!(o.stderr.len() < 400, "message of {} bytes", o.stderr.len());
+}
+
+// -- row 10: --jobs is bounded --------------------------------------------------------
+
+#[test]
+fn row10_jobs_bounded() {
+    let start = Instant::now();
+    let o = run(&["verify", "--jobs", "100000", "--only", "sec2"]);
+    assert_one_line_error(&o, &["--jobs", "100000"], "verify --jobs 100000");
+    assert!(start.elapsed() < Duration::from_secs(10));
+    let o = run(&["report", "--jobs", "0", "--out", "unused"]);
+    assert_one_line_error(&o, &["--jobs"], "report --jobs 0");
+}
+
+// -- row 11: report checks its arguments before writing -------------------------------
+
+#[test]
+fn row11_report_outside_the_repository() {
+    let dir = temp_dir("report-outside");
+    let cat = Path::new(env!("CARGO_MANIFEST_DIR")).join("identities");
+    let args = [
+        "report",
+        "--catalogue",
+        cat.to_str().unwrap(),
+        "--out",
+        "out",
+    ];
+    let o = run_in(Some(&dir), &args, b"", Stdio::piped());
+    assert_one_line_error(&o, &["--readme", "README.md"], "report without README");
+    assert!(
+        !dir.join("out").exists(),
+        "reports written before the check"
+    );
+}
+
+#[test]
+fn row11_report_out_empty_or_onto_the_readme() {
+    let dir = temp_dir("report-out");
+    let readme = "# r\n<!-- verdicts -->\nold\n<!-- /verdicts -->\n";
+    std::fs::write(dir.join("README.md"), readme).unwrap();
+    let cat = Path::new(env!("CARGO_MANIFEST_DIR")).join("identities");
+    for out in ["", "."] {
+        let args = ["report", "--catalogue", cat.to_str().unwrap(), "--out", out];
+        let o = run_in(Some(&dir), &args, b"", Stdio::piped());
+        assert_one_line_error(&o, &["--out"], &format!("report --out '{out}'"));
+        let now = std::fs::read_to_string(dir.join("README.md")).unwrap();
+        assert_eq!(now, readme, "README.md changed");
+        assert!(
+            !dir.join("errata.md").exists(),
+            "reports written into --out '{out}'"
+        );
+    }
+}
+
+// -- row 12: empty catalogues ---------------------------------------------------------
+
+#[test]
+fn row12_empty_catalogue() {
+    let empty = temp_dir("empty");
+    let o = run(&["verify", "--catalogue", empty.to_str().unwrap()]);
+    assert_one_line_error(&o, &[], "empty directory");
+    assert!(!o.stderr.contains("no claim matches ''"), "{}", o.stderr);
+    let dir = catalogue("empty-file", b"");
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_one_line_error(&o, &[], "empty file");
+    assert!(!o.stderr.contains("no claim matches ''"), "{}", o.stderr);
+}
+
+// -- row 13: catalogue errors without a position --------------------------------------
+
+#[test]
+fn row13_errors_without_position_have_no_empty_excerpt() {
+    let o = run(&["verify", "--catalogue", "/nonexistent"]);
+    assert_one_line_error(&o, &["/nonexistent"], "missing catalogue");
+    assert!(!o.stderr.contains(":0:0:"), "{}", o.stderr);
+    let dir = catalogue("non-utf8", b"[[claim]]\nid = \"\xff\xfe\"\n");
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_data_error(&o, &["t.toml"], "non-UTF-8 catalogue");
+    let text = format!("{CLAIM_HEAD}domain = \"nosuch\"\nlhs = \"x\"\nrhs = \"x\"\n");
+    let dir = catalogue("domain", text.as_bytes());
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_data_error(&o, &["t.toml:", "nosuch"], "unknown domain");
+}
