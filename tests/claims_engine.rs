@@ -368,3 +368,89 @@ fn a_panicking_registered_function_gives_inconclusive_not_a_crash() {
     );
     assert!(!r.as_expected);
 }
+
+// ---------- depth limits: errors, never stack overflows ----------
+
+#[test]
+fn long_flat_chains_are_syntax_errors_not_crashes() {
+    // 8,400 terms: a chain of operators nests one level per operator
+    let e = parse_expr(&format!("{}1", "1+".repeat(8400))).unwrap_err();
+    assert!(e.message.contains("nested too deeply"), "{}", e.message);
+    // 200 terms are fine and sum up
+    let reg = Registry::new();
+    let ev = Evaluator::new(&reg, 0.0f64);
+    let v = ev
+        .eval(&parse_expr(&format!("{}1", "1+".repeat(199))).unwrap())
+        .unwrap();
+    assert_eq!(v, Value::Real(200.0));
+    // in a catalogue the error has the file position
+    let lhs = format!("{}x", "x+".repeat(2999));
+    let err = load(&claim(&format!(
+        "kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(1, 2)\"]]\nlhs = \"{lhs}\"\nrhs = \"x\""
+    )))
+    .unwrap_err();
+    assert!(err.starts_with("t.toml:8:") && err.contains("nested too deeply"));
+}
+
+#[test]
+fn deep_function_nesting_is_an_error_even_on_a_small_stack() {
+    // f0(x) = x + x + … (250 levels), f_j(x) = f_{j-1}(x) + x + … (the call 240 levels
+    // down a left-deep chain): more than 2,000 nested evaluations in all, on a thread
+    // with 256 KiB of stack
+    let mut src = format!("f0(x) = {}x\n", "x+".repeat(249));
+    for j in 1..10 {
+        src.push_str(&format!("f{j}(x) = f{}(x){}\n", j - 1, "+x".repeat(240)));
+    }
+    let mut reg = Registry::new();
+    for b in parse_bindings(&src).unwrap() {
+        reg.define(b).unwrap();
+    }
+    let out = std::thread::Builder::new()
+        .stack_size(256 * 1024)
+        .spawn(move || {
+            let ev = Evaluator::new(&reg, rug::Float::new(128));
+            ev.eval(&parse_expr("f9(1)").unwrap()).map(|_| ())
+        })
+        .unwrap()
+        .join()
+        .unwrap();
+    let e = out.unwrap_err();
+    assert!(
+        e.message.contains("nested too deeply to evaluate"),
+        "{}",
+        e.message
+    );
+    assert!(!e.message.contains("in function"), "{}", e.message);
+}
+
+#[test]
+fn runaway_recursion_is_reported_once() {
+    let mut reg = Registry::new();
+    reg.define(parse_bindings("f(x) = f(x) + 1").unwrap().remove(0))
+        .unwrap();
+    let ev = Evaluator::new(&reg, 0.0f64);
+    let e = ev.eval(&parse_expr("f(1)").unwrap()).unwrap_err();
+    assert!(
+        e.message.starts_with("recursion too deep in 'f'"),
+        "{}",
+        e.message
+    );
+    assert_eq!(
+        e.message.matches('f').count(),
+        1 + "recursion too deep in".matches('f').count()
+    );
+}
+
+#[test]
+fn sum_bounds_name_the_cause() {
+    let reg = Registry::new();
+    let ev = Evaluator::new(&reg, 0.0f64);
+    let err = |s: &str| ev.eval(&parse_expr(s).unwrap()).unwrap_err().message;
+    let m = err("sum(k, 1, 1e30, k)");
+    assert!(
+        m.contains("too large") && !m.contains("expected an integer"),
+        "{m}"
+    );
+    assert!(err("sum(k, 1, 10^6, k)").contains("more than 100000 terms"));
+    assert!(err("sum(k, 1, 1.5, k)").contains("expected an integer"));
+}
