@@ -696,3 +696,10 @@ fn catalogue_paths_give_one_line_errors() {
     assert_eq!(load_dir(&file, Registry::new()).unwrap().claims.len(), 1);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn jacobi_inverse_works_in_a_catalogue() {
+    // |u| < 1 < K(k): the inverse of (sn, cn, dn) is u itself
+    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"k\", \"uniform(0.1, 0.9)\"], [\"u\", \"uniform(-1, 1)\"]]\nlhs = \"jacobi_inverse(sn(u, k), cn(u, k), dn(u, k), k)\"\nrhs = \"u\""), &LADDER);
+    assert_eq!(r.verdict, Verdict::Holds, "{}", r.reason);
+}
