@@ -33,7 +33,7 @@ fn bench(c: &mut Criterion) {
         b.iter(|| evm.eval(black_box(&e)).unwrap())
     });
     let src = format!(
-        "[[claim]]\nid = \"c\"\nlocation = \"l\"\nprinted = 'p'\nkind = \"identity\"\nexpect = \"holds\"\nvars = [[\"k\", \"uniform(0.1, 0.9)\"], [\"u\", \"uniform(-2, 2)\"], [\"v\", \"uniform(-2, 2)\"]]\nlhs = \"{ADDITION}\"\nrhs = \"0\"\nscale = \"1\"\n"
+        "[[claim]]\nid = \"c\"\nlocation = \"l\"\nprinted = 'p'\nenvironment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\nexpect = \"holds\"\nvars = [[\"k\", \"uniform(0.1, 0.9)\"], [\"u\", \"uniform(-2, 2)\"], [\"v\", \"uniform(-2, 2)\"]]\nlhs = \"{ADDITION}\"\nrhs = \"0\"\nscale = \"1\"\n"
     );
     let cat = load_sources(&[("b.toml".into(), src)], Registry::new()).unwrap();
     let opts = Options::default();

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Renders reports/README.md and a section report to HTML with KaTeX (pandoc), loads the
-# pages in headless Chromium and asserts that the formulas typeset and every SVG loads.
-# Installs pandoc and chromium (Debian packages, when root) and katex + playwright-core
-# (npm) on first use. Screenshots land in target/render-check/.
+# Renders reports/README.md, a section report and a proof page to HTML with KaTeX (pandoc),
+# loads the pages in headless Chromium and asserts that the formulas typeset, every SVG
+# loads and every Mermaid diagram draws. Installs pandoc and chromium (Debian packages,
+# when root) and katex + mermaid + playwright-core (npm) on first use. Screenshots land in
+# target/render-check/.
 # Usage: scripts/check-render.sh [reports/README.md reports/02-euler-top.md ...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,8 +20,8 @@ fi
 out=target/render-check
 mkdir -p "$out"
 cp scripts/render-check/package.json scripts/render-check/check.mjs "$out/"
-[ -d "$out/node_modules/katex" ] || (cd "$out" && npm install --silent --no-audit --no-fund >/dev/null)
-[ "$#" -gt 0 ] || set -- reports/README.md reports/02-euler-top.md
+[ -d "$out/node_modules/katex" ] && [ -d "$out/node_modules/mermaid" ] || (cd "$out" && npm install --silent --no-audit --no-fund >/dev/null)
+[ "$#" -gt 0 ] || set -- reports/README.md reports/02-euler-top.md reports/proofs/theorem-2.md
 pages=()
 for md in "$@"; do
   html="reports/.$(basename "$md" .md).render.html"

@@ -19,7 +19,9 @@ fn load(src: &str) -> Result<Catalogue, String> {
 }
 
 fn claim(body: &str) -> String {
-    format!("[[claim]]\nid = \"c\"\nlocation = \"test\"\nprinted = 'x'\n{body}\n")
+    // the structure fields go last (before an inner table), so error lines stay put
+    let (own, inner) = body.split_at(body.find("[claim.inner]").unwrap_or(body.len()));
+    format!("[[claim]]\nid = \"c\"\nlocation = \"test\"\nprinted = 'x'\n{own}\nenvironment = \"Section 2\"\nrole = \"statement\"\n{inner}\n")
 }
 
 fn verdict_of(src: &str, bits: &[u32]) -> eulertop::claims::verdict::ClaimResult {
@@ -311,7 +313,7 @@ fn independence_existence_negation() {
 #[test]
 fn definitions_are_global_and_deterministic() {
     let src = format!(
-        "{}[[claim]]\nid = \"d\"\nlocation = \"l\"\nprinted = 'p'\nkind = \"definition\"\ndefine = '''\nsq(x) = x * x\n'''\n",
+        "{}[[claim]]\nid = \"d\"\nlocation = \"l\"\nprinted = 'p'\nenvironment = \"Section 2\"\nrole = \"definition\"\nkind = \"definition\"\ndefine = '''\nsq(x) = x * x\n'''\n",
         claim("kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(-1, 1)\"]]\nlhs = \"sq(x + 1)\"\nrhs = \"x^2 + 2*x + 1\"")
     );
     let a = verdict_of(&src, &LADDER);

@@ -25,6 +25,8 @@ expect = "holds"
 vars = [["x", "uniform(-1, 1)"]]
 lhs = "cosh(x)^2 - sinh(x)^2"
 rhs = "1"
+environment = "Section 2"
+role = "statement"
 
 [[claim]]
 id = "false.one"
@@ -35,6 +37,8 @@ expect = "holds"
 vars = [["x", "uniform(0.5, 1)"]]
 lhs = "exp(2*x)"
 rhs = "2*exp(x)"
+environment = "Section 2"
+role = "statement"
 "#;
 
 #[test]
@@ -133,7 +137,7 @@ fn bad_input_exits_2_with_position() {
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8(out.stderr).unwrap();
     assert!(
-        err.contains("t.toml:19:16: syntax error") && err.contains('^'),
+        err.contains("t.toml:21:16: syntax error") && err.contains('^'),
         "{err}"
     );
     let out = bin().args(["verify", "--bits", "53,abc"]).output().unwrap();
@@ -217,7 +221,7 @@ fn coverage_lists_all_96_paper_labels() {
 fn eval_sees_catalogue_definitions() {
     let dir = temp_catalogue(
         "defs",
-        "[[claim]]\nid = \"d\"\nlocation = \"l\"\nprinted = 'p'\nkind = \"definition\"\ndefine = '''\ncube(x) = x^3\n'''\n",
+        "[[claim]]\nid = \"d\"\nlocation = \"l\"\nprinted = 'p'\nenvironment = \"Section 2\"\nrole = \"statement\"\nkind = \"definition\"\ndefine = '''\ncube(x) = x^3\n'''\n",
     );
     let out = bin()
         .args(["eval", "cube(3) - 27", "--catalogue"])

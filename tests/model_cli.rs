@@ -138,3 +138,60 @@ fn orbit_writes_csv_and_svg() {
     assert!(std::fs::read_to_string(&svg).unwrap().contains("<svg"));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn orbit_prints_the_iterates_of_step_and_accepts_options_last() {
+    let base = [
+        "--inertia",
+        "3,2,1",
+        "--gamma",
+        "2",
+        "--h",
+        "0.07",
+        "--steps",
+        "12",
+    ];
+    let (c1, o1, e1) = run(&[&["step"], &base[..], &["0.3", "-0.7", "1.1"]].concat());
+    let dir = std::env::temp_dir().join(format!("eulertop-orbit-last-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let csv = dir.join("o.csv");
+    // options after the start point (a negative one among them) are options, not values
+    let tail = ["0.3", "-0.7", "1.1", "--csv", csv.to_str().unwrap()];
+    let (c2, o2, e2) = run(&[&["orbit"], &base[..], &tail[..]].concat());
+    assert_eq!((c1, c2), (0, 0), "{e1}{e2}");
+    assert_eq!(o1, o2);
+    // the CSV columns M1..M3 of rows 1..N are the printed iterates, digit for digit
+    let table = std::fs::read_to_string(&csv).unwrap();
+    let from_csv: Vec<String> = table
+        .lines()
+        .skip(2)
+        .map(|l| l.split(',').skip(2).take(3).collect::<Vec<_>>().join(" "))
+        .collect();
+    assert_eq!(from_csv, o1.lines().collect::<Vec<_>>());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn step_and_orbit_refuse_the_same_start_points() {
+    let cases: [&[&str]; 4] = [
+        &["--inertia", "3,2,1", "--h", "0.1", "1e200", "1", "1"],
+        &[
+            "--inertia",
+            "3,2,1",
+            "--h",
+            "0.1",
+            "1e-170",
+            "1e-170",
+            "1e-170",
+        ],
+        &["--inertia", "1e308,2,1", "--h", "0.1", "1", "2", "3"],
+        &["--inertia", "3,2,1", "--h", "1e999", "1", "2", "3"],
+    ];
+    for c in cases {
+        let (cs, _, es) = run(&[&["step"], c].concat());
+        let (co, _, eo) = run(&[&["orbit"], c].concat());
+        assert_eq!((cs, co), (2, 2), "{c:?}");
+        assert_eq!(es, eo, "{c:?}");
+        assert_eq!(es.trim_end().lines().count(), 1, "{es}");
+    }
+}

@@ -1,6 +1,7 @@
 //! No panics and no silent garbage: for random (also large) h, every step either
 //! returns a solution of (impl spec) / (M thru omega) or a clean error; Φ⁻¹ on points
-//! with zero components returns a value or a clean error.
+//! with zero components returns a value or a clean error; `model::orbit` is the step map
+//! iterated and stops at the first failing step.
 
 use eulertop::linalg::Vec3;
 use eulertop::model::discretization::{residual, step};
@@ -41,6 +42,47 @@ proptest! {
         if let Ok(c) = m_to_phi(&i, &v) {
             let back = phi_to_m(&c.params, c.sector, &c.phi).unwrap();
             prop_assert!((back - v).max_magnitude() < 1e-9);
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 100, ..ProptestConfig::default() })]
+    /// `model::orbit` is the step map iterated: the same points as repeated `step` /
+    /// `vm_step` calls, and it ends after the first failing step.
+    #[test]
+    fn orbit_is_the_iterated_step(m in (-3.0f64..3.0, -3.0f64..3.0, 0.1f64..3.0),
+                                  h in -3.0f64..3.0, g in 0usize..5) {
+        use eulertop::model::{orbit, Stepper};
+        let i = Inertia::new(3.0, 2.0, 1.0).unwrap();
+        let m0 = Vec3::new(m.0, m.1, m.2);
+        let stepper = match g {
+            0 => Stepper::Implicit(Gamma::G0),
+            1 => Stepper::Implicit(Gamma::G1),
+            2 => Stepper::Implicit(Gamma::G2),
+            3 => Stepper::Implicit(Gamma::Vm),
+            _ => Stepper::Matrix,
+        };
+        let mut it = orbit(&i, stepper, &m0, &h);
+        let mut cur = m0.clone();
+        for _ in 0..6 {
+            let direct = match stepper {
+                Stepper::Implicit(g) => step(&i, g, &cur, &h),
+                Stepper::Matrix => vm_step(&i, &cur, &h).map(|s| s.m_hat),
+            };
+            match (it.next(), direct) {
+                (Some(Ok(a)), Ok(b)) => {
+                    prop_assert_eq!(&a, &b);
+                    cur = b;
+                }
+                (Some(Err(a)), Err(b)) => {
+                    // (the messages: a residual NaN makes the errors unequal as values)
+                    prop_assert_eq!(a.to_string(), b.to_string());
+                    prop_assert!(it.next().is_none(), "orbit goes on after an error");
+                    break;
+                }
+                (a, b) => prop_assert!(false, "orbit {:?} but step {:?}", a, b),
+            }
         }
     }
 }

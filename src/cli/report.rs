@@ -1,5 +1,6 @@
-//! `eulertop report`: verifies the catalogue and writes the Markdown reports, figures,
-//! errata and conventions into `reports/` (deterministic output).
+//! `eulertop report`: verifies the catalogue and writes the Markdown reports, the proof
+//! pages of the paper's environments, figures, errata and conventions into `reports/`
+//! (deterministic output).
 
 use super::verify::{load, parse_bits, run_with_progress};
 use super::CliError;
@@ -185,6 +186,15 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         Err(_) => BTreeMap::new(),
     };
     let conventions = read_conventions(dir)?;
+    let environments = match std::fs::read_to_string(dir.join("environments.tex")) {
+        Ok(t) => crate::report::paper_text::parse(&t),
+        Err(_) => BTreeMap::new(),
+    };
+    let places = cat
+        .claims
+        .iter()
+        .filter_map(|c| crate::claims::structure::place(c).map(|p| (c.id.clone(), p)))
+        .collect();
     let opts = Options {
         bits: bits.clone(),
         exact: true,
@@ -206,6 +216,8 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             .iter()
             .map(|(f, c)| (f.to_string(), c.to_string()))
             .collect(),
+        places,
+        environments,
     };
     let written = write_reports(&input, out)
         .map_err(|e| CliError(format!("cannot write reports to {}: {e}", out.display())))?;

@@ -9,7 +9,8 @@
 //! or out-of-range number, A,B,C not in the order A > B > C > 0, `M = 0`, invariants
 //! `M²`, `E`, `k`, `ν` of the start point that overflow or underflow at the working
 //! precision, Newton failing because `h` is too large) and failed writes stop with one
-//! line on standard error and exit status 2.
+//! line on standard error and exit status 2; rows printed before a failing step stay
+//! printed.
 
 use super::{stdout, write_error, CliError};
 use crate::linalg::Vec3;

@@ -248,6 +248,24 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     Ok(code)
 }
 
+/// The reason, counterexample and failed samples of a claim not as expected.
+fn print_unexpected(w: &mut impl Write, r: &ClaimResult) -> std::io::Result<()> {
+    writeln!(w, "    reason: {}", r.reason)?;
+    if let Some(c) = &r.counterexample {
+        let pt: Vec<String> = c
+            .point
+            .iter()
+            .map(|n| format!("{} = {}", n.name, n.value))
+            .collect();
+        writeln!(w, "    counterexample: {}", pt.join(", "))?;
+        writeln!(w, "      lhs = {}\n      rhs = {}", c.lhs, c.rhs)?;
+    }
+    for f in r.failures.iter().take(2) {
+        writeln!(w, "    failed sample ({} bits): {}", f.bits, f.message)?;
+    }
+    Ok(())
+}
+
 fn print_text(
     w: &mut impl Write,
     results: &[ClaimResult],
@@ -292,19 +310,7 @@ fn print_text(
         }
         writeln!(w, "{line}")?;
         if !r.as_expected {
-            writeln!(w, "    reason: {}", r.reason)?;
-            if let Some(c) = &r.counterexample {
-                let pt: Vec<String> = c
-                    .point
-                    .iter()
-                    .map(|n| format!("{} = {}", n.name, n.value))
-                    .collect();
-                writeln!(w, "    counterexample: {}", pt.join(", "))?;
-                writeln!(w, "      lhs = {}\n      rhs = {}", c.lhs, c.rhs)?;
-            }
-            for f in r.failures.iter().take(2) {
-                writeln!(w, "    failed sample ({} bits): {}", f.bits, f.message)?;
-            }
+            print_unexpected(w, r)?;
         }
     }
     if sum.failed_samples > 0 {

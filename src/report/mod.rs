@@ -1,16 +1,21 @@
 //! The outputs layer's report writer: Markdown verification reports and SVG figures.
 //!
 //! [`write_reports`] turns verified claims ([`ClaimResult`]s) into `reports/`:
-//! `README.md` (summary, verdict counts, a table of every claim), one file per catalogue
-//! section with one block per claim (printed formula, the formula as evaluated, residual
-//! ladder, verdict, counterexample), `errata.md`, `conventions.md` and
-//! `figures/residuals-*.svg`.  Output is deterministic: no timestamps, catalogue order,
+//! `README.md` (the paper's environments with their rolled-up statuses, verdict counts, a
+//! table of every claim), `proofs/<environment>.md` (one page per environment of the paper:
+//! statement, proof steps, status, dependency diagram), one file per catalogue section with
+//! one block per claim (printed formula, the formula as evaluated, residual ladder,
+//! verdict, counterexample), `errata.md`, `conventions.md` and `figures/residuals-*.svg`.  Output is deterministic: no timestamps, catalogue order,
 //! fixed number formatting.
 
+pub mod decimal;
 pub mod figures;
 pub mod markdown;
+pub mod paper_text;
+pub mod proofs;
 pub mod tex;
 
+use crate::claims::structure::Place;
 use crate::claims::verdict::ClaimResult;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -53,6 +58,10 @@ pub struct ReportInput<'a> {
     pub command: String,
     /// Further figures in `figures/` to show in the index: (file, caption).
     pub extra_figures: Vec<(String, String)>,
+    /// Each claim's place in the paper (environment, role, uses), by id.
+    pub places: BTreeMap<String, Place>,
+    /// The printed statements and proofs of the environments, by environment name.
+    pub environments: BTreeMap<String, paper_text::EnvironmentText>,
 }
 
 /// Section stem of a claim, from its `file:line` position.
@@ -69,6 +78,7 @@ pub fn stem_of(r: &ClaimResult) -> String {
 /// written (sorted).  Model-specific figures are written separately by the caller.
 pub fn write_reports(input: &ReportInput, out: &Path) -> std::io::Result<Vec<PathBuf>> {
     std::fs::create_dir_all(out.join("figures"))?;
+    std::fs::create_dir_all(out.join("proofs"))?;
     let mut written = Vec::new();
     let mut put = |name: &str, text: String| -> std::io::Result<()> {
         let p = out.join(name);
@@ -91,6 +101,13 @@ pub fn write_reports(input: &ReportInput, out: &Path) -> std::io::Result<Vec<Pat
         )?;
         let svg = figures::residual_plot(sec, &claims, &input.bits);
         put(&format!("figures/residuals-{}.svg", sec.stem), svg)?;
+    }
+    let structure = proofs::Structure::new(input.results, &input.places);
+    for env in proofs::environments() {
+        put(
+            &format!("proofs/{}.md", env.page()),
+            proofs::page(input, &structure, &env),
+        )?;
     }
     put("README.md", markdown::readme(input))?;
     put("errata.md", markdown::errata(input))?;

@@ -14,9 +14,10 @@
 //! assert_eq!(Role::parse("proof-step"), Some(Role::ProofStep));
 //! ```
 
-use super::claim::{Body, Catalogue, Claim};
+use super::claim::{Body, Catalogue, Claim, PExpr};
 use super::source::LoadError;
-use crate::claims::kind::Kind;
+use crate::claims::ast::{Expr, ExprKind, Span};
+use crate::claims::kind::{Form, Kind};
 use std::collections::{BTreeMap, BTreeSet};
 
 /// The theorem-like environments of the paper, in the order in which they are printed.
@@ -310,7 +311,127 @@ pub fn check(cat: &Catalogue) -> Result<(), LoadError> {
         .collect();
     check_uses(cat, &index)?;
     check_cycles(cat, &index)?;
-    check_statements(cat, &fields)
+    check_statements(cat, &fields)?;
+    check_printed(cat)
+}
+
+/// The calls in an expression: (function name, span of the call).
+fn calls(e: &Expr) -> Vec<(String, Span)> {
+    let mut out = Vec::new();
+    e.walk(&mut |x| {
+        if let ExprKind::Call(n, _) = &x.kind {
+            out.push((n.clone(), x.span));
+        }
+    });
+    out
+}
+
+/// Functions that rest on a definition marked as corrected: name → id of that definition
+/// (directly, or through the definitions they call).
+pub fn corrected_functions(cat: &Catalogue) -> BTreeMap<String, String> {
+    let mut out: BTreeMap<String, String> = BTreeMap::new();
+    for c in &cat.claims {
+        if let (Body::Definition(bs), Form::Corrected) = (&c.body, c.form) {
+            for b in bs {
+                out.insert(b.name.clone(), c.id.clone());
+            }
+        }
+    }
+    loop {
+        let mut added = false;
+        for c in &cat.claims {
+            let Body::Definition(bs) = &c.body else {
+                continue;
+            };
+            for b in bs {
+                if out.contains_key(&b.name) {
+                    continue;
+                }
+                let via = calls(&b.body)
+                    .into_iter()
+                    .find_map(|(n, _)| out.get(&n).cloned());
+                if let Some(id) = via {
+                    out.insert(b.name.clone(), id);
+                    added = true;
+                }
+            }
+        }
+        if !added {
+            return out;
+        }
+    }
+}
+
+/// The expressions of a claim that carry positions (not its `let` and `define` blocks).
+fn located_exprs(c: &Claim) -> Vec<&PExpr> {
+    let mut all: Vec<&PExpr> = c.vars.iter().map(|v| &v.1).collect();
+    all.extend(c.wheres.iter());
+    all.extend(c.scale.iter());
+    match &c.body {
+        Body::Identity { lhs, rhs } => all.extend([lhs, rhs]),
+        Body::Independence { expr, .. } | Body::Asymptotic { expr, .. } => all.push(expr),
+        Body::Existence {
+            equations,
+            start,
+            in_set,
+            ..
+        } => {
+            all.extend(equations.iter());
+            all.extend(start.iter());
+            all.extend(in_set.iter());
+        }
+        Body::Negation(inner) => all.extend(located_exprs(inner)),
+        Body::Definition(_) => {}
+    }
+    all
+}
+
+/// An error at a claim's `file:line` (for text without positions of its own).
+fn claim_error(c: &Claim, message: String) -> LoadError {
+    let (file, line) = c.position.rsplit_once(':').unwrap_or((&c.position, "0"));
+    LoadError {
+        file: file.to_string(),
+        line: line.parse().unwrap_or(0),
+        col: 1,
+        message,
+        line_text: "[[claim]]".to_string(),
+        width: 9,
+    }
+}
+
+/// No claim in printed form calls a function that rests on a definition marked as
+/// corrected: a printed statement is judged with the paper's own definitions.
+fn check_printed(cat: &Catalogue) -> Result<(), LoadError> {
+    let tainted = corrected_functions(cat);
+    let say = |c: &Claim, f: &str| {
+        format!(
+            "printed claim '{}' uses '{f}', which rests on the corrected definition '{}': use the paper's definitions, or make the claim corrected",
+            c.id, tainted[f]
+        )
+    };
+    for c in cat.claims.iter().filter(|c| c.form == Form::Printed) {
+        for p in located_exprs(c) {
+            if let Some((n, span)) = calls(&p.expr)
+                .into_iter()
+                .find(|(n, _)| tainted.contains_key(n))
+            {
+                return Err(p.origin.error(Some(span), say(c, &n)));
+            }
+        }
+        let mut blocks: Vec<&Expr> = c.lets.iter().map(|b| &b.body).collect();
+        if let Body::Negation(inner) = &c.body {
+            blocks.extend(inner.lets.iter().map(|b| &b.body));
+        }
+        if let Body::Definition(bs) = &c.body {
+            blocks.extend(bs.iter().map(|b| &b.body));
+        }
+        for e in blocks {
+            if let Some((n, _)) = calls(e).into_iter().find(|(n, _)| tainted.contains_key(n)) {
+                return Err(claim_error(c, say(c, &n)));
+            }
+        }
+    }
+    Ok(())
 }
 
 #[cfg(test)]
@@ -437,5 +558,48 @@ mod tests {
         let src = "[[claim]]\nid = \"n\"\nlocation = \"l\"\nprinted = 'p'\nkind = \"negation\"\nexpect = \"holds\"\nenvironment = \"Section 2\"\nrole = \"statement\"\n[claim.inner]\nkind = \"identity\"\nlhs = \"1\"\nrhs = \"2\"\nrole = \"statement\"\n";
         let e = err(src);
         assert!(e.message.contains("belong to the outer claim"), "{e}");
+    }
+
+    fn def(id: &str, form: &str, body: &str) -> String {
+        let fix = if form == "corrected" {
+            "corrects = \"a\"\n"
+        } else {
+            ""
+        };
+        format!(
+            "[[claim]]\nid = \"{id}\"\nlocation = \"l\"\nprinted = 'p'\nkind = \"definition\"\nform = \"{form}\"\n{fix}environment = \"Section 2\"\nrole = \"definition\"\ndefine = '''\n{body}\n'''\n"
+        )
+    }
+
+    fn stated(id: &str, extra: &str, lhs: &str) -> String {
+        claim(
+            id,
+            &format!("environment = \"Section 2\"\nrole = \"statement\"\n{extra}"),
+        )
+        .replace("lhs = \"1\"", &format!("lhs = \"{lhs}\""))
+    }
+
+    #[test]
+    fn printed_claims_use_no_corrected_definition() {
+        let base = stated("a", "", "1")
+            + &def("good", "printed", "f(x) = x")
+            + &def("fix", "corrected", "g(x) = 2 * x");
+        // a printed claim calling g: the error points at the call
+        let e = err(&(base.clone() + &stated("b", "", "f(1) + g(1)")));
+        assert!(
+            e.message.contains("printed claim 'b' uses 'g'") && e.message.contains("'fix'"),
+            "{e}"
+        );
+        assert_eq!(e.col, 15, "{e}");
+        // through a let binding, and through a printed definition that calls g
+        let e = err(&(base.clone() + &stated("b", "let = '''\ny = g(2)\n'''", "y")));
+        assert!(e.message.contains("printed claim 'b' uses 'g'"), "{e}");
+        let e = err(&(base.clone() + &def("via", "printed", "k(x) = g(x) + 1")));
+        assert!(e.message.contains("printed claim 'via' uses 'g'"), "{e}");
+        // corrected claims may use it, also through a corrected definition
+        let ok = base
+            + &def("via", "corrected", "k(x) = g(x) + 1")
+            + &stated("c", "form = \"corrected\"\ncorrects = \"a\"", "k(1) - 2");
+        assert!(load(&ok).is_ok());
     }
 }

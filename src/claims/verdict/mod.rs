@@ -89,6 +89,8 @@ pub fn verify(
 /// let toml = r#"
 /// [[claim]]
 /// id = "pythagoras"
+/// environment = "Section 2"
+/// role = "statement"
 /// location = "anywhere"
 /// printed = 'sin^2 x + cos^2 x = 1'
 /// kind = "identity"

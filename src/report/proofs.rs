@@ -1,0 +1,821 @@
+//! One page per environment of the paper (`reports/proofs/*.md`): the printed statement and
+//! the claims that encode it, the printed proof step by step, the rolled-up status and a
+//! dependency diagram.
+//!
+//! The rollup rule (also written in `reports/README.md`, see [`RULE`]):
+//! * **statement**: the environment's `statement` claims in printed form.  If one is
+//!   refuted, the statement *fails as printed*, and the corrected statement (the other
+//!   printed statement claims with the claims that correct the refuted ones) is rolled up
+//!   in the same way; else *inconclusive* if one is inconclusive; else *proved* if every
+//!   one is proved (definitions aside); else *holds*.
+//! * **proof**: the `proof-step` claims in printed form, with every claim that a step or a
+//!   statement claim `uses` outside the statement.  *Every step verified* when all hold, are
+//!   proved or are definitions; *complete after corrections* when the only failures are
+//!   refuted printed claims that each have a correction that holds (the errata are named);
+//!   else it *has a gap* (the inconclusive claims, or refuted ones without a correction
+//!   that holds, are named).  An environment without proof steps: *no proof printed*.
+
+use super::decimal::round_numbers;
+use super::markdown::{anchor, best_residual, verdict_badge};
+use super::paper_text::to_markdown;
+use super::{stem_of, ReportInput};
+use crate::claims::kind::Form;
+use crate::claims::structure::{Environment, Place, Role, ENVIRONMENTS};
+use crate::claims::verdict::{ClaimResult, Counterexample, Verdict};
+use std::collections::{BTreeMap, BTreeSet};
+use std::fmt::Write;
+
+/// The rollup rule, as written in the report's README.
+pub const RULE: &str = "\
+- **Statement.** The environment's claims with role `statement`, in printed form. If one of them is refuted, the statement **fails as printed**; the corrected statement (the other printed statement claims together with the claims that correct the refuted ones) is then rolled up by the same rule and shown after it. Otherwise the statement is **inconclusive** if one claim is inconclusive, **proved** if every claim is proved (definitions aside), and else it **holds**.
+- **Proof.** The claims with role `proof-step`, in printed form, together with every claim that a step or a statement claim `uses` (outside the statement itself). **Every step verified**: all of them hold, are proved or are definitions. **Complete after corrections**: the only failures are refuted printed claims, each with a corrected claim that holds or is proved; the errata are named. **Has a gap**: a claim is inconclusive, or refuted without a correction that holds; the claim is named. An environment without proof steps has **no proof printed** (the paper gives none).";
+
+/// Status of an environment's statement.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StatementStatus {
+    /// Every statement claim is proved.
+    Proved,
+    /// Every statement claim holds or is proved.
+    Holds,
+    /// Only definitions.
+    Definition,
+    /// Some statement claim is inconclusive (named).
+    Inconclusive(Vec<String>),
+    /// Some printed statement claim is refuted (named); the corrected statement's status.
+    FailsAsPrinted {
+        /// The refuted printed claims.
+        refuted: Vec<String>,
+        /// Status of the corrected statement.
+        corrected: Box<StatementStatus>,
+    },
+    /// No statement claim.
+    Missing,
+}
+
+/// Status of an environment's proof.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ProofStatus {
+    /// The paper prints no proof.
+    NoProof,
+    /// Every step verified (the number of claims).
+    Verified(usize),
+    /// Complete after the named errata.
+    AfterCorrections(Vec<String>),
+    /// Gaps: (claim id, why).
+    Gap(Vec<(String, String)>),
+}
+
+/// The rolled-up status of one environment.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Rollup {
+    /// The statement.
+    pub statement: StatementStatus,
+    /// The proof.
+    pub proof: ProofStatus,
+}
+
+/// Claims of the catalogue with their places, for the rollup and the pages.
+pub struct Structure<'a> {
+    /// Results in catalogue order.
+    pub results: &'a [ClaimResult],
+    /// Place of each claim id.
+    pub places: &'a BTreeMap<String, Place>,
+    by_id: BTreeMap<&'a str, &'a ClaimResult>,
+}
+
+impl<'a> Structure<'a> {
+    /// Indexes the results.
+    pub fn new(results: &'a [ClaimResult], places: &'a BTreeMap<String, Place>) -> Self {
+        let by_id = results.iter().map(|r| (r.id.as_str(), r)).collect();
+        Structure {
+            results,
+            places,
+            by_id,
+        }
+    }
+
+    /// A result by id.
+    pub fn get(&self, id: &str) -> Option<&'a ClaimResult> {
+        self.by_id.get(id).copied()
+    }
+
+    /// The claims of one environment with a role, in catalogue order.
+    pub fn claims(&self, env: &Environment, role: Option<Role>) -> Vec<&'a ClaimResult> {
+        self.results
+            .iter()
+            .filter(|r| {
+                self.places
+                    .get(&r.id)
+                    .is_some_and(|p| p.environment == *env && role.is_none_or(|x| p.role == x))
+            })
+            .collect()
+    }
+
+    /// The claims that correct `id`.
+    pub fn corrections(&self, id: &str) -> Vec<&'a ClaimResult> {
+        self.results
+            .iter()
+            .filter(|r| r.corrects.as_deref() == Some(id))
+            .collect()
+    }
+
+    fn uses(&self, id: &str) -> &'a [String] {
+        self.places.get(id).map_or(&[], |p| p.uses.as_slice())
+    }
+}
+
+fn simple_status(claims: &[&ClaimResult]) -> StatementStatus {
+    if claims.is_empty() {
+        return StatementStatus::Missing;
+    }
+    let inconclusive: Vec<String> = claims
+        .iter()
+        .filter(|r| r.verdict == Verdict::Inconclusive)
+        .map(|r| r.id.clone())
+        .collect();
+    if !inconclusive.is_empty() {
+        return StatementStatus::Inconclusive(inconclusive);
+    }
+    if claims.iter().all(|r| r.verdict == Verdict::Defined) {
+        StatementStatus::Definition
+    } else if claims
+        .iter()
+        .all(|r| matches!(r.verdict, Verdict::Proved | Verdict::Defined))
+    {
+        StatementStatus::Proved
+    } else {
+        StatementStatus::Holds
+    }
+}
+
+/// The statement rule.
+pub fn statement_status(s: &Structure, env: &Environment) -> StatementStatus {
+    let printed: Vec<&ClaimResult> = s
+        .claims(env, Some(Role::Statement))
+        .into_iter()
+        .filter(|r| r.form == Form::Printed)
+        .collect();
+    let refuted: Vec<&ClaimResult> = printed
+        .iter()
+        .copied()
+        .filter(|r| r.verdict == Verdict::Refuted)
+        .collect();
+    if refuted.is_empty() {
+        return simple_status(&printed);
+    }
+    let mut corrected: Vec<&ClaimResult> = printed
+        .iter()
+        .copied()
+        .filter(|r| r.verdict != Verdict::Refuted)
+        .collect();
+    let mut fixes_all = true;
+    for r in &refuted {
+        let fixes = s.corrections(&r.id);
+        fixes_all &= !fixes.is_empty();
+        corrected.extend(fixes);
+    }
+    let corrected = if fixes_all {
+        simple_status(&corrected)
+    } else {
+        StatementStatus::Missing
+    };
+    StatementStatus::FailsAsPrinted {
+        refuted: refuted.iter().map(|r| r.id.clone()).collect(),
+        corrected: Box::new(corrected),
+    }
+}
+
+/// The claims the proof rests on: printed proof steps, and what steps and statement claims
+/// use outside the statement, in catalogue order.
+pub fn proof_claims<'a>(s: &Structure<'a>, env: &Environment) -> Vec<&'a ClaimResult> {
+    let statement: BTreeSet<&str> = s
+        .claims(env, Some(Role::Statement))
+        .iter()
+        .map(|r| r.id.as_str())
+        .collect();
+    let steps: Vec<&ClaimResult> = s
+        .claims(env, Some(Role::ProofStep))
+        .into_iter()
+        .filter(|r| r.form == Form::Printed)
+        .collect();
+    let mut ids: BTreeSet<&str> = steps.iter().map(|r| r.id.as_str()).collect();
+    for r in steps.iter().copied().chain(
+        s.claims(env, Some(Role::Statement))
+            .into_iter()
+            .filter(|r| r.form == Form::Printed),
+    ) {
+        for u in s.uses(&r.id) {
+            if !statement.contains(u.as_str()) && s.get(u).is_some_and(|x| x.form == Form::Printed)
+            {
+                ids.insert(u);
+            }
+        }
+    }
+    s.results
+        .iter()
+        .filter(|r| ids.contains(r.id.as_str()))
+        .collect()
+}
+
+fn correction_holds(s: &Structure, id: &str) -> bool {
+    s.corrections(id).iter().any(|f| {
+        matches!(
+            f.verdict,
+            Verdict::Holds | Verdict::Proved | Verdict::Defined
+        )
+    })
+}
+
+/// The proof rule.
+pub fn proof_status(s: &Structure, env: &Environment) -> ProofStatus {
+    if s.claims(env, Some(Role::ProofStep)).is_empty() {
+        return ProofStatus::NoProof;
+    }
+    let claims = proof_claims(s, env);
+    let mut gaps = Vec::new();
+    let mut errata = Vec::new();
+    for r in &claims {
+        match r.verdict {
+            Verdict::Inconclusive => gaps.push((r.id.clone(), "inconclusive".to_string())),
+            Verdict::Refuted if correction_holds(s, &r.id) => errata.push(r.id.clone()),
+            Verdict::Refuted => {
+                gaps.push((r.id.clone(), "refuted, no correction holds".to_string()))
+            }
+            _ => {}
+        }
+    }
+    if !gaps.is_empty() {
+        ProofStatus::Gap(gaps)
+    } else if !errata.is_empty() {
+        ProofStatus::AfterCorrections(errata)
+    } else {
+        ProofStatus::Verified(claims.len())
+    }
+}
+
+/// Both rules for one environment.
+pub fn rollup(s: &Structure, env: &Environment) -> Rollup {
+    Rollup {
+        statement: statement_status(s, env),
+        proof: proof_status(s, env),
+    }
+}
+
+/// The thirteen environments in the paper's order.
+pub fn environments() -> Vec<Environment> {
+    (0..ENVIRONMENTS.len()).map(Environment::Named).collect()
+}
+
+/// Link to a claim on its environment page (`prefix` leads to `reports/`), or to its section
+/// page when its environment has no page.
+pub fn claim_link(s: &Structure, id: &str, prefix: &str) -> String {
+    match s.places.get(id).map(|p| &p.environment) {
+        Some(Environment::Named(j)) => format!(
+            "{prefix}proofs/{}.md#{}",
+            Environment::Named(*j).page(),
+            anchor(id)
+        ),
+        _ => s
+            .get(id)
+            .map(|r| format!("{prefix}{}.md#{}", stem_of(r), anchor(id)))
+            .unwrap_or_default(),
+    }
+}
+
+fn ids_text(ids: &[String], s: &Structure, prefix: &str) -> String {
+    ids.iter()
+        .map(|i| format!("[`{i}`]({})", claim_link(s, i, prefix)))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The statement status as text (links relative to `prefix`).
+pub fn statement_text(st: &StatementStatus, s: &Structure, prefix: &str) -> String {
+    match st {
+        StatementStatus::Proved => "✓✓ proved".into(),
+        StatementStatus::Holds => "✓ holds".into(),
+        StatementStatus::Definition => "≔ definition".into(),
+        StatementStatus::Missing => "— no claim".into(),
+        StatementStatus::Inconclusive(ids) => {
+            format!("? inconclusive ({})", ids_text(ids, s, prefix))
+        }
+        StatementStatus::FailsAsPrinted { refuted, corrected } => format!(
+            "✗ fails as printed (refuted: {}); corrected statement: {}",
+            ids_text(refuted, s, prefix),
+            statement_text(corrected, s, prefix)
+        ),
+    }
+}
+
+/// The proof status as text.
+pub fn proof_text(p: &ProofStatus, s: &Structure, prefix: &str) -> String {
+    match p {
+        ProofStatus::NoProof => "no proof printed in the paper".into(),
+        ProofStatus::Verified(n) => format!("✓ every step verified ({n} claims)"),
+        ProofStatus::AfterCorrections(ids) => format!(
+            "✓ complete after corrections (errata: {})",
+            ids_text(ids, s, prefix)
+        ),
+        ProofStatus::Gap(g) => {
+            let parts: Vec<String> = g
+                .iter()
+                .map(|(i, why)| format!("[`{i}`]({}) {why}", claim_link(s, i, prefix)))
+                .collect();
+            format!("? has a gap: {}", parts.join("; "))
+        }
+    }
+}
+
+/// The table of the thirteen environments that opens `reports/README.md`.
+pub fn index_table(s: &Structure) -> String {
+    let mut t = String::from("| environment | statement | proof | claims |\n|---|---|---|---|\n");
+    for env in environments() {
+        let r = rollup(s, &env);
+        let n = s.claims(&env, None).len();
+        let _ = writeln!(
+            t,
+            "| [{}](proofs/{}.md) | {} | {} | {} |",
+            env.name(),
+            env.page(),
+            statement_text(&r.statement, s, ""),
+            proof_text(&r.proof, s, ""),
+            n
+        );
+    }
+    t
+}
+
+/// A counterexample as decimals (12 significant digits), with the exact values in a
+/// collapsed block when rounding changed any of them.
+pub fn counterexample_block(c: &Counterexample) -> String {
+    let mut s = String::new();
+    let mut exact = String::new();
+    let mut changed = false;
+    let mut row = |name: &str, value: &str, s: &mut String| {
+        let (d, ch) = round_numbers(value);
+        changed |= ch;
+        let _ = writeln!(s, "- {name} = `{d}`");
+        let _ = writeln!(exact, "- {name} = `{value}`");
+    };
+    for p in &c.point {
+        row(&format!("`{}`", p.name), &p.value, &mut s);
+    }
+    row("left side", &c.lhs, &mut s);
+    row("right side", &c.rhs, &mut s);
+    if changed {
+        let _ = write!(
+            s,
+            "\n<details><summary>Exact values</summary>\n\n{exact}\n</details>\n"
+        );
+    }
+    s
+}
+
+fn verdict_class(v: Verdict) -> &'static str {
+    match v {
+        Verdict::Holds => "holds",
+        Verdict::Proved => "proved",
+        Verdict::Refuted => "refuted",
+        Verdict::Inconclusive => "inconclusive",
+        Verdict::Defined => "defined",
+    }
+}
+
+/// The Mermaid dependency diagram: the environment's claims (definitions, background and
+/// controls left out) and the statements and steps of other environments that they use.
+pub fn mermaid(s: &Structure, env: &Environment) -> String {
+    let own: Vec<&ClaimResult> = s
+        .claims(env, None)
+        .into_iter()
+        .filter(|r| {
+            s.places.get(&r.id).is_some_and(|p| {
+                matches!(
+                    p.role,
+                    Role::Statement | Role::ProofStep | Role::Consequence
+                )
+            })
+        })
+        .collect();
+    let own_ids: BTreeSet<&str> = own.iter().map(|r| r.id.as_str()).collect();
+    let mut nodes: Vec<(&ClaimResult, bool)> = own.iter().map(|r| (*r, true)).collect();
+    let mut edges: Vec<(String, String)> = Vec::new();
+    for r in &own {
+        for u in s.uses(&r.id) {
+            let Some(ur) = s.get(u) else { continue };
+            let wanted = own_ids.contains(u.as_str())
+                || s.places.get(u).is_some_and(|p| {
+                    matches!(
+                        p.role,
+                        Role::Statement | Role::ProofStep | Role::Consequence
+                    )
+                });
+            if !wanted {
+                continue;
+            }
+            if !nodes.iter().any(|(n, _)| n.id == *u) {
+                nodes.push((ur, false));
+            }
+            edges.push((u.clone(), r.id.clone()));
+        }
+    }
+    let key = |id: &str| nodes.iter().position(|(n, _)| n.id == id).unwrap_or(0);
+    let mut m = String::from("```mermaid\nflowchart TD\n");
+    for (j, (r, inside)) in nodes.iter().enumerate() {
+        let statement = s
+            .places
+            .get(&r.id)
+            .is_some_and(|p| p.role == Role::Statement && p.environment == *env);
+        let (open, close) = if statement { ("([", "])") } else { ("[", "]") };
+        let env_note = if *inside {
+            String::new()
+        } else {
+            s.places
+                .get(&r.id)
+                .map(|p| format!(" · {}", p.environment.name()))
+                .unwrap_or_default()
+        };
+        let _ = writeln!(
+            m,
+            "  n{j}{open}\"{}<br/>{}{env_note}\"{close}:::{}{}",
+            r.id,
+            verdict_badge(r.verdict),
+            verdict_class(r.verdict),
+            if *inside { "" } else { "_ext" }
+        );
+    }
+    for (a, b) in &edges {
+        let _ = writeln!(m, "  n{} --> n{}", key(a), key(b));
+    }
+    m.push_str(MERMAID_CLASSES);
+    m.push_str("```\n");
+    m
+}
+
+const MERMAID_CLASSES: &str = concat!(
+    "  classDef proved fill:#1a7f37,stroke:#116329,color:#ffffff\n",
+    "  classDef holds fill:#dafbe1,stroke:#1a7f37,color:#000000\n",
+    "  classDef refuted fill:#ffebe9,stroke:#cf222e,color:#000000\n",
+    "  classDef inconclusive fill:#fff8c5,stroke:#9a6700,color:#000000\n",
+    "  classDef defined fill:#f6f8fa,stroke:#57606a,color:#000000\n",
+    "  classDef proved_ext fill:#1a7f37,stroke:#116329,color:#ffffff,stroke-dasharray:4 3\n",
+    "  classDef holds_ext fill:#dafbe1,stroke:#1a7f37,color:#000000,stroke-dasharray:4 3\n",
+    "  classDef refuted_ext fill:#ffebe9,stroke:#cf222e,color:#000000,stroke-dasharray:4 3\n",
+    "  classDef inconclusive_ext fill:#fff8c5,stroke:#9a6700,color:#000000,stroke-dasharray:4 3\n",
+    "  classDef defined_ext fill:#f6f8fa,stroke:#57606a,color:#000000,stroke-dasharray:4 3\n",
+);
+
+/// One claim on an environment page: anchor, verdict, evidence link, printed excerpt,
+/// uses, corrections and counterexample.
+fn claim_entry(input: &ReportInput, s: &Structure, r: &ClaimResult, n: usize) -> String {
+    let mut t = String::new();
+    let _ = writeln!(t, "<a id=\"{}\"></a>\n", anchor(&r.id));
+    let _ = writeln!(
+        t,
+        "**{n}. `{}`** — {} · {} · [evidence](../{}.md#{})\n",
+        r.id,
+        verdict_badge(r.verdict),
+        r.form,
+        stem_of(r),
+        anchor(&r.id)
+    );
+    let _ = writeln!(t, "{}\n", r.location);
+    t.push_str(&super::markdown::printed_markdown(input, &r.printed));
+    if r.verdict != Verdict::Defined {
+        let _ = writeln!(t, "Best residual: {}; {}.\n", best_residual(r), r.reason);
+    }
+    let uses = s.uses(&r.id);
+    if !uses.is_empty() {
+        let links: Vec<String> = uses
+            .iter()
+            .map(|u| {
+                let v = s.get(u).map_or("", |x| verdict_badge(x.verdict));
+                format!("[`{u}`]({}) ({v})", claim_link(s, u, "../"))
+            })
+            .collect();
+        let _ = writeln!(t, "Uses: {}.\n", links.join(", "));
+    }
+    if let Some(c) = &r.corrects {
+        let _ = writeln!(t, "Corrects [`{c}`]({}).\n", claim_link(s, c, "../"));
+    }
+    for f in s.corrections(&r.id) {
+        let _ = writeln!(
+            t,
+            "Corrected by [`{}`]({}) — {}.\n",
+            f.id,
+            claim_link(s, &f.id, "../"),
+            verdict_badge(f.verdict)
+        );
+    }
+    if let Some(c) = &r.counterexample {
+        let _ = writeln!(t, "Counterexample:\n\n{}", counterexample_block(c));
+    }
+    t
+}
+
+fn statement_section(input: &ReportInput, s: &Structure, env: &Environment) -> String {
+    let mut t = String::from("## Statement\n\n");
+    if let Some(text) = input.environments.get(&env.name()) {
+        let _ = writeln!(t, "{}\n", to_markdown(&text.statement, &input.macros));
+    }
+    let claims = s.claims(env, Some(Role::Statement));
+    let _ = writeln!(t, "Encoded by {} claims:\n", claims.len());
+    let _ = writeln!(
+        t,
+        "| claim | what it checks | form | verdict | best residual (evidence) |"
+    );
+    let _ = writeln!(t, "|---|---|---|---|---|");
+    for r in &claims {
+        let _ = writeln!(
+            t,
+            "| <a id=\"{}\"></a>`{}` | {} | {} | {} | [{}](../{}.md#{}) |",
+            anchor(&r.id),
+            r.id,
+            r.location.replace('|', "\\|"),
+            r.form,
+            verdict_badge(r.verdict),
+            best_residual(r),
+            stem_of(r),
+            anchor(&r.id)
+        );
+    }
+    t.push('\n');
+    for r in claims.iter().filter(|r| r.verdict == Verdict::Refuted) {
+        let fixes: Vec<String> = s
+            .corrections(&r.id)
+            .iter()
+            .map(|f| {
+                format!(
+                    "[`{}`]({}) ({})",
+                    f.id,
+                    claim_link(s, &f.id, "../"),
+                    verdict_badge(f.verdict)
+                )
+            })
+            .collect();
+        let _ = writeln!(
+            t,
+            "`{}` is refuted; corrected by {}.\n",
+            r.id,
+            if fixes.is_empty() {
+                "no claim".to_string()
+            } else {
+                fixes.join(", ")
+            }
+        );
+        if let Some(n) = &r.note {
+            let _ = writeln!(
+                t,
+                "{}\n",
+                n.split_whitespace().collect::<Vec<_>>().join(" ")
+            );
+        }
+        if let Some(c) = &r.counterexample {
+            let _ = writeln!(t, "Counterexample:\n\n{}", counterexample_block(c));
+        }
+    }
+    t
+}
+
+fn proof_section(input: &ReportInput, s: &Structure, env: &Environment) -> String {
+    let mut t = String::from("## Proof\n\n");
+    let printed = input
+        .environments
+        .get(&env.name())
+        .and_then(|e| e.proof.as_ref());
+    if let Some(p) = printed {
+        let _ = writeln!(
+            t,
+            "<details><summary>The printed proof</summary>\n\n{}\n\n</details>\n",
+            to_markdown(p, &input.macros)
+        );
+    }
+    let steps = s.claims(env, Some(Role::ProofStep));
+    if steps.is_empty() {
+        let _ = writeln!(
+            t,
+            "The paper prints no proof; the statement claims above are checked directly.\n"
+        );
+        return t;
+    }
+    let _ = writeln!(t, "The steps, in the paper's order:\n");
+    for (j, r) in steps.iter().enumerate() {
+        t.push_str(&claim_entry(input, s, r, j + 1));
+    }
+    t
+}
+
+fn other_section(input: &ReportInput, s: &Structure, env: &Environment) -> String {
+    let mut t = String::new();
+    for (role, title) in [
+        (Role::Definition, "Definitions"),
+        (Role::Consequence, "Consequences"),
+        (Role::Background, "Background facts"),
+        (Role::Control, "Controls"),
+    ] {
+        let claims = s.claims(env, Some(role));
+        if claims.is_empty() {
+            continue;
+        }
+        let _ = writeln!(t, "## {title}\n");
+        for (j, r) in claims.iter().enumerate() {
+            t.push_str(&claim_entry(input, s, r, j + 1));
+        }
+    }
+    t
+}
+
+/// The page `reports/proofs/<environment>.md`.
+pub fn page(input: &ReportInput, s: &Structure, env: &Environment) -> String {
+    let mut t = String::new();
+    let r = rollup(s, env);
+    let _ = writeln!(t, "# {}\n", env.name());
+    let _ = writeln!(
+        t,
+        "[← report index](../README.md) · [errata](../errata.md) · generated by `{}`\n",
+        input.command
+    );
+    let _ = writeln!(
+        t,
+        "**Status:** statement {} · proof: {}\n",
+        statement_text(&r.statement, s, "../"),
+        proof_text(&r.proof, s, "../")
+    );
+    t.push_str(&statement_section(input, s, env));
+    t.push_str(&proof_section(input, s, env));
+    t.push_str(&other_section(input, s, env));
+    let _ = writeln!(t, "## Dependencies\n");
+    t.push_str(&mermaid(s, env));
+    let _ = writeln!(t, "\n*An arrow runs from a claim to a claim that uses it; rounded boxes are the statement, dashed boxes belong to other environments. Definitions and background facts are listed above, not drawn.*");
+    t
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::claims::verdict::Named;
+
+    fn result(id: &str, verdict: Verdict, form: &str, corrects: Option<&str>) -> ClaimResult {
+        ClaimResult {
+            id: id.into(),
+            labels: vec![],
+            location: "l".into(),
+            position: "identities/x.toml:1".into(),
+            printed: "x".into(),
+            rendered: vec![],
+            kind: crate::claims::kind::Kind::Identity,
+            form: if form == "printed" {
+                Form::Printed
+            } else {
+                Form::Corrected
+            },
+            corrects: corrects.map(str::to_string),
+            expect: None,
+            verdict,
+            as_expected: true,
+            residuals: vec![],
+            loss_bits: None,
+            max_loss_bits: 24.0,
+            samples: 1,
+            failures: vec![],
+            counterexample: None,
+            exact: None,
+            note: None,
+            reason: String::new(),
+        }
+    }
+
+    fn place(env: usize, role: Role, uses: &[&str]) -> Place {
+        Place {
+            environment: Environment::Named(env),
+            role,
+            uses: uses.iter().map(|u| u.to_string()).collect(),
+        }
+    }
+
+    /// Lemma 1 (index 5): statement s, steps p1, p2 (p2 uses x of Theorem 1).
+    fn fixture(
+        vs: [Verdict; 4],
+        fix: Option<Verdict>,
+    ) -> (Vec<ClaimResult>, BTreeMap<String, Place>) {
+        let mut rs = vec![
+            result("s", vs[0], "printed", None),
+            result("p1", vs[1], "printed", None),
+            result("p2", vs[2], "printed", None),
+            result("x", vs[3], "printed", None),
+        ];
+        let mut pl = BTreeMap::from([
+            ("s".to_string(), place(5, Role::Statement, &["p2"])),
+            ("p1".to_string(), place(5, Role::ProofStep, &[])),
+            ("p2".to_string(), place(5, Role::ProofStep, &["p1", "x"])),
+            ("x".to_string(), place(6, Role::Statement, &[])),
+        ]);
+        if let Some(v) = fix {
+            let target = if vs[0] == Verdict::Refuted { "s" } else { "x" };
+            rs.push(result("fix", v, "corrected", Some(target)));
+            let env = if target == "s" { 5 } else { 6 };
+            pl.insert("fix".into(), place(env, Role::Statement, &[]));
+        }
+        (rs, pl)
+    }
+
+    fn roll(vs: [Verdict; 4], fix: Option<Verdict>) -> Rollup {
+        let (rs, pl) = fixture(vs, fix);
+        let s = Structure::new(&rs, &pl);
+        rollup(&s, &Environment::Named(5))
+    }
+
+    use Verdict::{Holds as H, Inconclusive as I, Proved as P, Refuted as R};
+
+    #[test]
+    fn statement_rule() {
+        assert_eq!(roll([P, P, P, P], None).statement, StatementStatus::Proved);
+        assert_eq!(roll([H, P, P, P], None).statement, StatementStatus::Holds);
+        assert_eq!(
+            roll([I, P, P, P], None).statement,
+            StatementStatus::Inconclusive(vec!["s".into()])
+        );
+        assert_eq!(
+            roll([R, P, P, P], Some(P)).statement,
+            StatementStatus::FailsAsPrinted {
+                refuted: vec!["s".into()],
+                corrected: Box::new(StatementStatus::Proved)
+            }
+        );
+        assert_eq!(
+            roll([R, P, P, P], None).statement,
+            StatementStatus::FailsAsPrinted {
+                refuted: vec!["s".into()],
+                corrected: Box::new(StatementStatus::Missing)
+            }
+        );
+    }
+
+    #[test]
+    fn proof_rule() {
+        assert_eq!(roll([P, H, P, P], None).proof, ProofStatus::Verified(3));
+        // a refuted claim used by a step, with a correction that holds
+        assert_eq!(
+            roll([P, P, P, R], Some(H)).proof,
+            ProofStatus::AfterCorrections(vec!["x".into()])
+        );
+        // ... and without one
+        assert_eq!(
+            roll([P, P, P, R], Some(R)).proof,
+            ProofStatus::Gap(vec![("x".into(), "refuted, no correction holds".into())])
+        );
+        assert_eq!(
+            roll([P, I, P, P], None).proof,
+            ProofStatus::Gap(vec![("p1".into(), "inconclusive".into())])
+        );
+        let (rs, mut pl) = fixture([P, P, P, P], None);
+        pl.get_mut("p1").unwrap().role = Role::Consequence;
+        pl.get_mut("p2").unwrap().role = Role::Consequence;
+        let s = Structure::new(&rs, &pl);
+        assert_eq!(
+            proof_status(&s, &Environment::Named(5)),
+            ProofStatus::NoProof
+        );
+    }
+
+    #[test]
+    fn diagram_draws_uses_and_other_environments() {
+        let (rs, pl) = fixture([H, H, H, R], Some(H));
+        let s = Structure::new(&rs, &pl);
+        let m = mermaid(&s, &Environment::Named(5));
+        assert!(m.starts_with("```mermaid\nflowchart TD\n"), "{m}");
+        assert!(m.contains("n0([\"s<br/>✓ holds\"]):::holds"), "{m}");
+        assert!(
+            m.contains("n3[\"x<br/>✗ refuted · Theorem 1\"]:::refuted_ext"),
+            "{m}"
+        );
+        for e in ["n2 --> n0", "n1 --> n2", "n3 --> n2"] {
+            assert!(m.contains(e), "{e} in {m}");
+        }
+        assert_eq!(m, mermaid(&s, &Environment::Named(5)));
+    }
+
+    #[test]
+    fn counterexamples_in_decimals_with_exact_values_folded() {
+        let c = Counterexample {
+            bits: 0,
+            point: vec![Named {
+                name: "A".into(),
+                value: "1/3".into(),
+            }],
+            lhs: "2".into(),
+            rhs: "5e-1".into(),
+            log2_residual: None,
+        };
+        let b = counterexample_block(&c);
+        assert!(
+            b.starts_with("- `A` = `0.333333333333`\n- left side = `2`\n- right side = `0.5`\n"),
+            "{b}"
+        );
+        assert!(
+            b.contains("<details><summary>Exact values</summary>\n\n- `A` = `1/3`"),
+            "{b}"
+        );
+        let c = Counterexample { point: vec![], ..c };
+        assert!(!counterexample_block(&c).contains("<details>"));
+    }
+}
