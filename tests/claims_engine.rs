@@ -619,11 +619,11 @@ fn undefined_names_are_load_errors_at_their_position() {
 #[test]
 fn recursive_definitions_are_load_errors() {
     let def = |body: &str| {
-        format!("[[claim]]\nid = \"d\"\nlocation = \"l\"\nprinted = 'p'\nkind = \"definition\"\ndefine = '''\n{body}\n'''\n")
+        format!("[[claim]]\nid = \"d\"\nlocation = \"l\"\nprinted = 'p'\nkind = \"definition\"\nenvironment = \"Section 2\"\nrole = \"statement\"\ndefine = '''\n{body}\n'''\n")
     };
     let e = load(&def("f(M) = f(M)")).unwrap_err();
     assert!(
-        e.starts_with("t.toml:7:1: recursive definition: f → f"),
+        e.starts_with("t.toml:9:1: recursive definition: f → f"),
         "{e}"
     );
     let e = load(&def("f(x) = g(x) + 1\ng(x) = 2*f(x)")).unwrap_err();

@@ -12,6 +12,8 @@
 //! id = "square"
 //! location = "Tutorial"
 //! printed = '(a+b)^2 = a^2 + 2ab + b^2'
+//! environment = "Section 2"
+//! role = "statement"
 //! kind = "identity"
 //! expect = "proved"
 //! vars = [["a", "uniform(-2, 2)"], ["b", "uniform(-2, 2)"]]
@@ -36,7 +38,7 @@
 //! ([`crate::bindings::euler_top::registry`]).
 //!
 //! ```
-//! # const TOML: &str = "[[claim]]\nid = \"square\"\nlocation = \"Tutorial\"\nprinted = 'p'\nkind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"uniform(-2, 2)\"], [\"b\", \"uniform(-2, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + 2*a*b + b^2\"\nexact = true\ndegree = 2\n";
+//! # const TOML: &str = "[[claim]]\nid = \"square\"\nlocation = \"Tutorial\"\nprinted = 'p'\nenvironment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"uniform(-2, 2)\"], [\"b\", \"uniform(-2, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + 2*a*b + b^2\"\nexact = true\ndegree = 2\n";
 //! use eulertop::claims::catalogue::{load_sources, Body};
 //! use eulertop::claims::kind::Kind;
 //! use eulertop::claims::registry::Registry;
@@ -51,7 +53,7 @@
 //! let bad = TOML.replace("2*a*b", "2*a*c");
 //! let e = load_sources(&[("t.toml".into(), bad)], Registry::new()).unwrap_err();
 //! assert!(e.to_string().contains(": unknown variable 'c'"));
-//! assert_eq!((e.line, e.col), (9, 18)); // the `c` in `rhs = "a^2 + 2*a*c"`
+//! assert_eq!((e.line, e.col), (11, 18)); // the `c` in `rhs = "a^2 + 2*a*c"`
 //! ```
 //!
 //! # 3. Sampling
@@ -62,7 +64,7 @@
 //! every precision.
 //!
 //! ```
-//! # const TOML: &str = "[[claim]]\nid = \"square\"\nlocation = \"Tutorial\"\nprinted = 'p'\nkind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"uniform(-2, 2)\"], [\"b\", \"uniform(-2, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + 2*a*b + b^2\"\nexact = true\ndegree = 2\n";
+//! # const TOML: &str = "[[claim]]\nid = \"square\"\nlocation = \"Tutorial\"\nprinted = 'p'\nenvironment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"uniform(-2, 2)\"], [\"b\", \"uniform(-2, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + 2*a*b + b^2\"\nexact = true\ndegree = 2\n";
 //! # use eulertop::claims::catalogue::load_sources;
 //! # use eulertop::claims::registry::Registry;
 //! # let cat = load_sources(&[("t.toml".into(), TOML.into())], Registry::new()).unwrap();
@@ -113,7 +115,7 @@
 //! bound turns `holds` into `proved`.  A false claim is `refuted` with a counterexample.
 //!
 //! ```
-//! # const TOML: &str = "[[claim]]\nid = \"square\"\nlocation = \"Tutorial\"\nprinted = 'p'\nkind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"uniform(-2, 2)\"], [\"b\", \"uniform(-2, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + 2*a*b + b^2\"\nexact = true\ndegree = 2\n";
+//! # const TOML: &str = "[[claim]]\nid = \"square\"\nlocation = \"Tutorial\"\nprinted = 'p'\nenvironment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"uniform(-2, 2)\"], [\"b\", \"uniform(-2, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + 2*a*b + b^2\"\nexact = true\ndegree = 2\n";
 //! # use eulertop::claims::catalogue::load_sources;
 //! # use eulertop::claims::registry::Registry;
 //! use eulertop::claims::verdict::{run_claim, Options, Verdict};

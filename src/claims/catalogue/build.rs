@@ -131,6 +131,25 @@ fn expect(tb: &Table<'_>, kind: Kind) -> Result<Option<Verdict>, LoadError> {
     Ok(Some(Verdict::from(*e.get_ref())))
 }
 
+/// The fields a top-level claim must give.
+fn required(tb: &Table<'_>, form: Form) -> Result<(), LoadError> {
+    let t = tb.t;
+    if tb.outer.is_some() {
+        return Ok(());
+    }
+    let fields = [
+        ("location", t.location.is_some()),
+        ("printed", t.printed.is_some()),
+        ("environment", t.environment.is_some()),
+        ("role", t.role.is_some()),
+        ("corrects", form == Form::Printed || t.corrects.is_some()),
+    ];
+    match fields.iter().find(|(_, given)| !given) {
+        Some((what, _)) => Err(tb.missing(what)),
+        None => Ok(()),
+    }
+}
+
 /// Everything but the kind-specific body and the exact settings.
 fn shell(tb: &Table<'_>) -> Result<Claim, LoadError> {
     let (t, o) = (tb.t, tb.outer);
@@ -139,19 +158,7 @@ fn shell(tb: &Table<'_>) -> Result<Claim, LoadError> {
     let form =
         inherit(t.form.as_ref().map(|f| *f.get_ref()), o.map(|o| &o.form)).unwrap_or(Form::Printed);
     let expect = expect(tb, kind)?;
-    if o.is_none() {
-        for (what, given) in [
-            ("location", t.location.is_some()),
-            ("printed", t.printed.is_some()),
-        ] {
-            if !given {
-                return Err(tb.missing(what));
-            }
-        }
-        if form == Form::Corrected && t.corrects.is_none() {
-            return Err(tb.missing("corrects"));
-        }
-    }
+    required(tb, form)?;
     let vars = given(var_list(tb.file, &t.vars, tb.at)?);
     let wheres = given(pexprs(tb.file, &t.wheres)?);
     let lets = match &t.let_ {

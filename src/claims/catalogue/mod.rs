@@ -87,6 +87,8 @@ struct Assembly {
 /// id = "double-angle"
 /// location = "anywhere"
 /// printed = 'sin 2x = 2 sin x cos x'
+/// environment = "Section 2"
+/// role = "statement"
 /// kind = "identity"
 /// expect = "holds"
 /// vars = [["x", "uniform(-3, 3)"]]
@@ -98,7 +100,7 @@ struct Assembly {
 /// // an unknown name is an error with its position
 /// let bad = toml.replace("rhs = \"2*sin(x)", "rhs = \"2*sin(y)");
 /// let e = load_sources(&[("t.toml".into(), bad)], Registry::new()).unwrap_err();
-/// assert_eq!(e.to_string().lines().next(), Some("t.toml:10:14: unknown variable 'y'"));
+/// assert_eq!(e.to_string().lines().next(), Some("t.toml:12:14: unknown variable 'y'"));
 /// ```
 pub fn load_sources(
     sources: &[(String, String)],
