@@ -4,9 +4,9 @@
 //! *Integrable discretizations of the Euler top* (1998).
 //!
 //! Layers, each depending only on the ones before it:
-//! numbers and stats → special functions, linear algebra → model; numbers → claims (the claim
-//! engine, which knows nothing of the Euler top) → bindings (the model's functions in the
-//! catalogue) → outputs (cli, report).
+//! numbers and stats → special functions, linear algebra → model; numbers → claims (the
+//! claim engine, which knows nothing of the Euler top) → bindings (the model's functions
+//! in the catalogue) → outputs (cli, report).
 
 #![warn(missing_docs)]
 // `Scalar::from_i64(&self, ..)` takes `&self` on purpose: precision travels with values.
