@@ -2,8 +2,9 @@
 //! input, evaluator properties, and the verdict engine on identities whose truth is
 //! known mathematically.
 
+use eulertop::claims::builtins::Builtin;
 use eulertop::claims::catalogue::{load_sources, Catalogue};
-use eulertop::claims::eval::Evaluator;
+use eulertop::claims::eval::{Backend, Evaluator};
 use eulertop::claims::parser::{parse_bindings, parse_expr};
 use eulertop::claims::registry::Registry;
 use eulertop::claims::value::Value;
@@ -73,7 +74,7 @@ fn unknown_field_function_kind_and_duplicates_are_errors() {
     );
     let e = load(&claim("kind = \"identiy\"\nexpect = \"holds\"")).unwrap_err();
     assert!(
-        e.contains("unknown kind 'identiy'") && e.starts_with("t.toml:5:"),
+        e.contains("unknown variant `identiy`") && e.starts_with("t.toml:5:8:"),
         "{e}"
     );
     let twice = format!(
@@ -370,4 +371,338 @@ fn a_panicking_registered_function_gives_inconclusive_not_a_crash() {
         r.reason
     );
     assert!(!r.as_expected);
+}
+
+// ---------- depth limits: errors, never stack overflows ----------
+
+#[test]
+fn long_flat_chains_are_syntax_errors_not_crashes() {
+    // 8,400 terms: a chain of operators nests one level per operator
+    let e = parse_expr(&format!("{}1", "1+".repeat(8400))).unwrap_err();
+    assert!(e.message.contains("nested too deeply"), "{}", e.message);
+    // 200 terms are fine and sum up
+    let reg = Registry::new();
+    let ev = Evaluator::new(&reg, 0.0f64);
+    let v = ev
+        .eval(&parse_expr(&format!("{}1", "1+".repeat(199))).unwrap())
+        .unwrap();
+    assert_eq!(v, Value::Real(200.0));
+    // in a catalogue the error has the file position
+    let lhs = format!("{}x", "x+".repeat(2999));
+    let err = load(&claim(&format!(
+        "kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(1, 2)\"]]\nlhs = \"{lhs}\"\nrhs = \"x\""
+    )))
+    .unwrap_err();
+    assert!(err.starts_with("t.toml:8:") && err.contains("nested too deeply"));
+}
+
+#[test]
+fn deep_function_nesting_is_an_error_even_on_a_small_stack() {
+    // f0(x) = x + x + … (250 levels), f_j(x) = f_{j-1}(x) + x + … (the call 240 levels
+    // down a left-deep chain): more than 2,000 nested evaluations in all, on a thread
+    // with 256 KiB of stack
+    let mut src = format!("f0(x) = {}x\n", "x+".repeat(249));
+    for j in 1..10 {
+        src.push_str(&format!("f{j}(x) = f{}(x){}\n", j - 1, "+x".repeat(240)));
+    }
+    let mut reg = Registry::new();
+    for b in parse_bindings(&src).unwrap() {
+        reg.define(b).unwrap();
+    }
+    let out = std::thread::Builder::new()
+        .stack_size(256 * 1024)
+        .spawn(move || {
+            let ev = Evaluator::new(&reg, rug::Float::new(128));
+            ev.eval(&parse_expr("f9(1)").unwrap()).map(|_| ())
+        })
+        .unwrap()
+        .join()
+        .unwrap();
+    let e = out.unwrap_err();
+    assert!(
+        e.message.contains("nested too deeply to evaluate"),
+        "{}",
+        e.message
+    );
+    assert!(!e.message.contains("in function"), "{}", e.message);
+}
+
+#[test]
+fn runaway_recursion_is_reported_once() {
+    let mut reg = Registry::new();
+    reg.define(parse_bindings("f(x) = f(x) + 1").unwrap().remove(0))
+        .unwrap();
+    let ev = Evaluator::new(&reg, 0.0f64);
+    let e = ev.eval(&parse_expr("f(1)").unwrap()).unwrap_err();
+    assert!(
+        e.message.starts_with("recursion too deep in 'f'"),
+        "{}",
+        e.message
+    );
+    assert_eq!(
+        e.message.matches('f').count(),
+        1 + "recursion too deep in".matches('f').count()
+    );
+}
+
+#[test]
+fn sum_bounds_name_the_cause() {
+    let reg = Registry::new();
+    let ev = Evaluator::new(&reg, 0.0f64);
+    let err = |s: &str| ev.eval(&parse_expr(s).unwrap()).unwrap_err().message;
+    let m = err("sum(k, 1, 1e30, k)");
+    assert!(
+        m.contains("too large") && !m.contains("expected an integer"),
+        "{m}"
+    );
+    assert!(err("sum(k, 1, 10^6, k)").contains("more than 100000 terms"));
+    assert!(err("sum(k, 1, 1.5, k)").contains("expected an integer"));
+}
+
+// ---------- one known value per built-in ----------
+
+/// Each case is an expression that is zero (or a zero vector/matrix) by a mathematical
+/// identity or a known value; `x = 2` and `v = (1, 2, 3)` are bound.
+const BUILTIN_CASES: &[&str] = &[
+    "sqrt(16) - 4",
+    "sqrt(cplx(-4, 0)) - 2*i",
+    "abs(-3) - 3",
+    "abs(cplx(3, 4)) - 5",
+    "exp(ln(5)) - 5",
+    "exp(i*pi) + 1",
+    "ln(exp(2)) - 2",
+    "sin(pi/6) - 1/2",
+    "cos(pi/3) - 1/2",
+    "tan(pi/4) - 1",
+    "atan(1) - pi/4",
+    "asin(1/2) - pi/6",
+    "sinh(ln(2)) - 3/4",
+    "cosh(ln(2)) - 5/4",
+    "tanh(ln(2)) - 3/5",
+    "asinh(3/4) - ln(2)",
+    "atanh(3/5) - ln(2)",
+    "floor(-2.5) + 3",
+    "sign(-7) + 1",
+    "atan2(1, -1) - 3*pi/4",
+    "min(3, -1, 2) + 1",
+    "max(3, -1, 2) - 3",
+    "re(cplx(2, 3)) - 2",
+    "im(cplx(2, 3)) - 3",
+    "conj(cplx(2, 3)) - cplx(2, -3)",
+    "arg(cplx(-1, 0)) - pi",
+    "sn(0.3, 0) - sin(0.3)",
+    "cn(0.3, 0) - cos(0.3)",
+    "dn(0.3, 0) - 1",
+    "sn(0.9, 0.7)^2 + cn(0.9, 0.7)^2 - 1",
+    "dn(0.9, 0.7)^2 + 0.49*sn(0.9, 0.7)^2 - 1",
+    "am(0.4, 0) - 0.4",
+    "sin(am(0.9, 0.7)) - sn(0.9, 0.7)",
+    "K(0) - pi/2",
+    "Kp(0.6) - K(0.8)",
+    "F(pi/2, 0.6) - K(0.6)",
+    "F(am(0.9, 0.7), 0.7) - 0.9",
+    "jacobi_inverse(sn(0.7, 0.5), cn(0.7, 0.5), dn(0.7, 0.5), 0.5) - 0.7",
+    "vec(1, 2, 3) - [1, 2, 3]",
+    "dot(vec(1, 2, 3), vec(4, 5, 6)) - 32",
+    "cross(vec(1, 0, 0), vec(0, 1, 0)) - vec(0, 0, 1)",
+    "norm2(vec(1, 2, 2)) - 9",
+    "norm(vec(1, 2, 2)) - 3",
+    "vnorm_inf(vec(1, -5, 2)) - 5",
+    "transpose([[1, 2, 3], [4, 5, 6], [7, 8, 9]])[1, 2] - 4",
+    "det([[2, 0, 0], [0, 3, 0], [0, 0, 4]]) - 24",
+    "det(pauli(2)) + 1",
+    "inv([[2, 1, 0], [0, 3, 1], [1, 0, 4]]) * [[2, 1, 0], [0, 3, 1], [1, 0, 4]] - I3",
+    "tr([[1, 2, 3], [4, 5, 6], [7, 8, 9]]) - 15",
+    "comm(pauli(1), pauli(2)) - 2*i*pauli(3)",
+    "pauli(1)*pauli(1) - I2()",
+    "I3() - diag(1, 1, 1)",
+    "diag(vec(1, 2, 3))[2, 2] - 2",
+    "skew(v) * vec(4, 5, 6) - cross(v, vec(4, 5, 6))",
+    "unskew(skew(v)) - v",
+    "sum(k, 1, 4, k^2) - 30",
+    "prod(k, 1, 5, k) - 120",
+    "d(x^3, x) - 3*x^2",
+    "d(dot(v, v), v, 2) - 2*v[2]",
+    "grad(dot(v, v), v) - 2*v",
+];
+
+/// The built-ins an expression uses.
+fn builtins_used(e: &eulertop::claims::ast::Expr, out: &mut Vec<Builtin>) {
+    use eulertop::claims::ast::ExprKind;
+    e.walk(&mut |x| {
+        let b = match &x.kind {
+            ExprKind::Call(n, _) | ExprKind::Name(n) => Builtin::from_name(n),
+            ExprKind::Sum { product, .. } => Some(if *product {
+                Builtin::Prod
+            } else {
+                Builtin::Sum
+            }),
+            ExprKind::Deriv { .. } => Some(Builtin::D),
+            ExprKind::Grad { .. } => Some(Builtin::Grad),
+            _ => None,
+        };
+        out.extend(b);
+    });
+}
+
+/// Evaluates every case with scalars like `like`; each must vanish to `2^(8 − bits)`.
+fn run_cases<T: Backend>(like: T, bits: u32, used: &mut Vec<Builtin>) {
+    let reg = Registry::new();
+    let mut ev = Evaluator::new(&reg, like.clone());
+    ev.bind("x", Value::Real(like.from_i64(2)));
+    let v = Vec3::new(like.from_i64(1), like.from_i64(2), like.from_i64(3));
+    ev.bind("v", Value::Vec3(v));
+    for case in BUILTIN_CASES {
+        let e = parse_expr(case).unwrap();
+        builtins_used(&e, used);
+        let r = ev
+            .eval(&e)
+            .unwrap_or_else(|err| panic!("{case}: {}", err.message));
+        let tol = (8.0 - f64::from(bits)).exp2();
+        assert!(r.magnitude() <= tol, "{case} = {r:?} at {bits} bits");
+    }
+}
+
+#[test]
+fn every_builtin_has_a_known_value() {
+    let mut used = Vec::new();
+    run_cases(0.0f64, 53, &mut used);
+    run_cases(rug::Float::new(256), 256, &mut used);
+    for b in Builtin::ALL {
+        assert!(used.contains(b), "no case for the built-in {}", b.name());
+    }
+}
+
+// ---------- names are checked at load time ----------
+
+const HEAD: &str = "kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(1, 2)\"]]\n";
+
+#[test]
+fn undefined_names_are_load_errors_at_their_position() {
+    // line 8 is `lhs = "x"`, line 10 the scale
+    let e = load(&claim(&format!(
+        "{HEAD}lhs = \"x\"\nrhs = \"x\"\nscale = \"Mzz\""
+    )))
+    .unwrap_err();
+    assert!(e.starts_with("t.toml:10:10: unknown variable 'Mzz'"), "{e}");
+    // a let binding sees only earlier bindings
+    let e = load(&claim(&format!(
+        "{HEAD}let = '''\na = b\nb = 1\n'''\nlhs = \"a\"\nrhs = \"1\""
+    )))
+    .unwrap_err();
+    assert!(
+        e.contains("unknown variable 'b'") && e.starts_with("t.toml:9:5:"),
+        "{e}"
+    );
+    // d() needs a variable in scope
+    let e = load(&claim(&format!("{HEAD}lhs = \"d(x^2, y)\"\nrhs = \"2*x\""))).unwrap_err();
+    assert!(e.contains("'y' is not a variable in scope"), "{e}");
+    // random primitives only in sampler expressions
+    let e = load(&claim(&format!(
+        "{HEAD}lhs = \"uniform(0, 1)\"\nrhs = \"x\""
+    )))
+    .unwrap_err();
+    assert!(e.contains("only available in sampler expressions"), "{e}");
+    // the number of arguments of a built-in
+    let e = load(&claim(&format!("{HEAD}lhs = \"atan2(x)\"\nrhs = \"x\""))).unwrap_err();
+    assert!(e.contains("atan2 takes 2 argument(s), got 1"), "{e}");
+    // an unknown domain points at the domain's name
+    let e = load(&claim(&format!(
+        "{HEAD}domain = \"nosuch\"\nlhs = \"x\"\nrhs = \"x\""
+    )))
+    .unwrap_err();
+    assert!(
+        e.starts_with("t.toml:8:10: claim 'c': unknown domain 'nosuch'"),
+        "{e}"
+    );
+}
+
+#[test]
+fn recursive_definitions_are_load_errors() {
+    let def = |body: &str| {
+        format!("[[claim]]\nid = \"d\"\nlocation = \"l\"\nprinted = 'p'\nkind = \"definition\"\nenvironment = \"Section 2\"\nrole = \"statement\"\ndefine = '''\n{body}\n'''\n")
+    };
+    let e = load(&def("f(M) = f(M)")).unwrap_err();
+    assert!(
+        e.starts_with("t.toml:9:1: recursive definition: f → f"),
+        "{e}"
+    );
+    let e = load(&def("f(x) = g(x) + 1\ng(x) = 2*f(x)")).unwrap_err();
+    assert!(e.contains("recursive definition: f → g → f"), "{e}");
+    assert_eq!(e.matches("recursive").count(), 1, "{e}");
+    assert!(load(&def("f(x) = g(x) + 1\ng(x) = 2*x")).is_ok());
+}
+
+#[test]
+fn inner_claims_inherit_what_they_do_not_give() {
+    let src = claim(
+        "kind = \"negation\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\nlet = \"y = 2*x\"\nsamples = 5\n[claim.inner]\nkind = \"identity\"\nlhs = \"sin(y)\"\nrhs = \"2*sin(x)\"\nseed = 3",
+    );
+    let cat = load(&src).unwrap();
+    let outer = &cat.claims[0];
+    let eulertop::claims::catalogue::Body::Negation(inner) = &outer.body else {
+        panic!("not a negation");
+    };
+    assert_eq!(inner.id, "c.inner");
+    assert_eq!((inner.samples, inner.seed, outer.seed), (5, 3, 0));
+    assert_eq!(inner.vars.len(), 1);
+    assert_eq!(inner.lets[0].name, "y");
+    assert_eq!(inner.location, outer.location);
+}
+
+#[test]
+fn out_of_range_fields_are_errors_not_clamped() {
+    let e = load(&claim(&format!(
+        "{HEAD}lhs = \"x\"\nrhs = \"x\"\nsamples = 0"
+    )))
+    .unwrap_err();
+    assert!(
+        e.contains("samples must be between 1 and 10000, not 0"),
+        "{e}"
+    );
+    let e = load(&claim(
+        "kind = \"independence\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(1, 2)\"]]\nexpr = \"1\"\nwrt = \"x\"\nredraws = 1000",
+    ))
+    .unwrap_err();
+    assert!(e.contains("redraws must be between 1 and 100"), "{e}");
+}
+
+#[test]
+fn catalogue_paths_give_one_line_errors() {
+    use eulertop::claims::catalogue::load_dir;
+    let dir = std::env::temp_dir().join(format!("eulertop-paths-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let one_line = |r: Result<Catalogue, eulertop::claims::catalogue::LoadError>| {
+        let e = r.unwrap_err().to_string();
+        assert_eq!(e.lines().count(), 1, "{e}");
+        e
+    };
+    assert!(one_line(load_dir(&dir, Registry::new())).contains("no catalogue files"));
+    std::fs::write(dir.join("t.toml"), "").unwrap();
+    assert!(one_line(load_dir(&dir, Registry::new())).contains("has no claims"));
+    let missing = dir.join("nonexistent");
+    let e = one_line(load_dir(&missing, Registry::new()));
+    assert!(
+        e.starts_with(&format!("{}: cannot read", missing.display())),
+        "{e}"
+    );
+    std::fs::write(dir.join("t.toml"), b"[[claim]]\nid = \"\xff\"\n").unwrap();
+    let e = one_line(load_dir(&dir, Registry::new()));
+    assert!(
+        e.ends_with("t.toml:2:7: not valid UTF-8 text (byte 0xff)"),
+        "{e}"
+    );
+    // a single file is a catalogue too
+    let file = dir.join("one.toml");
+    std::fs::write(&file, claim(&format!("{HEAD}lhs = \"x\"\nrhs = \"x\""))).unwrap();
+    assert_eq!(load_dir(&file, Registry::new()).unwrap().claims.len(), 1);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn jacobi_inverse_works_in_a_catalogue() {
+    // |u| < 1 < K(k): the inverse of (sn, cn, dn) is u itself
+    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"k\", \"uniform(0.1, 0.9)\"], [\"u\", \"uniform(-1, 1)\"]]\nlhs = \"jacobi_inverse(sn(u, k), cn(u, k), dn(u, k), k)\"\nrhs = \"u\""), &LADDER);
+    assert_eq!(r.verdict, Verdict::Holds, "{}", r.reason);
 }

@@ -350,6 +350,12 @@ mod tests {
     }
 
     #[test]
+    fn the_readme_table_is_this_declaration() {
+        let readme = include_str!("../../identities/README.md");
+        assert!(readme.contains(&readme_table()), "{}", readme_table());
+    }
+
+    #[test]
     fn labels_are_labels_of_the_paper() {
         let paper: Vec<&str> = include_str!("../../tests/data/paper_labels.txt")
             .lines()

@@ -186,6 +186,10 @@ pub struct Evaluator<'r, T> {
 pub const MAX_CALL_DEPTH: usize = 64;
 /// Most nested sub-expressions being evaluated at once, function bodies included.
 pub const MAX_NESTING: usize = 2000;
+/// Below this much free stack, evaluation continues on a new segment...
+const STACK_RED_ZONE: usize = 128 * 1024;
+/// ... of this size.
+const STACK_SEGMENT: usize = 2 * 1024 * 1024;
 
 impl<'r, T: Backend> Evaluator<'r, T> {
     /// A new evaluator; `like` fixes the precision of constants and literals.
@@ -285,7 +289,9 @@ impl<'r, T: Backend> Evaluator<'r, T> {
             ));
         }
         self.nesting.set(n + 1);
-        let v = self.eval_inner(e);
+        // deep (but bounded) nesting runs on heap-allocated stack segments when the
+        // thread's own stack runs low
+        let v = stacker::maybe_grow(STACK_RED_ZONE, STACK_SEGMENT, || self.eval_inner(e));
         self.nesting.set(n);
         let v = v?;
         if !v.is_finite() {
@@ -355,6 +361,7 @@ impl<'r, T: Backend> Evaluator<'r, T> {
         self.eval(e)?.as_int().map_err(|m| EvalError::at(m, e.span))
     }
 
+    #[inline(never)]
     fn name(&self, n: &str, sp: Span) -> Result<Value<T>, EvalError> {
         if let Some(v) = self.lookup(n) {
             return Ok(v.clone());
@@ -369,6 +376,7 @@ impl<'r, T: Backend> Evaluator<'r, T> {
         r.map_err(|m| EvalError::at(m, sp))
     }
 
+    #[inline(never)]
     fn binary(&self, op: BinOp, a: &Expr, b: &Expr, sp: Span) -> Result<Value<T>, EvalError> {
         let wrap = |r: Result<Value<T>, String>| r.map_err(|m| EvalError::at(m, sp));
         if matches!(op, BinOp::And | BinOp::Or) {
@@ -384,6 +392,7 @@ impl<'r, T: Backend> Evaluator<'r, T> {
         wrap(binary(op, &x, &y))
     }
 
+    #[inline(never)]
     fn sum(
         &self,
         var: &str,
@@ -422,6 +431,7 @@ impl<'r, T: Backend> Evaluator<'r, T> {
         Ok(acc)
     }
 
+    #[inline(never)]
     fn grad(&self, body: &Expr, var: &str, sp: Span) -> Result<Value<T>, EvalError> {
         let mut out = Vec::new();
         for j in 1..=3 {
@@ -435,6 +445,7 @@ impl<'r, T: Backend> Evaluator<'r, T> {
         Ok(Value::Vec3(Vec3([a, b, c])))
     }
 
+    #[inline(never)]
     fn list(&self, items: &[Expr], sp: Span) -> Result<Value<T>, EvalError> {
         let vals: Vec<Value<T>> = items
             .iter()
@@ -488,6 +499,7 @@ impl<'r, T: Backend> Evaluator<'r, T> {
         Err(err())
     }
 
+    #[inline(never)]
     fn call(&self, name: &str, args: &[Expr], sp: Span) -> Result<Value<T>, EvalError> {
         let vals: Vec<Value<T>> = args
             .iter()
@@ -517,6 +529,7 @@ impl<'r, T: Backend> Evaluator<'r, T> {
         Err(EvalError::at(format!("unknown function '{name}'"), sp))
     }
 
+    #[inline(never)]
     fn call_user(&self, f: &UserFn, vals: &[Value<T>], sp: Span) -> Result<Value<T>, EvalError> {
         if vals.len() != f.params.len() {
             return Err(EvalError::at(

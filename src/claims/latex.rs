@@ -73,29 +73,7 @@ pub fn to_latex(e: &Expr) -> String {
         },
         ExprKind::Unary(UnOp::Neg, a) => format!("-{}", wrap(a, 7)),
         ExprKind::Unary(UnOp::Not, a) => format!("\\neg {}", wrap(a, 3)),
-        ExprKind::Binary(op, a, b) => {
-            let p = prec(e);
-            match op {
-                BinOp::Div => format!("\\frac{{{}}}{{{}}}", to_latex(a), to_latex(b)),
-                BinOp::Pow => format!("{}^{{{}}}", wrap(a, 9), to_latex(b)),
-                BinOp::Mul => format!("{}\\,{}", wrap(a, p), wrap(b, p + 1)),
-                BinOp::Sub => format!("{} - {}", wrap(a, p), wrap(b, p + 1)),
-                _ => {
-                    let sym = match op {
-                        BinOp::Add => "+",
-                        BinOp::Lt => "<",
-                        BinOp::Gt => ">",
-                        BinOp::Le => "\\le",
-                        BinOp::Ge => "\\ge",
-                        BinOp::Eq => "=",
-                        BinOp::Ne => "\\ne",
-                        BinOp::And => "\\wedge",
-                        _ => "\\vee",
-                    };
-                    format!("{} {sym} {}", wrap(a, p), wrap(b, p + 1))
-                }
-            }
-        }
+        ExprKind::Binary(op, a, b) => binary(prec(e), *op, a, b),
         ExprKind::If(c, a, b) => format!(
             "\\begin{{cases}} {} & \\text{{if }} {} \\\\ {} & \\text{{otherwise}} \\end{{cases}}",
             to_latex(a),
@@ -103,23 +81,7 @@ pub fn to_latex(e: &Expr) -> String {
             to_latex(b)
         ),
         ExprKind::Index(a, ix) => format!("{}_{{{}}}", wrap(a, 9), args(ix)),
-        ExprKind::List(items) => {
-            if items.iter().all(|x| matches!(x.kind, ExprKind::List(_))) && !items.is_empty() {
-                let rows: Vec<String> = items
-                    .iter()
-                    .map(|r| match &r.kind {
-                        ExprKind::List(c) => c.iter().map(to_latex).collect::<Vec<_>>().join(" & "),
-                        _ => String::new(),
-                    })
-                    .collect();
-                format!(
-                    "\\begin{{pmatrix}} {} \\end{{pmatrix}}",
-                    rows.join(" \\\\ ")
-                )
-            } else {
-                format!("\\left({}\\right)^{{\\mathsf T}}", args(items))
-            }
-        }
+        ExprKind::List(items) => list(items),
         ExprKind::Call(f, a) => call(f, a),
         ExprKind::Sum {
             var,
@@ -155,6 +117,45 @@ pub fn to_latex(e: &Expr) -> String {
         ExprKind::Grad { body, var } => {
             format!("\\nabla_{{{}}}{}", name_tex(var), wrap(body, 9))
         }
+    }
+}
+
+/// `a op b` at precedence `p`.
+fn binary(p: u8, op: BinOp, a: &Expr, b: &Expr) -> String {
+    let sym = match op {
+        BinOp::Div => return format!("\\frac{{{}}}{{{}}}", to_latex(a), to_latex(b)),
+        BinOp::Pow => return format!("{}^{{{}}}", wrap(a, 9), to_latex(b)),
+        BinOp::Mul => return format!("{}\\,{}", wrap(a, p), wrap(b, p + 1)),
+        BinOp::Sub => return format!("{} - {}", wrap(a, p), wrap(b, p + 1)),
+        BinOp::Add => "+",
+        BinOp::Lt => "<",
+        BinOp::Gt => ">",
+        BinOp::Le => "\\le",
+        BinOp::Ge => "\\ge",
+        BinOp::Eq => "=",
+        BinOp::Ne => "\\ne",
+        BinOp::And => "\\wedge",
+        BinOp::Or => "\\vee",
+    };
+    format!("{} {sym} {}", wrap(a, p), wrap(b, p + 1))
+}
+
+/// A matrix (a list of lists) or a column vector.
+fn list(items: &[Expr]) -> String {
+    if items.iter().all(|x| matches!(x.kind, ExprKind::List(_))) && !items.is_empty() {
+        let rows: Vec<String> = items
+            .iter()
+            .map(|r| match &r.kind {
+                ExprKind::List(c) => c.iter().map(to_latex).collect::<Vec<_>>().join(" & "),
+                _ => String::new(),
+            })
+            .collect();
+        format!(
+            "\\begin{{pmatrix}} {} \\end{{pmatrix}}",
+            rows.join(" \\\\ ")
+        )
+    } else {
+        format!("\\left({}\\right)^{{\\mathsf T}}", args(items))
     }
 }
 

@@ -50,13 +50,7 @@ pub fn lex(src: &str) -> Result<Vec<Token>, SyntaxError> {
         let c = b[j];
         if c == b'\n' {
             if depth <= 0 {
-                out.push(Token {
-                    tok: Tok::Newline,
-                    span: Span {
-                        start: j,
-                        end: j + 1,
-                    },
-                });
+                out.push(token(Tok::Newline, j, j + 1));
             }
             j += 1;
         } else if c.is_ascii_whitespace() {
@@ -67,78 +61,90 @@ pub fn lex(src: &str) -> Result<Vec<Token>, SyntaxError> {
             }
         } else if c.is_ascii_digit() || (c == b'.' && j + 1 < b.len() && b[j + 1].is_ascii_digit())
         {
-            let s = j;
-            while j < b.len() && (b[j].is_ascii_digit() || b[j] == b'.') {
-                j += 1;
-            }
-            if j < b.len() && (b[j] == b'e' || b[j] == b'E') {
-                let mut k = j + 1;
-                if k < b.len() && (b[k] == b'+' || b[k] == b'-') {
-                    k += 1;
-                }
-                if k < b.len() && b[k].is_ascii_digit() {
-                    j = k;
-                    while j < b.len() && b[j].is_ascii_digit() {
-                        j += 1;
-                    }
-                }
-            }
-            let text = &src[s..j];
-            if text.matches('.').count() > 1 {
-                return Err(SyntaxError {
-                    message: format!("malformed number '{text}'"),
-                    span: Span { start: s, end: j },
-                });
-            }
-            if j < b.len() && (b[j].is_ascii_alphabetic() || b[j] == b'_') {
-                let mut k = j;
-                while k < b.len() && (b[k].is_ascii_alphanumeric() || b[k] == b'_') {
-                    k += 1;
-                }
-                return Err(SyntaxError {
-                    message: format!("malformed number '{}'", &src[s..k]),
-                    span: Span { start: s, end: k },
-                });
-            }
-            out.push(Token {
-                tok: Tok::Num(text.to_string()),
-                span: Span { start: s, end: j },
-            });
+            let t = number(src, j)?;
+            j = t.span.end;
+            out.push(t);
         } else if c.is_ascii_alphabetic() || c == b'_' {
             let s = j;
             while j < b.len() && (b[j].is_ascii_alphanumeric() || b[j] == b'_') {
                 j += 1;
             }
-            out.push(Token {
-                tok: Tok::Ident(src[s..j].to_string()),
-                span: Span { start: s, end: j },
-            });
+            out.push(token(Tok::Ident(src[s..j].to_string()), s, j));
         } else {
-            let rest = &src[j..];
-            let Some(sym) = SYMS.iter().find(|s| rest.starts_with(**s)) else {
-                let ch = rest.chars().next().unwrap_or('?');
-                return Err(SyntaxError {
-                    message: format!("unexpected character '{ch}'"),
-                    span: Span {
-                        start: j,
-                        end: j + ch.len_utf8(),
-                    },
-                });
-            };
-            match *sym {
-                "(" | "[" => depth += 1,
-                ")" | "]" => depth -= 1,
+            let t = symbol(src, j)?;
+            match t.tok {
+                Tok::Sym("(" | "[") => depth += 1,
+                Tok::Sym(")" | "]") => depth -= 1,
                 _ => {}
             }
-            out.push(Token {
-                tok: Tok::Sym(sym),
-                span: Span {
-                    start: j,
-                    end: j + sym.len(),
-                },
-            });
-            j += sym.len();
+            j = t.span.end;
+            out.push(t);
         }
     }
     Ok(out)
+}
+
+fn token(tok: Tok, start: usize, end: usize) -> Token {
+    Token {
+        tok,
+        span: Span { start, end },
+    }
+}
+
+/// A numeric literal starting at byte `s`: digits, at most one point, an optional
+/// exponent; a letter right after it is an error (`2x`).
+fn number(src: &str, s: usize) -> Result<Token, SyntaxError> {
+    let b = src.as_bytes();
+    let mut j = s;
+    while j < b.len() && (b[j].is_ascii_digit() || b[j] == b'.') {
+        j += 1;
+    }
+    if j < b.len() && (b[j] == b'e' || b[j] == b'E') {
+        let mut k = j + 1;
+        if k < b.len() && (b[k] == b'+' || b[k] == b'-') {
+            k += 1;
+        }
+        if k < b.len() && b[k].is_ascii_digit() {
+            j = k;
+            while j < b.len() && b[j].is_ascii_digit() {
+                j += 1;
+            }
+        }
+    }
+    let text = &src[s..j];
+    if text.matches('.').count() > 1 {
+        return Err(SyntaxError {
+            message: format!("malformed number '{text}'"),
+            span: Span { start: s, end: j },
+        });
+    }
+    if j < b.len() && (b[j].is_ascii_alphabetic() || b[j] == b'_') {
+        let mut k = j;
+        while k < b.len() && (b[k].is_ascii_alphanumeric() || b[k] == b'_') {
+            k += 1;
+        }
+        return Err(SyntaxError {
+            message: format!("malformed number '{}'", &src[s..k]),
+            span: Span { start: s, end: k },
+        });
+    }
+    Ok(token(Tok::Num(text.to_string()), s, j))
+}
+
+/// The operator or punctuation symbol at byte `j`.
+fn symbol(src: &str, j: usize) -> Result<Token, SyntaxError> {
+    let rest = &src[j..];
+    match SYMS.iter().find(|s| rest.starts_with(**s)) {
+        Some(sym) => Ok(token(Tok::Sym(sym), j, j + sym.len())),
+        None => {
+            let ch = rest.chars().next().unwrap_or('?');
+            Err(SyntaxError {
+                message: format!("unexpected character '{ch}'"),
+                span: Span {
+                    start: j,
+                    end: j + ch.len_utf8(),
+                },
+            })
+        }
+    }
 }

@@ -6,13 +6,19 @@ use super::ast::{BinOp, Binding, Expr, ExprKind, Span, UnOp};
 use super::lexer::{lex, SyntaxError, Tok, Token};
 
 const KEYWORDS: [&str; 6] = ["if", "then", "else", "and", "or", "not"];
+/// Most nested brackets, calls and prefix operators (bounds the parser's recursion).
 const MAX_DEPTH: usize = 200;
+/// Most levels of the syntax tree, long flat chains such as `1 + 1 + … + 1` included
+/// (bounds the recursion of everything that walks the tree: evaluation, LaTeX, …).
+pub const MAX_HEIGHT: usize = 256;
 
 struct Parser<'a> {
     toks: Vec<Token>,
     pos: usize,
     src: &'a str,
     depth: usize,
+    /// The height of the expression the last parse function returned.
+    height: usize,
 }
 
 /// Parses one expression (the whole string).
@@ -52,6 +58,7 @@ impl<'a> Parser<'a> {
             pos: 0,
             src,
             depth: 0,
+            height: 0,
         })
     }
     fn peek(&self) -> Option<&Tok> {
@@ -168,16 +175,35 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
+    /// Records a new node over children of heights `hs` (at the current position).
+    fn node(&mut self, hs: &[usize]) -> Result<(), SyntaxError> {
+        let h = 1 + hs.iter().copied().max().unwrap_or(0);
+        if h > MAX_HEIGHT {
+            return Err(SyntaxError {
+                message: format!(
+                    "expression nested too deeply (more than {MAX_HEIGHT} levels; a chain of operators counts one level per operator)"
+                ),
+                span: self.span_here(),
+            });
+        }
+        self.height = h;
+        Ok(())
+    }
+
     fn expr(&mut self) -> Result<Expr, SyntaxError> {
         self.enter()?;
         let r = if self.is_kw("if") {
             let s = self.span_here();
             self.pos += 1;
             let c = self.expr()?;
+            let hc = self.height;
             self.eat_kw("then")?;
             let a = self.expr()?;
+            let ha = self.height;
             self.eat_kw("else")?;
             let b = self.expr()?;
+            let hb = self.height;
+            self.node(&[hc, ha, hb])?;
             let span = s.join(b.span);
             Ok(Expr {
                 kind: ExprKind::If(Box::new(c), Box::new(a), Box::new(b)),
@@ -201,8 +227,10 @@ impl<'a> Parser<'a> {
     fn or(&mut self) -> Result<Expr, SyntaxError> {
         let mut a = self.and()?;
         while self.is_kw("or") {
+            let ha = self.height;
             self.pos += 1;
             let b = self.and()?;
+            self.node(&[ha, self.height])?;
             a = Self::bin(BinOp::Or, a, b);
         }
         Ok(a)
@@ -210,8 +238,10 @@ impl<'a> Parser<'a> {
     fn and(&mut self) -> Result<Expr, SyntaxError> {
         let mut a = self.not()?;
         while self.is_kw("and") {
+            let ha = self.height;
             self.pos += 1;
             let b = self.not()?;
+            self.node(&[ha, self.height])?;
             a = Self::bin(BinOp::And, a, b);
         }
         Ok(a)
@@ -223,6 +253,7 @@ impl<'a> Parser<'a> {
             self.enter()?;
             let a = self.not()?;
             self.depth -= 1;
+            self.node(&[self.height])?;
             let span = s.join(a.span);
             return Ok(Expr {
                 kind: ExprKind::Unary(UnOp::Not, Box::new(a)),
@@ -242,8 +273,10 @@ impl<'a> Parser<'a> {
             Some(Tok::Sym("!=")) => BinOp::Ne,
             _ => return Ok(a),
         };
+        let ha = self.height;
         self.pos += 1;
         let b = self.sum()?;
+        self.node(&[ha, self.height])?;
         Ok(Self::bin(op, a, b))
     }
     fn sum(&mut self) -> Result<Expr, SyntaxError> {
@@ -254,8 +287,10 @@ impl<'a> Parser<'a> {
                 Some(Tok::Sym("-")) => BinOp::Sub,
                 _ => return Ok(a),
             };
+            let ha = self.height;
             self.pos += 1;
             let b = self.term()?;
+            self.node(&[ha, self.height])?;
             a = Self::bin(op, a, b);
         }
     }
@@ -267,8 +302,10 @@ impl<'a> Parser<'a> {
                 Some(Tok::Sym("/")) => BinOp::Div,
                 _ => return Ok(a),
             };
+            let ha = self.height;
             self.pos += 1;
             let b = self.unary()?;
+            self.node(&[ha, self.height])?;
             a = Self::bin(op, a, b);
         }
     }
@@ -283,6 +320,7 @@ impl<'a> Parser<'a> {
             if !neg {
                 return Ok(a);
             }
+            self.node(&[self.height])?;
             let span = s.join(a.span);
             return Ok(Expr {
                 kind: ExprKind::Unary(UnOp::Neg, Box::new(a)),
@@ -294,10 +332,12 @@ impl<'a> Parser<'a> {
     fn power(&mut self) -> Result<Expr, SyntaxError> {
         let a = self.postfix()?;
         if self.is_sym("^") {
+            let ha = self.height;
             self.pos += 1;
             self.enter()?;
             let b = self.unary()?;
             self.depth -= 1;
+            self.node(&[ha, self.height])?;
             return Ok(Self::bin(BinOp::Pow, a, b));
         }
         Ok(a)
@@ -305,13 +345,17 @@ impl<'a> Parser<'a> {
     fn postfix(&mut self) -> Result<Expr, SyntaxError> {
         let mut a = self.primary()?;
         while self.is_sym("[") {
+            let mut hs = vec![self.height];
             self.pos += 1;
             let mut ix = vec![self.expr()?];
+            hs.push(self.height);
             if self.is_sym(",") {
                 self.pos += 1;
                 ix.push(self.expr()?);
+                hs.push(self.height);
             }
             let e = self.eat_sym("]")?;
+            self.node(&hs)?;
             let span = a.span.join(e);
             a = Expr {
                 kind: ExprKind::Index(Box::new(a), ix),
@@ -320,11 +364,14 @@ impl<'a> Parser<'a> {
         }
         Ok(a)
     }
+    /// A comma-separated list up to `close`; leaves the largest height of the items.
     fn args(&mut self, close: &str) -> Result<(Vec<Expr>, Span), SyntaxError> {
         let mut v = Vec::new();
+        let mut h = 0;
         if !self.is_sym(close) {
             loop {
                 v.push(self.expr()?);
+                h = h.max(self.height);
                 if self.is_sym(",") {
                     self.pos += 1;
                 } else {
@@ -333,6 +380,7 @@ impl<'a> Parser<'a> {
             }
         }
         let e = self.eat_sym(close)?;
+        self.height = h;
         Ok((v, e))
     }
     fn primary(&mut self) -> Result<Expr, SyntaxError> {
@@ -342,6 +390,7 @@ impl<'a> Parser<'a> {
         match t.tok {
             Tok::Num(s) => {
                 self.pos += 1;
+                self.height = 1;
                 Ok(Expr {
                     kind: ExprKind::Num(s),
                     span: t.span,
@@ -360,6 +409,7 @@ impl<'a> Parser<'a> {
                 self.enter()?;
                 let (items, e) = self.args("]")?;
                 self.depth -= 1;
+                self.node(&[self.height])?;
                 Ok(Expr {
                     kind: ExprKind::List(items),
                     span: t.span.join(e),
@@ -368,6 +418,7 @@ impl<'a> Parser<'a> {
             Tok::Ident(ref n) if !KEYWORDS.contains(&n.as_str()) => {
                 self.pos += 1;
                 if !self.is_sym("(") {
+                    self.height = 1;
                     return Ok(Expr {
                         kind: ExprKind::Name(n.clone()),
                         span: t.span,
@@ -377,6 +428,7 @@ impl<'a> Parser<'a> {
                 self.enter()?;
                 let (args, e) = self.args(")")?;
                 self.depth -= 1;
+                self.node(&[self.height])?;
                 let span = t.span.join(e);
                 special_form(n, args, span)
             }

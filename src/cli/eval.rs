@@ -55,10 +55,17 @@ fn go<T: Backend>(args: &Args, like: T) -> Result<String, CliError> {
         ev.bind(n, v);
     }
     let ex = parse_expr(&args.expr).map_err(|err| {
-        CliError(format!(
-            "syntax error at column {}: {}\n    {}\n    {}{}",
+        let head = format!(
+            "syntax error at column {}: {}",
             err.span.start + 1,
-            err.message,
+            err.message
+        );
+        // the excerpt only where it fits on a line
+        if args.expr.len() > EXCERPT_MAX || args.expr.contains('\n') {
+            return CliError(head);
+        }
+        CliError(format!(
+            "{head}\n    {}\n    {}{}",
             args.expr,
             " ".repeat(err.span.start),
             "^".repeat((err.span.end - err.span.start).max(1))
@@ -68,6 +75,9 @@ fn go<T: Backend>(args: &Args, like: T) -> Result<String, CliError> {
     let digits = ((f64::from(args.bits) * std::f64::consts::LOG10_2).floor() as usize).max(2);
     Ok(v.render(digits, Layout::Rows))
 }
+
+/// Longest expression shown under a syntax error.
+const EXCERPT_MAX: usize = 160;
 
 /// Runs `eulertop eval`.
 pub fn run(args: Args) -> Result<i32, CliError> {

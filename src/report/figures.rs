@@ -8,8 +8,7 @@ mod phase;
 mod style;
 
 use super::Section;
-use crate::claims::kind::Kind;
-use crate::claims::verdict::{ClaimResult, Verdict};
+use crate::claims::verdict::{ClaimResult, Rung, Verdict};
 use plotters::prelude::*;
 
 /// Residual (log2) against working precision for each claim of a section: one line per
@@ -51,7 +50,9 @@ pub fn residual_plot(sec: &Section, claims: &[&ClaimResult], bits: &[u32]) -> St
                     .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], BLACK))
             });
         for r in claims {
-            if r.verdict == Verdict::Defined || r.kind == Kind::Asymptotic || r.residuals.is_empty()
+            if r.verdict == Verdict::Defined
+                || r.residuals.iter().any(Rung::is_slope)
+                || r.residuals.is_empty()
             {
                 continue;
             }

@@ -3,7 +3,7 @@
 use super::proofs::{claim_link, counterexample_block, index_table, Structure, RULE};
 use super::tex::{display_math, is_prose, prose};
 use super::{stem_of, ReportInput, Section};
-use crate::claims::kind::{Form, Kind};
+use crate::claims::kind::Form;
 use crate::claims::verdict::{ClaimResult, Rung, Verdict};
 use std::collections::BTreeMap;
 use std::fmt::Write;
@@ -35,7 +35,7 @@ pub fn best_residual(r: &ClaimResult) -> String {
     if r.verdict == Verdict::Defined {
         return "—".to_string();
     }
-    if r.kind == Kind::Asymptotic {
+    if r.residuals.iter().any(Rung::is_slope) {
         return r
             .residuals
             .last()
@@ -269,7 +269,7 @@ pub fn claim_block(input: &ReportInput, r: &ClaimResult) -> String {
         let _ = writeln!(
             s,
             "| bits | {} |",
-            if r.kind == Kind::Asymptotic {
+            if r.residuals.iter().any(Rung::is_slope) {
                 "fitted slope"
             } else {
                 "residual"

@@ -199,8 +199,8 @@ name_table! {
         I3 = "I3"(""): Exact(0), "→ mat3", Linear, Symbol("I");
         /// 2×2 complex identity (also written without parentheses)
         I2 = "I2"(""): Exact(0), "→ cmat2", Linear, Symbol("I");
-        /// diagonal matrix
-        Diag = "diag"("v | a, b, c"): OneOf(&[1, 3]), "vec3 → mat3; real, real, real → mat3", Linear, Name;
+        /// diagonal matrix with diagonal v; also diag(a, b, c)
+        Diag = "diag"("v"): OneOf(&[1, 3]), "vec3 → mat3; real, real, real → mat3", Linear, Name;
         /// Pauli matrix σ_j: σ1 = [[0,1],[1,0]], σ2 = [[0,−i],[i,0]], σ3 = [[1,0],[0,−1]]
         Pauli = "pauli"("j"): Exact(1), "integer 1, 2, 3 → cmat2", Linear, Wrap("\\sigma_{", "}");
         /// the standard hat: skew(v)·x = v × x
@@ -211,8 +211,8 @@ name_table! {
         Sum = "sum"("k, a, b, body"): Exact(4), "name, integer, integer, T → T", Form, Tex::Form;
         /// Π of body over the integers k = a..=b (at most 100000 terms)
         Prod = "prod"("k, a, b, body"): Exact(4), "name, integer, integer, T → T", Form, Tex::Form;
-        /// derivative with respect to the real variable x, or to component j of the vec3 variable v (forward-mode automatic differentiation)
-        D = "d"("expr, x | expr, v, j"): OneOf(&[2, 3]), "real/vec3 expression, name[, integer] → same type", Form, Tex::Form;
+        /// derivative with respect to the real variable x, or with j to component j of the vec3 variable x (forward-mode automatic differentiation)
+        D = "d"("expr, x[, j]"): OneOf(&[2, 3]), "real/vec3 expression, name[, integer] → same type", Form, Tex::Form;
         /// the three partials of a real expression with respect to a vec3 variable
         Grad = "grad"("expr, v"): Exact(2), "real expression, name → vec3", Form, Tex::Form;
     }
@@ -243,4 +243,27 @@ pub fn readme_table() -> String {
 /// A Markdown table cell: `|` escaped.
 pub(crate) fn cell(s: &str) -> String {
     s.replace('|', "\\|")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_readme_table_is_this_declaration() {
+        let readme = include_str!("../../../identities/README.md");
+        assert!(
+            readme.contains(&readme_table()),
+            "identities/README.md: built-in table differs from the declaration:\n{}",
+            readme_table()
+        );
+    }
+
+    #[test]
+    fn names_are_unique_and_round_trip() {
+        for b in Builtin::ALL {
+            assert_eq!(Builtin::from_name(b.name()), Some(*b));
+        }
+        assert_eq!(Builtin::from_name("nosuch"), None);
+    }
 }

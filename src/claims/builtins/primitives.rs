@@ -69,3 +69,14 @@ pub fn readme_table() -> String {
     }
     s
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_readme_table_is_this_declaration() {
+        let readme = include_str!("../../../identities/README.md");
+        assert!(readme.contains(&readme_table()), "{}", readme_table());
+    }
+}

@@ -49,6 +49,10 @@ impl Rung {
             Rung::Residual { .. } => None,
         }
     }
+    /// Is this the fitted slope of an asymptotic claim?
+    pub fn is_slope(&self) -> bool {
+        matches!(self, Rung::Slope { .. })
+    }
     /// The residual `2^log2` (may underflow to 0 in f64: use [`Rung::log2`]), or the
     /// slope.
     pub fn value(&self) -> f64 {

@@ -186,15 +186,12 @@ fn states_condition(ctx: Ctx<'_>, sides: &[&PExpr]) -> Option<String> {
 
 /// Why the claim is not an analytic function of its complex variables, if it is not
 /// (then an indeterminate does not stand for every complex value).
-fn not_analytic(ctx: Ctx<'_>, sides: &[&PExpr]) -> Option<String> {
-    let complex_var = ctx.claim.vars.iter().any(|(_, p)| p.text.contains("cplx("))
-        || ctx
-            .claim
-            .domain
-            .as_ref()
-            .and_then(|d| ctx.cat.domains.get(d))
-            .is_some_and(|d| d.vars.iter().any(|(_, p)| p.text.contains("cplx(")));
-    if !complex_var {
+fn not_analytic(
+    ctx: Ctx<'_>,
+    vars: &[(String, &PExpr)],
+    sides: &[&PExpr],
+) -> Option<String> {
+    if !vars.iter().any(|(_, p)| p.text.contains("cplx(")) {
         return None;
     }
     let mut found = None;
@@ -374,13 +371,13 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
     if let Some(why) = states_condition(ctx, &[lhs, rhs]) {
         return ProofInfo::none(why);
     }
-    if let Some(why) = not_analytic(ctx, &[lhs, rhs]) {
-        return ProofInfo::none(why);
-    }
     let sampler = match ctx.sampler(Stream::Proof) {
         Ok(s) => s,
         Err(c) => return ProofInfo::none(c.to_string()),
     };
+    if let Some(why) = not_analytic(ctx, sampler.variables(), &[lhs, rhs]) {
+        return ProofInfo::none(why);
+    }
     let roles: Vec<(String, Role, &PExpr)> = sampler
         .variables()
         .iter()

@@ -14,11 +14,11 @@
 //! assert_eq!(Role::parse("proof-step"), Some(Role::ProofStep));
 //! ```
 
-use super::ast::{Expr, ExprKind, Span};
-use super::catalogue::{Body, Catalogue, Claim, LoadError, Origin, PExpr};
-use super::kind::{Form, Kind};
+use super::claim::{Body, Catalogue, Claim, PExpr};
+use super::source::LoadError;
+use crate::claims::ast::{Expr, ExprKind, Span};
+use crate::claims::kind::{Form, Kind};
 use std::collections::{BTreeMap, BTreeSet};
-use toml::Spanned;
 
 /// The theorem-like environments of the paper, in the order in which they are printed.
 pub const ENVIRONMENTS: [&str; 13] = [
@@ -39,30 +39,6 @@ pub const ENVIRONMENTS: [&str; 13] = [
 
 /// The paper's sections ("A" is the appendix).
 const SECTIONS: [&str; 10] = ["1", "2", "3", "4", "5", "6", "7", "8", "9", "A"];
-
-/// A catalogue field value with its place in the file, for error messages.
-#[derive(Debug, Clone)]
-pub struct Located {
-    /// The value as written.
-    pub value: String,
-    /// Where it is written.
-    pub origin: Origin,
-}
-
-impl Located {
-    /// A value read from the catalogue at `origin`.
-    pub fn new(s: &Spanned<String>, origin: Origin) -> Located {
-        Located {
-            value: s.get_ref().clone(),
-            origin,
-        }
-    }
-
-    /// An error pointing at the value.
-    pub fn error(&self, message: impl Into<String>) -> LoadError {
-        self.origin.error(None, message)
-    }
-}
 
 /// Where in the paper a claim belongs.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]

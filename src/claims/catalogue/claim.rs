@@ -1,0 +1,160 @@
+//! A loaded catalogue: claims with their parsed expressions, domains, and the function
+//! table.
+
+use super::source::{Located, Origin};
+use crate::claims::ast::{Binding, Expr};
+use crate::claims::kind::{Form, Kind, Verdict};
+use crate::claims::registry::Registry;
+use std::collections::BTreeMap;
+
+/// A parsed expression with its source text and origin.
+#[derive(Debug, Clone)]
+pub struct PExpr {
+    /// The syntax tree.
+    pub expr: Expr,
+    /// The text as written.
+    pub text: String,
+    /// Where it is.
+    pub origin: Origin,
+}
+
+/// The kind-specific part of a claim.
+#[derive(Debug, Clone)]
+pub enum Body {
+    /// lhs == rhs.
+    Identity {
+        /// Left side.
+        lhs: PExpr,
+        /// Right side.
+        rhs: PExpr,
+    },
+    /// expr independent of `wrt`.
+    Independence {
+        /// The expression.
+        expr: PExpr,
+        /// The redrawn variable.
+        wrt: String,
+        /// Number of redraws.
+        redraws: usize,
+    },
+    /// expr = O(var^order).
+    Asymptotic {
+        /// The expression.
+        expr: PExpr,
+        /// The small variable (set by the engine).
+        var: String,
+        /// Claimed order.
+        order: f64,
+        /// Largest h.
+        h0: f64,
+        /// Number of halvings.
+        steps: usize,
+        /// Slope tolerance.
+        slope_tol: f64,
+    },
+    /// The inner claim is refuted.
+    Negation(Box<Claim>),
+    /// A solution of the equations exists.
+    Existence {
+        /// Unknown names.
+        unknowns: Vec<String>,
+        /// Equations (= 0).
+        equations: Vec<PExpr>,
+        /// Start expressions (sampling context).
+        start: Vec<PExpr>,
+        /// Membership predicate.
+        in_set: Option<PExpr>,
+        /// Attempts per sample.
+        tries: usize,
+    },
+    /// Function definitions.
+    Definition(Vec<Binding>),
+}
+
+/// Exact-evaluation settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ExactSpec {
+    /// Total-degree bound of the numerator.
+    pub degree: u32,
+    /// Number of exact points.
+    pub samples: usize,
+}
+
+/// A sampling domain.
+#[derive(Debug, Clone)]
+pub struct Domain {
+    /// Name.
+    pub name: String,
+    /// Variables in order.
+    pub vars: Vec<(String, PExpr)>,
+    /// Constraints.
+    pub wheres: Vec<PExpr>,
+}
+
+/// One loaded claim.
+#[derive(Debug, Clone)]
+pub struct Claim {
+    /// Unique id.
+    pub id: String,
+    /// Paper labels.
+    pub labels: Vec<String>,
+    /// Human location.
+    pub location: String,
+    /// Verbatim LaTeX.
+    pub printed: String,
+    /// Kind.
+    pub kind: Kind,
+    /// Printed or corrected.
+    pub form: Form,
+    /// Fixed printed claim id.
+    pub corrects: Option<String>,
+    /// Expected verdict (`None` for definitions and inner claims).
+    pub expect: Option<Verdict>,
+    /// Note.
+    pub note: Option<String>,
+    /// `file:line` of the claim.
+    pub position: String,
+    /// The sampling domain, by name.
+    pub domain: Option<Located>,
+    /// Extra sampled variables.
+    pub vars: Vec<(String, PExpr)>,
+    /// Extra constraints.
+    pub wheres: Vec<PExpr>,
+    /// Let bindings.
+    pub lets: Vec<Binding>,
+    /// Where the let block is.
+    pub lets_origin: Option<Origin>,
+    /// Kind-specific data.
+    pub body: Body,
+    /// Residual scale expression.
+    pub scale: Option<PExpr>,
+    /// Number of samples.
+    pub samples: usize,
+    /// Exact settings.
+    pub exact: Option<ExactSpec>,
+    /// Bound g on bits lost.
+    pub max_loss_bits: f64,
+    /// Refutation floor 2^-bits.
+    pub refute_floor_bits: f64,
+    /// Seed.
+    pub seed: u64,
+    /// The paper's environment ("Proposition 6", "Section 2", …); see `structure`.
+    pub environment: Option<Located>,
+    /// The claim's role in its environment (statement, proof-step, …).
+    pub role: Option<Located>,
+    /// Ids of the claims this one uses.
+    pub uses: Vec<Located>,
+}
+
+/// The whole catalogue.
+#[derive(Clone, Debug)]
+pub struct Catalogue {
+    /// Claims in file order (files sorted by name).
+    pub claims: Vec<Claim>,
+    /// Domains by name.
+    pub domains: BTreeMap<String, Domain>,
+    /// Functions: registered + defined by `definition` claims.
+    pub registry: Registry,
+    /// Sections: (file, number, title).
+    pub sections: Vec<(String, String, String)>,
+}
