@@ -117,10 +117,18 @@ fn verify_output_is_deterministic_across_thread_counts() {
             .unwrap()
             .stdout
     };
-    let a = run("1");
-    assert!(!a.is_empty());
-    assert_eq!(a, run("2"));
-    assert_eq!(a, run("2"));
+    // everything but the proofs' wall times is deterministic
+    let strip = |out: Vec<u8>| {
+        let mut v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+        for c in v["claims"].as_array_mut().unwrap() {
+            c["proof"]["ms"] = serde_json::Value::Null;
+        }
+        v
+    };
+    let a = strip(run("1"));
+    assert!(!a["claims"].as_array().unwrap().is_empty());
+    assert_eq!(a, strip(run("2")));
+    assert_eq!(a, strip(run("2")));
 }
 
 #[test]

@@ -58,14 +58,8 @@ fn check_claim(cat: &Catalogue, claim: &Claim) -> Result<(), Failed> {
     if r.verdict == Verdict::Refuted && r.counterexample.is_none() {
         return Err(format!("{}: refuted without a counterexample", r.id).into());
     }
-    if r.verdict == Verdict::Proved {
-        let ok = r
-            .exact
-            .as_ref()
-            .is_some_and(|e| e.all_zero && e.points > 0 && e.per_point_bound.is_some());
-        if !ok {
-            return Err(format!("{}: proved without exact evidence", r.id).into());
-        }
+    if r.verdict == Verdict::Proved && !r.proof.is_proved() {
+        return Err(format!("{}: proved without a symbolic proof", r.id).into());
     }
     Ok(())
 }

@@ -14,11 +14,12 @@ pub fn proof_block(p: &ProofInfo) -> String {
         }
         return s;
     }
-    let _ = writeln!(
-        s,
-        "Symbolic proof: the normal form of lhs − rhs is 0 (numerators of {} terms).\n",
-        p.terms
-    );
+    let size = if p.terms > 0 {
+        format!(" (numerators of {} terms)", p.terms)
+    } else {
+        String::new()
+    };
+    let _ = writeln!(s, "Symbolic proof: the normal form of lhs − rhs is 0{size}.\n");
     let items = |s: &mut String, title: &str, xs: &[String]| {
         if !xs.is_empty() {
             let shown: Vec<String> = xs.iter().map(|x| format!("`{x}`")).collect();

@@ -186,11 +186,7 @@ fn states_condition(ctx: Ctx<'_>, sides: &[&PExpr]) -> Option<String> {
 
 /// Why the claim is not an analytic function of its complex variables, if it is not
 /// (then an indeterminate does not stand for every complex value).
-fn not_analytic(
-    ctx: Ctx<'_>,
-    vars: &[(String, &PExpr)],
-    sides: &[&PExpr],
-) -> Option<String> {
+fn not_analytic(ctx: Ctx<'_>, vars: &[(String, &PExpr)], sides: &[&PExpr]) -> Option<String> {
     if !vars.iter().any(|(_, p)| p.text.contains("cplx(")) {
         return None;
     }
