@@ -19,7 +19,10 @@ pub fn proof_block(p: &ProofInfo) -> String {
     } else {
         String::new()
     };
-    let _ = writeln!(s, "Symbolic proof: the normal form of lhs − rhs is 0{size}.\n");
+    let _ = writeln!(
+        s,
+        "Symbolic proof: the normal form of lhs − rhs is 0{size}.\n"
+    );
     let items = |s: &mut String, title: &str, xs: &[String]| {
         if !xs.is_empty() {
             let shown: Vec<String> = xs.iter().map(|x| format!("`{x}`")).collect();
