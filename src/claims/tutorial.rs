@@ -20,7 +20,6 @@
 //! lhs = "(a + b)^2"
 //! rhs = "a^2 + 2*a*b + b^2"
 //! exact = true
-//! degree = 2
 //! "#;
 //! # let _ = TOML;
 //! ```
@@ -38,7 +37,7 @@
 //! ([`crate::bindings::euler_top::registry`]).
 //!
 //! ```
-//! # const TOML: &str = "[[claim]]\nid = \"square\"\nlocation = \"Tutorial\"\nprinted = 'p'\nenvironment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"uniform(-2, 2)\"], [\"b\", \"uniform(-2, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + 2*a*b + b^2\"\nexact = true\ndegree = 2\n";
+//! # const TOML: &str = "[[claim]]\nid = \"square\"\nlocation = \"Tutorial\"\nprinted = 'p'\nenvironment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"uniform(-2, 2)\"], [\"b\", \"uniform(-2, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + 2*a*b + b^2\"\nexact = true\n";
 //! use eulertop::claims::catalogue::{load_sources, Body};
 //! use eulertop::claims::kind::Kind;
 //! use eulertop::claims::registry::Registry;
@@ -64,7 +63,7 @@
 //! every precision.
 //!
 //! ```
-//! # const TOML: &str = "[[claim]]\nid = \"square\"\nlocation = \"Tutorial\"\nprinted = 'p'\nenvironment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"uniform(-2, 2)\"], [\"b\", \"uniform(-2, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + 2*a*b + b^2\"\nexact = true\ndegree = 2\n";
+//! # const TOML: &str = "[[claim]]\nid = \"square\"\nlocation = \"Tutorial\"\nprinted = 'p'\nenvironment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"uniform(-2, 2)\"], [\"b\", \"uniform(-2, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + 2*a*b + b^2\"\nexact = true\n";
 //! # use eulertop::claims::catalogue::load_sources;
 //! # use eulertop::claims::registry::Registry;
 //! # let cat = load_sources(&[("t.toml".into(), TOML.into())], Registry::new()).unwrap();
@@ -115,7 +114,7 @@
 //! bound turns `holds` into `proved`.  A false claim is `refuted` with a counterexample.
 //!
 //! ```
-//! # const TOML: &str = "[[claim]]\nid = \"square\"\nlocation = \"Tutorial\"\nprinted = 'p'\nenvironment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"uniform(-2, 2)\"], [\"b\", \"uniform(-2, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + 2*a*b + b^2\"\nexact = true\ndegree = 2\n";
+//! # const TOML: &str = "[[claim]]\nid = \"square\"\nlocation = \"Tutorial\"\nprinted = 'p'\nenvironment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"uniform(-2, 2)\"], [\"b\", \"uniform(-2, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + 2*a*b + b^2\"\nexact = true\n";
 //! # use eulertop::claims::catalogue::load_sources;
 //! # use eulertop::claims::registry::Registry;
 //! use eulertop::claims::verdict::{run_claim, Options, Verdict};

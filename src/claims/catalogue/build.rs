@@ -220,19 +220,15 @@ fn shell(tb: &Table<'_>) -> Result<Claim, LoadError> {
     })
 }
 
-/// `exact = true`: identities only, with a degree bound.
+/// `exact = true`: identities only.
 fn exact(tb: &Table<'_>, kind: Kind) -> Result<Option<ExactSpec>, LoadError> {
     if tb.t.exact != Some(true) {
         return Ok(None);
     }
-    let degree =
-        tb.t.degree
-            .ok_or_else(|| tb.error("exact = true needs 'degree' (Schwartz–Zippel bound)"))?;
     if kind != Kind::Identity {
         return Err(tb.error("exact = true is only supported for identity claims"));
     }
     Ok(Some(ExactSpec {
-        degree,
         samples: tb.count("exact_samples", tb.t.exact_samples)?,
     }))
 }

@@ -74,8 +74,6 @@ pub enum Body {
 /// Exact-evaluation settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ExactSpec {
-    /// Total-degree bound of the numerator.
-    pub degree: u32,
     /// Number of exact points.
     pub samples: usize,
 }

@@ -116,7 +116,6 @@ pub struct ClaimToml {
     pub define: Option<Spanned<String>>,
     pub samples: Option<usize>,
     pub exact: Option<bool>,
-    pub degree: Option<u32>,
     pub exact_samples: Option<usize>,
     pub max_loss_bits: Option<f64>,
     pub refute_floor_bits: Option<f64>,

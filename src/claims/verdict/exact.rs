@@ -1,7 +1,7 @@
 //! Exact evaluation of an identity over BigRational (`exact = true`): lhs − rhs exactly
-//! zero at `exact_samples` random rational points turns a numerical `holds` into
-//! `proved`, with a Schwartz–Zippel bound; an exact nonzero is a refutation with an exact
-//! counterexample.
+//! zero at `exact_samples` random rational points is reported as evidence (it never
+//! proves: only the symbolic normal form does, see [`super::symbolic`]); an exact nonzero
+//! is a refutation with an exact counterexample.
 
 use super::context::{eval, named, render, Ctx};
 use super::result::{Cause, Counterexample, Evidence, ExactInfo, Failure};
@@ -99,15 +99,12 @@ pub fn refine(
         st.accepted as f64 / st.draws as f64
     };
     let set_size = if st.nonuniform { None } else { st.min_set };
-    let per_point = set_size.map(|s| (f64::from(spec.degree) / (s as f64 * acceptance)).min(1.0));
-    let overall = per_point.map(|q| q.powi(n as i32));
-    let note = pts.note.unwrap_or_else(|| match (pts.all_zero, set_size) {
-        (true, Some(s)) => format!(
-            "lhs − rhs is exactly 0 at {n} random rational points; a nonzero numerator of degree ≤ {} vanishes at one with probability ≤ {}/({s}·{acceptance:.3})",
-            spec.degree, spec.degree
-        ),
-        (true, None) => "exactly 0, but a non-uniform primitive (normal) was sampled: no Schwartz–Zippel bound".into(),
-        (false, _) => "exact evaluation found lhs ≠ rhs".into(),
+    let note = pts.note.unwrap_or_else(|| {
+        if pts.all_zero {
+            format!("lhs − rhs is exactly 0 at {n} random rational points (evidence, not a proof)")
+        } else {
+            "exact evaluation found lhs ≠ rhs".into()
+        }
     });
     if pts.all_zero && ev.verdict == Verdict::Refuted {
         ev.verdict = Verdict::Inconclusive;
@@ -116,11 +113,8 @@ pub fn refine(
     }
     ev.exact = Some(ExactInfo {
         points: n,
-        degree: spec.degree,
         set_size,
         acceptance,
-        per_point_bound: per_point,
-        overall_bound: overall,
         all_zero: pts.all_zero,
         note,
     });

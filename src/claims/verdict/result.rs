@@ -115,16 +115,10 @@ pub struct FailedSample {
 pub struct ExactInfo {
     /// Rational points evaluated.
     pub points: usize,
-    /// Declared total-degree bound.
-    pub degree: u32,
     /// Smallest primitive set size |S| (None: a non-uniform primitive was used).
     pub set_size: Option<u64>,
     /// Fraction of candidate points accepted by the constraints.
     pub acceptance: f64,
-    /// degree / (|S| · acceptance): probability bound per point for a nonzero numerator.
-    pub per_point_bound: Option<f64>,
-    /// per_point_bound ^ points.
-    pub overall_bound: Option<f64>,
     /// Was lhs − rhs exactly zero at every point?
     pub all_zero: bool,
     /// Explanation.
