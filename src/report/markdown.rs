@@ -237,27 +237,18 @@ pub fn claim_block(input: &ReportInput, r: &ClaimResult) -> String {
             n.split_whitespace().collect::<Vec<_>>().join(" ")
         );
     }
-    if let Some(c) = &r.corrects {
-        let _ = writeln!(s, "Corrects the printed form [`{c}`](#{}).\n", anchor(c));
-    }
-    let fixes: Vec<&ClaimResult> = input
-        .results
-        .iter()
-        .filter(|o| o.corrects.as_deref() == Some(r.id.as_str()))
-        .collect();
-    for f in &fixes {
-        let _ = writeln!(
-            s,
-            "Corrected form: [`{}`]({}.md#{}) — {}.\n",
-            f.id,
-            stem_of(f),
-            anchor(&f.id),
-            verdict_badge(f.verdict)
-        );
-    }
+    s.push_str(&corrections(input, r));
     if r.verdict == Verdict::Defined {
         return s;
     }
+    s.push_str(&evidence_block(r));
+    s
+}
+
+/// The evidence of a judged claim: samples, residual ladder, proof, exact points,
+/// counterexample and failed samples.
+fn evidence_block(r: &ClaimResult) -> String {
+    let mut s = String::new();
     let _ = writeln!(
         s,
         "Samples: {} evaluated, {} could not be evaluated. {}\n",
@@ -316,6 +307,30 @@ pub fn claim_block(input: &ReportInput, r: &ClaimResult) -> String {
             let _ = writeln!(s, "- at {} bits: {}", f.bits, f.message);
         }
         s.push('\n');
+    }
+    s
+}
+
+/// Links between a printed claim and its corrected forms.
+fn corrections(input: &ReportInput, r: &ClaimResult) -> String {
+    let mut s = String::new();
+    if let Some(c) = &r.corrects {
+        let _ = writeln!(s, "Corrects the printed form [`{c}`](#{}).\n", anchor(c));
+    }
+    let fixes: Vec<&ClaimResult> = input
+        .results
+        .iter()
+        .filter(|o| o.corrects.as_deref() == Some(r.id.as_str()))
+        .collect();
+    for f in &fixes {
+        let _ = writeln!(
+            s,
+            "Corrected form: [`{}`]({}.md#{}) — {}.\n",
+            f.id,
+            stem_of(f),
+            anchor(&f.id),
+            verdict_badge(f.verdict)
+        );
     }
     s
 }
