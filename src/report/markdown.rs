@@ -383,61 +383,68 @@ pub fn errata(input: &ReportInput) -> String {
         let _ = writeln!(s, "No printed form is refuted.");
     }
     for r in refuted {
-        let _ = writeln!(
-            s,
-            "## {} {}\n",
-            r.location,
-            r.labels
-                .iter()
-                .map(|l| format!("({l})"))
-                .collect::<Vec<_>>()
-                .join(" ")
-        );
-        let _ = writeln!(
-            s,
-            "Printed ([`{}`]({}.md#{})), {}:\n",
-            r.id,
-            stem_of(r),
-            anchor(&r.id),
-            verdict_badge(r.verdict)
-        );
-        printed_block(&mut s, input, &r.printed);
-        if let Some(n) = &r.note {
-            let _ = writeln!(s, "{}\n", one_line(n));
-        }
-        if let Some(c) = &r.counterexample {
-            let _ = writeln!(
-                s,
-                "Counterexample (12 significant digits):\n\n{}",
-                counterexample_block(c)
-            );
-        }
-        let fixes: Vec<&ClaimResult> = input
-            .results
+        s.push_str(&erratum(input, r));
+    }
+    s
+}
+
+/// One refuted printed form with its evidence and its corrected forms.
+fn erratum(input: &ReportInput, r: &ClaimResult) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "## {} {}\n",
+        r.location,
+        r.labels
             .iter()
-            .filter(|o| o.corrects.as_deref() == Some(r.id.as_str()))
-            .collect();
-        if fixes.is_empty() {
-            let _ = writeln!(s, "No corrected form is catalogued.\n");
-        }
-        for f in fixes {
+            .map(|l| format!("({l})"))
+            .collect::<Vec<_>>()
+            .join(" ")
+    );
+    let _ = writeln!(
+        s,
+        "Printed ([`{}`]({}.md#{})), {}:\n",
+        r.id,
+        stem_of(r),
+        anchor(&r.id),
+        verdict_badge(r.verdict)
+    );
+    printed_block(&mut s, input, &r.printed);
+    if let Some(n) = &r.note {
+        let _ = writeln!(s, "{}\n", one_line(n));
+    }
+    if let Some(c) = &r.counterexample {
+        let _ = writeln!(
+            s,
+            "Counterexample (12 significant digits):\n\n{}",
+            counterexample_block(c)
+        );
+    }
+    let fixes: Vec<&ClaimResult> = input
+        .results
+        .iter()
+        .filter(|o| o.corrects.as_deref() == Some(r.id.as_str()))
+        .collect();
+    if fixes.is_empty() {
+        let _ = writeln!(s, "No corrected form is catalogued.\n");
+    }
+    for f in fixes {
+        let _ = writeln!(
+            s,
+            "Corrected ([`{}`]({}.md#{})), {}, best residual {}:\n",
+            f.id,
+            stem_of(f),
+            anchor(&f.id),
+            verdict_badge(f.verdict),
+            best_residual(f)
+        );
+        printed_block(&mut s, input, &f.printed);
+        if let Some(n) = &f.note {
             let _ = writeln!(
                 s,
-                "Corrected ([`{}`]({}.md#{})), {}, best residual {}:\n",
-                f.id,
-                stem_of(f),
-                anchor(&f.id),
-                verdict_badge(f.verdict),
-                best_residual(f)
+                "{}\n",
+                n.split_whitespace().collect::<Vec<_>>().join(" ")
             );
-            printed_block(&mut s, input, &f.printed);
-            if let Some(n) = &f.note {
-                let _ = writeln!(
-                    s,
-                    "{}\n",
-                    n.split_whitespace().collect::<Vec<_>>().join(" ")
-                );
-            }
         }
     }
     s
