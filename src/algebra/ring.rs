@@ -114,6 +114,9 @@ pub(crate) struct RootInfo {
 }
 
 /// The mutable part of a ring.
+/// A remembered value of an implicit function: its shape and components.
+pub(crate) type ImplicitValue = (String, Vec<(Val, Option<Arc<Node>>)>);
+
 pub(crate) struct State {
     pub vars: Vec<VarInfo>,
     pub roots: Vec<RootInfo>,
@@ -130,6 +133,8 @@ pub(crate) struct State {
     pub derivation_lines: Vec<String>,
     /// Opaque function values already made: `f(args)` (rendered) → the symbol.
     pub opaque_calls: std::collections::BTreeMap<String, Val>,
+    /// Values of implicitly defined functions at given arguments (see [`Ring::remember`]).
+    pub implicit_values: std::collections::BTreeMap<String, ImplicitValue>,
 }
 
 pub(crate) struct Inner {
@@ -187,6 +192,7 @@ impl Ring {
             dcache: std::collections::HashMap::new(),
             derivation_lines: Vec::new(),
             opaque_calls: std::collections::BTreeMap::new(),
+            implicit_values: std::collections::BTreeMap::new(),
         };
         Ring {
             inner: Arc::new(Inner {
@@ -431,11 +437,64 @@ impl Ring {
         self.state().notes.clone()
     }
 
-    pub(crate) fn note(&self, s: String) {
+    /// Adds a note on the derivation (shown with the proof; repeated notes are kept once).
+    pub fn note(&self, s: String) {
         let mut st = self.state();
         if !st.notes.contains(&s) {
             st.notes.push(s);
         }
+    }
+
+    /// Records an assumption that the caller has decided outside the algebra (such as
+    /// the solution branch of an implicit map, which the numerical evidence checks).
+    pub fn assume(&self, statement: String) {
+        let mut st = self.state();
+        if st.assumptions.iter().all(|a| a.statement != statement) {
+            let origin = st.origin.clone();
+            st.assumptions.push(Assumption {
+                statement,
+                sign: 0,
+                origin,
+            });
+        }
+    }
+
+    /// A symbol name not yet used in this ring: `base`, else `base` followed by a letter
+    /// and a number.
+    pub fn fresh_name(&self, base: &str) -> String {
+        let st = self.state();
+        let taken =
+            |n: &str| st.vars.iter().any(|v| v.name == n) || st.roots.iter().any(|r| r.name == n);
+        if !taken(base) {
+            return base.to_string();
+        }
+        (2..)
+            .map(|j| format!("{base}x{j}"))
+            .find(|n| !taken(n))
+            .unwrap_or_default()
+    }
+
+    /// Remembers `values` (of the caller's `shape`) as the value of an implicitly
+    /// defined function at the arguments described by `key` (the function's name and
+    /// the normal forms of its arguments), so that evaluating the call returns them.
+    pub fn remember(&self, key: &str, shape: &str, values: &[Sym]) {
+        let vals = values
+            .iter()
+            .map(|v| (v.val.clone(), v.node.clone()))
+            .collect();
+        self.state()
+            .implicit_values
+            .insert(key.to_string(), (shape.to_string(), vals));
+    }
+
+    /// The shape and values remembered for `key`, if any.
+    pub fn recall(&self, key: &str) -> Option<(String, Vec<Sym>)> {
+        let (shape, vals) = self.state().implicit_values.get(key).cloned()?;
+        let syms = vals
+            .into_iter()
+            .map(|(v, n)| Sym::from_val(self, v, n))
+            .collect();
+        Some((shape, syms))
     }
 }
 

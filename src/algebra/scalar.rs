@@ -159,6 +159,9 @@ impl Scalar for Sym {
 impl Real for Sym {
     const FIXED: bool = false;
     const BY_RULE: bool = true;
+    fn failure(&self) -> Option<String> {
+        self.ring.error().map(|e| e.to_string())
+    }
     fn sncndn_by_rule(u: &Self, k: &Self) -> Result<(Self, Self, Self), String> {
         u.sncndn(k).map_err(|e| e.to_string())
     }

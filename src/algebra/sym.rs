@@ -19,7 +19,7 @@ use std::sync::Arc;
 /// The largest numerator plus denominator, in terms, that the prover works with; beyond
 /// it a proof stops with [`AlgebraError::TooLarge`] (such values come from iterations
 /// written out in a claim, such as Newton steps, not from the paper's identities).
-pub const MAX_TERMS: usize = 20_000;
+pub const MAX_TERMS: usize = 8_000;
 
 /// The exact part of a value with its shadow, without the ring handle (so the symbol
 /// table can store values without reference cycles).

@@ -20,6 +20,7 @@
 
 use crate::claims::backend::Num;
 use crate::claims::builtins::table::name_table;
+use crate::claims::implicit::Implicit;
 use crate::claims::registry::{GenericFunction, Registry, RegistryError};
 use crate::claims::value::Value;
 use crate::linalg::Vec3;
@@ -166,14 +167,14 @@ pub fn readme_table() -> String {
     s
 }
 
-fn v3<R: Num>(v: &Value<R>) -> Result<Vec3<R>, String> {
+pub(super) fn v3<R: Num>(v: &Value<R>) -> Result<Vec3<R>, String> {
     v.as_vec3()
 }
-fn inertia<R: Num>(a: &[Value<R>], at: usize) -> Result<Inertia<R>, String> {
+pub(super) fn inertia<R: Num>(a: &[Value<R>], at: usize) -> Result<Inertia<R>, String> {
     Inertia::new(a[at].as_real()?, a[at + 1].as_real()?, a[at + 2].as_real()?)
         .map_err(|e| e.to_string())
 }
-fn params<R: Real>(a: &[Value<R>]) -> Result<(Inertia<R>, EllipticParams<R>), String> {
+pub(super) fn params<R: Real>(a: &[Value<R>]) -> Result<(Inertia<R>, EllipticParams<R>), String> {
     let i = inertia(a, 0)?;
     let p =
         EllipticParams::new(&i, &a[3].as_real()?, &a[4].as_real()?).map_err(|e| e.to_string())?;
@@ -189,7 +190,7 @@ fn sign_of<R: Num>(v: &Value<R>) -> Result<i8, String> {
         Err("sign argument must be nonzero".into())
     }
 }
-fn err(e: ModelError) -> String {
+pub(super) fn err(e: ModelError) -> String {
     e.to_string()
 }
 
@@ -198,7 +199,7 @@ impl GenericFunction for ModelFn {
         use ModelFn as F;
         if R::BY_RULE && self.is_implicit() {
             return Err(format!(
-                "uses the implicit map {}: its value is a root of the map's equations, not an expression",
+                "uses the implicit map {}: its value is a root of the map's equations, which the prover parametrizes only where the replaced arguments are free variables of the claim, or substitutes a stated value into",
                 self.name()
             ));
         }
@@ -247,6 +248,14 @@ impl GenericFunction for ModelFn {
             }
             _ => w(a),
         }
+    }
+
+    fn implicit(&self) -> Option<&dyn Implicit> {
+        self.is_implicit().then_some(self as &dyn Implicit)
+    }
+
+    fn name_for_proofs(&self) -> &str {
+        self.name()
     }
 
     fn call_algebraic<S: Num>(&self, a: &[Value<S>]) -> Result<Value<S>, String> {

@@ -3,3 +3,4 @@
 //! registers the model's functions under the names the catalogue uses.
 
 pub mod euler_top;
+mod implicit;

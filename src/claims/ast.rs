@@ -154,7 +154,7 @@ pub struct Binding {
 
 impl Expr {
     /// Calls `f` on every sub-expression (pre-order), including `self`.
-    pub fn walk(&self, f: &mut dyn FnMut(&Expr)) {
+    pub fn walk<'a>(&'a self, f: &mut dyn FnMut(&'a Expr)) {
         f(self);
         match &self.kind {
             ExprKind::Num(_) | ExprKind::Name(_) => {}

@@ -104,6 +104,11 @@ pub trait Num: Scalar + PartialOrd {
     }
     /// An elementary function of one argument.
     fn real_fn(&self, f: RealFn) -> Result<Self, String>;
+    /// Why a value is meaningless, when the number system records failures inside
+    /// operators (see [`Real::failure`]).
+    fn failure(&self) -> Option<String> {
+        None
+    }
     /// A real function of two arguments: `f(self, y)`.
     fn real_fn2(&self, f: RealFn2, _y: &Self) -> Result<Self, String> {
         unavailable::<Self, _>(f.what())
@@ -200,6 +205,9 @@ fn real_fn_generic<R: Real>(x: &R, f: RealFn) -> Result<R, String> {
 impl<R: Real> Num for R {
     const EXACT: bool = false;
     const ARITHMETIC: &'static str = "floating-point arithmetic";
+    fn failure(&self) -> Option<String> {
+        Real::failure(self)
+    }
     fn real_fn(&self, f: RealFn) -> Result<Self, String> {
         real_fn_generic(self, f)
     }

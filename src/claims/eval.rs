@@ -295,10 +295,9 @@ impl<'r, T: Backend> Evaluator<'r, T> {
         self.nesting.set(n);
         let v = v?;
         if !v.is_finite() {
-            return Err(EvalError::at(
-                "value is not finite (pole or overflow)",
-                e.span,
-            ));
+            let why = v.components().iter().find_map(|c| c.failure());
+            let msg = why.unwrap_or_else(|| "value is not finite (pole or overflow)".into());
+            return Err(EvalError::at(msg, e.span));
         }
         Ok(v)
     }

@@ -17,6 +17,7 @@ pub mod builtins;
 pub mod catalogue;
 pub mod cmath;
 pub mod eval;
+pub mod implicit;
 pub mod kind;
 pub mod latex;
 pub mod lexer;

@@ -10,6 +10,7 @@
 use super::ast::Binding;
 use super::backend::Num;
 use super::builtins::Builtin;
+use super::implicit::Implicit;
 use super::value::Value;
 use crate::algebra::Sym;
 use crate::numbers::{Dual, Rational, Real};
@@ -32,6 +33,11 @@ pub trait ExtFunction: Send + Sync {
     fn call_exact(&self, args: &[Value<Rational>]) -> Result<Value<Rational>, String>;
     /// On exact symbolic values (the prover's backend).
     fn call_sym(&self, args: &[Value<Sym>]) -> Result<Value<Sym>, String>;
+    /// How the prover handles the function when its value is defined implicitly (by
+    /// equations the numerical backends solve); `None` for explicit functions.
+    fn implicit(&self) -> Option<&dyn Implicit> {
+        None
+    }
 }
 
 /// A function written once, generically over the backends.
@@ -43,6 +49,15 @@ pub trait GenericFunction: Send + Sync {
     /// not rational).
     fn call_algebraic<S: Num>(&self, _args: &[Value<S>]) -> Result<Value<S>, String> {
         Err("not available in exact rational arithmetic".into())
+    }
+    /// The prover's view of an implicitly defined function (see
+    /// [`ExtFunction::implicit`]); `None` for explicit functions.
+    fn implicit(&self) -> Option<&dyn Implicit> {
+        None
+    }
+    /// The function's name, for the prover's records of implicit values.
+    fn name_for_proofs(&self) -> &str {
+        ""
     }
 }
 
@@ -63,7 +78,15 @@ impl<G: GenericFunction> ExtFunction for G {
         self.call_algebraic(a)
     }
     fn call_sym(&self, a: &[Value<Sym>]) -> Result<Value<Sym>, String> {
+        if self.implicit().is_some() {
+            if let Some(v) = super::implicit::recall(self.name_for_proofs(), a) {
+                return Ok(v);
+            }
+        }
         self.call(a)
+    }
+    fn implicit(&self) -> Option<&dyn Implicit> {
+        GenericFunction::implicit(self)
     }
 }
 

@@ -83,8 +83,23 @@ pub fn delta_master12<R: Real>(p: &EllipticParams<R>, alpha: &R, h: &R) -> Resul
     let hn = Dual::constant(h.clone() * p.nu() / h.from_i64(2));
     let al = Dual::constant(alpha.clone());
     solve_phase(p, h, "(master12)", |sn, cn, dn| {
-        sn.clone() * (sn.one() - al.clone() * sn.sqr()) - hn.clone() * cn.clone() * dn.clone()
+        master12_equation(&al, &hn, sn, cn, dn)
     })
+}
+
+/// (master12) in the denominator-free form `sn(1 − α sn²) − (hν/2) cn dn`, with
+/// `hnu2 = hν/2` and `sn`, `cn`, `dn` of the phase step: the equation that
+/// [`delta_master12`] solves, and that the prover uses as the definition of `δ`.
+pub fn master12_equation<S: Scalar>(alpha: &S, hnu2: &S, sn: &S, cn: &S, dn: &S) -> S {
+    sn.clone() * (sn.one() - alpha.clone() * sn.sqr()) - hnu2.clone() * cn.clone() * dn.clone()
+}
+
+/// (MV master) in the form `sn cn dn − (hν/2)(1 + α sn² − β sn⁴)`, with `hnu2 = hν/2`
+/// and (α, β) from (MV alphabeta): the equation that [`delta_vm`] solves.
+pub fn mv_master_equation<S: Scalar>(alpha: &S, beta: &S, hnu2: &S, sn: &S, cn: &S, dn: &S) -> S {
+    let s2 = sn.sqr();
+    sn.clone() * cn.clone() * dn.clone()
+        - hnu2.clone() * (sn.one() + alpha.clone() * s2.clone() - beta.clone() * s2.sqr())
 }
 
 /// `δ_VM` solving (MV master) `sn cn dn = (hν/2)(1 + α sn² − β sn⁴)` with (α, β)
@@ -100,9 +115,7 @@ pub fn delta_vm<R: Real>(
     let hn = Dual::constant(h.clone() * p.nu() / h.from_i64(2));
     let (a, b) = (Dual::constant(a), Dual::constant(b));
     solve_phase(p, h, "(MV master)", |sn, cn, dn| {
-        let s2 = sn.sqr();
-        sn.clone() * cn.clone() * dn.clone()
-            - hn.clone() * (sn.one() + a.clone() * s2.clone() - b.clone() * s2.sqr())
+        mv_master_equation(&a, &b, &hn, sn, cn, dn)
     })
 }
 

@@ -65,7 +65,10 @@ pub fn cayley<S: Scalar>(v: &Vec3<S>) -> Mat3<S> {
     (i + vm) * inv
 }
 
-fn omega_residual<S: Scalar>(v: &Vec3<S>, j: &Mat3<S>, hm: &Mat3<S>) -> Vec3<S> {
+/// The skew residual `vee(ωJ − Jωᵀ − hM̌)` of (M thru omega) at `ω = cayley(v)`, with
+/// `j = J` and `hm = hM̌`: the equations [`vm_step`] solves for `v`, and that the prover
+/// uses as the definition of `ω`.
+pub fn omega_residual<S: Scalar>(v: &Vec3<S>, j: &Mat3<S>, hm: &Mat3<S>) -> Vec3<S> {
     let w = cayley(v);
     vee(&(w.clone() * j.clone() - j.clone() * w.transpose() - hm.clone()))
 }
@@ -77,6 +80,8 @@ pub struct VmStep<R> {
     pub omega: Mat3<R>,
     /// `M̂` from (VM) `M̂ = ωᵀMω`, as a vector.
     pub m_hat: Vec3<R>,
+    /// The Cayley vector `v` of `ω = cayley(v)`.
+    pub v: Vec3<R>,
     /// Newton iterations used.
     pub iterations: usize,
 }
@@ -145,12 +150,18 @@ pub fn vm_step<R: Real>(inertia: &Inertia<R>, m: &Vec3<R>, h: &R) -> Result<VmSt
         return Err(fail(it, rel.to_f64()));
     }
     let w = cayley(&v);
-    let m_hat = vee(&(w.transpose() * mm * w.clone()));
+    let m_hat = vm_conjugate(&w, m);
     Ok(VmStep {
         omega: w,
         m_hat,
+        v,
         iterations: it,
     })
+}
+
+/// (VM) `M̂ = ωᵀMω` (on hat matrices), as a vector.
+pub fn vm_conjugate<S: Scalar>(w: &Mat3<S>, m: &Vec3<S>) -> Vec3<S> {
+    vee(&(w.transpose() * hat(m) * w.clone()))
 }
 
 /// Coefficients (constant term first) of `det P(λ)` for a 3×3 matrix polynomial

@@ -155,6 +155,11 @@ pub trait Real: Scalar + PartialOrd {
     /// (am, F, the inverse, complex arguments) is refused with a clear error rather than
     /// iterated on symbols.  `false` for every numeric type.
     const BY_RULE: bool = false;
+    /// Why a value is meaningless, for number systems that record failures inside
+    /// operators (the prover's symbolic values); `None` for the others.
+    fn failure(&self) -> Option<String> {
+        None
+    }
     /// `(sn, cn, dn)(u, k)` by the type's own rule (only called when [`Real::BY_RULE`]).
     fn sncndn_by_rule(_u: &Self, _k: &Self) -> Result<(Self, Self, Self), String> {
         Err("sn, cn, dn have no rule for this type".into())

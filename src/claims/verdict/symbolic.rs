@@ -278,67 +278,210 @@ fn complex_shadows(points: &[Point], name: &str) -> Vec<Complex> {
         .collect()
 }
 
-/// Binds the sampled variables as symbols in a fresh evaluator on `ring`.
+/// An implicit call whose eliminated arguments are free variables of the claim: the
+/// prover replaces them by the function's parametrization.
+struct Plan<'e> {
+    name: String,
+    args: &'e [Expr],
+    vars: Vec<String>,
+}
+
+/// The implicit calls of the claim's own formulas that can be parametrized, in order;
+/// each free variable is eliminated at most once.
+fn plans<'e>(ctx: Ctx<'e>, roles: &[(String, Role, &PExpr)], exprs: &[&'e Expr]) -> Vec<Plan<'e>> {
+    let free = |n: &str| roles.iter().any(|(v, r, _)| v == n && *r == Role::Free);
+    let mut out: Vec<Plan<'e>> = Vec::new();
+    for e in exprs {
+        e.walk(&mut |x: &'e Expr| {
+            let ExprKind::Call(name, args) = &x.kind else {
+                return;
+            };
+            let Some(imp) = ctx.cat.registry.ext(name).and_then(|r| r.f.implicit()) else {
+                return;
+            };
+            let vars: Option<Vec<String>> = imp
+                .eliminates()
+                .iter()
+                .map(|&j| match args.get(j).map(|a| &a.kind) {
+                    Some(ExprKind::Name(v)) if free(v) => Some(v.clone()),
+                    _ => None,
+                })
+                .collect();
+            let Some(vars) = vars else { return };
+            let taken = out.iter().any(|p| p.vars.iter().any(|v| vars.contains(v)));
+            if !taken {
+                out.push(Plan {
+                    name: name.clone(),
+                    args,
+                    vars,
+                });
+            }
+        });
+    }
+    out
+}
+
+/// Binds the sampled variables as symbols in a fresh evaluator on `ring`; implicit
+/// calls with free arguments are parametrized, and the equations the parametrization
+/// must satisfy are returned with the evaluator.
 fn bind_variables<'c>(
     ctx: Ctx<'c>,
     ring: &Ring,
     roles: &[(String, Role, &PExpr)],
     points: &[Point],
-) -> AlgResult<Evaluator<'c, Sym>> {
+    plans: &[Plan<'c>],
+) -> AlgResult<(Evaluator<'c, Sym>, Vec<Sym>)> {
     let mut ev = Evaluator::new(&ctx.cat.registry, ring.integer(0));
-    let fail = |m: String| AlgebraError::NotAlgebraic(m);
+    let fail = |m: String| AlgebraError::Domain(m);
     for (name, role, def) in roles {
-        let first = points[0].get(name).cloned();
-        let value = match (role, first) {
-            (Role::Free, Some(Value::Real(_))) => {
-                Value::Real(ring.indeterminate(name, &shadows(points, name, None))?)
-            }
-            (Role::Free, Some(Value::Complex(_))) => {
-                // an analytic identity in a complex variable holds for all complex values
-                // once it holds for an indeterminate (the claim may not use re/im/conj)
-                let z = ring.indeterminate(name, &complex_shadows(points, name))?;
-                Value::Complex(Cplx::new(z, ring.integer(0)))
-            }
-            (Role::Free, Some(Value::Vec3(_))) => {
-                let c = |j: usize| {
-                    ring.indeterminate(&format!("{name}{}", j + 1), &shadows(points, name, Some(j)))
-                };
-                Value::Vec3(Vec3::new(c(0)?, c(1)?, c(2)?))
-            }
-            (Role::Case, Some(v)) => v.map(&mut |x: &f64| {
-                let q = rug::Rational::from_f64(*x).unwrap_or_default();
-                ring.rational(&q)
-            }),
-            (Role::Computed, _) => eval(&ev, def).map_err(fail)?,
-            (_, other) => {
-                return Err(fail(format!(
-                    "variable '{name}' of type {:?} cannot be a symbol",
-                    other.map(|v| v.type_name())
-                )))
-            }
-        };
+        let value = bind_one(&ev, ring, name, role, def, points)?;
         ev.bind(name, value);
+    }
+    let mut checks = Vec::new();
+    for plan in plans {
+        checks.extend(parametrize(ctx, &mut ev, plan)?);
+        for (name, role, def) in roles {
+            if *role == Role::Computed {
+                let v = eval(&ev, def).map_err(fail)?;
+                ev.bind(name, v);
+            }
+        }
     }
     for b in &ctx.claim.lets {
         ev.bind_let(b)
             .map_err(|e| fail(format!("let {}: {}", b.name, e.message)))?;
     }
-    Ok(ev)
+    Ok((ev, checks))
+}
+
+/// The symbolic value of one sampled variable.
+fn bind_one(
+    ev: &Evaluator<'_, Sym>,
+    ring: &Ring,
+    name: &str,
+    role: &Role,
+    def: &PExpr,
+    points: &[Point],
+) -> AlgResult<Value<Sym>> {
+    let fail = |m: String| AlgebraError::Domain(m);
+    let first = points[0].get(name).cloned();
+    Ok(match (role, first) {
+        (Role::Free, Some(Value::Real(_))) => {
+            Value::Real(ring.indeterminate(name, &shadows(points, name, None))?)
+        }
+        (Role::Free, Some(Value::Complex(_))) => {
+            // an analytic identity in a complex variable holds for all complex values
+            // once it holds for an indeterminate (the claim may not use re/im/conj)
+            let z = ring.indeterminate(name, &complex_shadows(points, name))?;
+            Value::Complex(Cplx::new(z, ring.integer(0)))
+        }
+        (Role::Free, Some(Value::Vec3(_))) => {
+            let c = |j: usize| {
+                ring.indeterminate(&format!("{name}{}", j + 1), &shadows(points, name, Some(j)))
+            };
+            Value::Vec3(Vec3::new(c(0)?, c(1)?, c(2)?))
+        }
+        (Role::Case, Some(v)) => v.map(&mut |x: &f64| {
+            let q = rug::Rational::from_f64(*x).unwrap_or_default();
+            ring.rational(&q)
+        }),
+        (Role::Computed, _) => eval(ev, def).map_err(fail)?,
+        (_, other) => {
+            return Err(fail(format!(
+                "variable '{name}' of type {:?} cannot be a symbol",
+                other.map(|v| v.type_name())
+            )))
+        }
+    })
+}
+
+/// Replaces the free arguments of one implicit call by its parametrization, and
+/// remembers the call's value at the new arguments.
+fn parametrize(ctx: Ctx<'_>, ev: &mut Evaluator<'_, Sym>, plan: &Plan<'_>) -> AlgResult<Vec<Sym>> {
+    let fail = |m: String| AlgebraError::Domain(format!("{}: {m}", plan.name));
+    let imp = ctx
+        .cat
+        .registry
+        .ext(&plan.name)
+        .and_then(|r| r.f.implicit())
+        .ok_or_else(|| fail("not an implicit function".into()))?;
+    let args_now = |ev: &Evaluator<'_, Sym>| -> AlgResult<Vec<Value<Sym>>> {
+        plan.args
+            .iter()
+            .map(|a| ev.eval(a).map_err(|e| fail(e.message)))
+            .collect()
+    };
+    let p = imp.parametrize(&args_now(ev)?).map_err(fail)?;
+    for (var, v) in plan.vars.iter().zip(p.replace) {
+        ev.bind(var, v);
+    }
+    let args = args_now(ev)?;
+    crate::claims::implicit::remember(&plan.name, &args, &p.value).map_err(fail)?;
+    for (name, v) in &p.also {
+        crate::claims::implicit::remember(name, &args, v).map_err(fail)?;
+    }
+    let ring = ev.like().ring().clone();
+    ring.note(p.note);
+    ring.note(format!(
+        "the equations {} at the parametrization are proved to vanish together with the claim",
+        imp.equations()
+    ));
+    ring.assume(format!("{}: {}", plan.name, imp.branch()));
+    Ok(p.checks)
 }
 
 /// Both sides as pairs of scalar components (every component of lhs − rhs against 0).
+/// When one side is an implicit call the parametrizations did not cover, the other side
+/// is its stated value and is substituted into the function's equations instead.
 fn sides(ev: &Evaluator<'_, Sym>, lhs: &PExpr, rhs: &PExpr) -> AlgResult<Vec<(Sym, Sym)>> {
-    let fail = AlgebraError::NotAlgebraic;
+    let fail = AlgebraError::Domain;
+    let zero = ev.like().zero();
+    for (call, other) in [(lhs, rhs), (rhs, lhs)] {
+        if let Some(comps) = stated_value(ev, call, other)? {
+            return Ok(comps.into_iter().map(|c| (c, zero.clone())).collect());
+        }
+    }
     let l = eval(ev, lhs).map_err(fail)?;
     let r = eval(ev, rhs).map_err(fail)?;
     let d = l
         .sub(&r)
         .map_err(|m| fail(format!("lhs and rhs have different types: {m}")))?;
-    let zero = ev.like().zero();
     Ok(d.components()
         .into_iter()
         .map(|c| (c, zero.clone()))
         .collect())
+}
+
+/// If `call` is a call of an implicit function whose value is not known, the
+/// components of its equations with `other` as the value.
+fn stated_value(
+    ev: &Evaluator<'_, Sym>,
+    call: &PExpr,
+    other: &PExpr,
+) -> AlgResult<Option<Vec<Sym>>> {
+    let ExprKind::Call(name, args) = &call.expr.kind else {
+        return Ok(None);
+    };
+    let Some(imp) = ev.registry().ext(name).and_then(|r| r.f.implicit()) else {
+        return Ok(None);
+    };
+    let fail = |m: String| AlgebraError::Domain(format!("{name}: {m}"));
+    let vals: Vec<Value<Sym>> = args
+        .iter()
+        .map(|a| ev.eval(a).map_err(|e| fail(e.message)))
+        .collect::<AlgResult<_>>()?;
+    if crate::claims::implicit::recall(name, &vals).is_some() {
+        return Ok(None);
+    }
+    let value = eval(ev, other).map_err(AlgebraError::Domain)?;
+    let comps = imp.residual(&vals, &value).map_err(fail)?;
+    let ring = ev.like().ring().clone();
+    ring.note(format!(
+        "the claim states the value of {name}: the other side is substituted into {}, and every component vanishes",
+        imp.stated_equations()
+    ));
+    ring.assume(format!("{name}: {}", imp.branch()));
+    Ok(Some(comps))
 }
 
 /// One case: the zero test of every component (the prover restarts when the elliptic
@@ -355,9 +498,15 @@ fn prove_case(
         certificate,
         ..RingOptions::default()
     };
+    let mut exprs: Vec<&Expr> = vec![&sides_of.0.expr, &sides_of.1.expr];
+    exprs.extend(ctx.claim.lets.iter().map(|b| &b.body));
+    let plans = plans(ctx, roles, &exprs);
     prove_components(opts, &ctx.claim.id, |ring| {
-        let ev = bind_variables(ctx, ring, roles, points)?;
-        sides(&ev, sides_of.0, sides_of.1)
+        let (ev, checks) = bind_variables(ctx, ring, roles, points, &plans)?;
+        let mut pairs = sides(&ev, sides_of.0, sides_of.1)?;
+        let zero = ev.like().zero();
+        pairs.extend(checks.into_iter().map(|c| (c, zero.clone())));
+        Ok(pairs)
     })
 }
 

@@ -1,0 +1,175 @@
+//! The prover on implicit maps: the right statements are proved, deliberately wrong
+//! variants of the maps and of the phase step never are.
+
+use eulertop::bindings::euler_top::registry;
+use eulertop::claims::catalogue::{load_sources, Body, Catalogue};
+use eulertop::claims::verdict::context::Ctx;
+use eulertop::claims::verdict::symbolic::prove;
+
+const CONTROLS: &str = r#"
+[[claim]]
+id = "t.impl-spec-1.g1"
+environment = "Proposition 4"
+role = "control"
+labels = []
+location = "control: (impl spec 1) with gamma1, as printed"
+printed = 'x'
+kind = "identity"
+expect = "proved"
+domain = "top"
+vars = [["h", "uniform(0.01, 0.1)"]]
+let = '''
+Mh = step_gamma1(M, h, A, B, C)
+P = M + Mh
+gam = 4 * MsqP(M) / MsqP(P)
+'''
+lhs = "Mh[1] - M[1]"
+rhs = "0.25 * h * gam * (1/B - 1/C) * P[2] * P[3]"
+
+[[claim]]
+id = "t.impl-spec-1.g1.no-four"
+environment = "Proposition 4"
+role = "control"
+labels = []
+location = "control: gamma1 with the factor 4 dropped"
+printed = 'x'
+kind = "identity"
+expect = "refuted"
+domain = "top"
+vars = [["h", "uniform(0.01, 0.1)"]]
+let = '''
+Mh = step_gamma1(M, h, A, B, C)
+P = M + Mh
+gam = MsqP(M) / MsqP(P)
+'''
+lhs = "Mh[1] - M[1]"
+rhs = "0.25 * h * gam * (1/B - 1/C) * P[2] * P[3]"
+
+[[claim]]
+id = "t.impl-spec-1.g2.sign"
+environment = "Proposition 4"
+role = "control"
+labels = []
+location = "control: (impl spec 1) with a sign flipped"
+printed = 'x'
+kind = "identity"
+expect = "refuted"
+domain = "top"
+vars = [["h", "uniform(0.01, 0.1)"]]
+let = '''
+Mh = step_gamma2(M, h, A, B, C)
+P = M + Mh
+gam = 4 * EnP(M, A, B, C) / dot(P, OmP(P, A, B, C))
+'''
+lhs = "Mh[1] - M[1]"
+rhs = "-0.25 * h * gam * (1/B - 1/C) * P[2] * P[3]"
+
+[[claim]]
+id = "t.prop4.vm.wrong-integral"
+environment = "Proposition 4"
+role = "control"
+labels = []
+location = "control: a quantity the VM step does not keep"
+printed = 'x'
+kind = "identity"
+expect = "refuted"
+domain = "top"
+vars = [["h", "uniform(0.01, 0.1)"]]
+let = '''
+Mh = step_vm(M, h, A, B, C)
+'''
+lhs = "Mh[1]^2 + Mh[2]^2"
+rhs = "M[1]^2 + M[2]^2"
+
+[[claim]]
+id = "t.master12.delta-off"
+environment = "Proposition 6"
+role = "control"
+labels = []
+location = "control: delta1 off by a factor 1 + 1e-30"
+printed = 'x'
+kind = "identity"
+expect = "refuted"
+domain = "ell_up"
+vars = [["h", "uniform(0.01, 0.1)"]]
+let = '''
+k = kE(A, B, C, Msq, E)
+x = delta1(A, B, C, Msq, E, h) * (1 + 1e-30)
+'''
+lhs = "sn(x, k) / (cn(x, k) * dn(x, k))"
+rhs = "h * nuE(A, B, C, Msq, E) / 2 / (1 - alpha1(A, B, C, Msq, E) * sn(x, k)^2)"
+
+[[claim]]
+id = "t.master12.alpha2-for-gamma1"
+environment = "Proposition 6"
+role = "control"
+labels = []
+location = "control: delta1 with the alpha of gamma2"
+printed = 'x'
+kind = "identity"
+expect = "refuted"
+domain = "ell_up"
+vars = [["h", "uniform(0.01, 0.1)"]]
+let = '''
+k = kE(A, B, C, Msq, E)
+x = delta1(A, B, C, Msq, E, h)
+'''
+lhs = "sn(x, k) / (cn(x, k) * dn(x, k))"
+rhs = "h * nuE(A, B, C, Msq, E) / 2 / (1 - alpha2(A, B, C, Msq, E) * sn(x, k)^2)"
+"#;
+
+fn catalogue() -> Catalogue {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/identities");
+    let mut sources: Vec<(String, String)> = std::fs::read_dir(dir)
+        .expect("identities/")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .map(|p| {
+            let text = std::fs::read_to_string(&p).expect("readable catalogue file");
+            (p.display().to_string(), text)
+        })
+        .collect();
+    sources.sort();
+    sources.push(("controls.toml".into(), CONTROLS.into()));
+    load_sources(&sources, registry().expect("registry")).expect("catalogue loads")
+}
+
+fn proved(cat: &Catalogue, id: &str) -> (bool, String) {
+    let claim = cat
+        .claims
+        .iter()
+        .find(|c| c.id == id)
+        .expect("claim exists");
+    let Body::Identity { lhs, rhs } = &claim.body else {
+        panic!("{id} is not an identity")
+    };
+    let p = prove(Ctx { cat, claim }, lhs, rhs, false);
+    (p.is_proved(), p.reason.unwrap_or_default())
+}
+
+#[test]
+fn the_printed_map_is_proved_and_its_wrong_variants_are_not() {
+    let cat = catalogue();
+    let (ok, why) = proved(&cat, "t.impl-spec-1.g1");
+    assert!(ok, "control not proved: {why}");
+    for id in [
+        "t.impl-spec-1.g1.no-four",
+        "t.impl-spec-1.g2.sign",
+        "t.prop4.vm.wrong-integral",
+        "t.master12.delta-off",
+        "t.master12.alpha2-for-gamma1",
+    ] {
+        let (ok, why) = proved(&cat, id);
+        assert!(!ok, "{id} was proved");
+        assert!(!why.is_empty(), "{id}: no reason given");
+    }
+}
+
+#[test]
+fn proposition_4_is_proved_for_every_map() {
+    let cat = catalogue();
+    for g in ["g0", "g1", "g2", "vm"] {
+        let (ok, why) = proved(&cat, &format!("sec6.prop4.{g}"));
+        assert!(ok, "sec6.prop4.{g}: {why}");
+    }
+}
