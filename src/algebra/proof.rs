@@ -45,6 +45,9 @@ pub struct Proof {
     pub expanded_named: bool,
     /// The certificate, when the ring recorded derivations.
     pub certificate: Option<String>,
+    /// The elliptic base arguments of the last attempt, as hints for a related proof
+    /// (another case of the same claim).
+    pub base_hints: Vec<BaseHint>,
 }
 
 impl Proof {
@@ -65,6 +68,7 @@ impl Proof {
             attempts,
             expanded_named: false,
             certificate: None,
+            base_hints: Vec::new(),
         }
     }
 }
@@ -112,6 +116,7 @@ impl Ring {
             attempts: 1,
             expanded_named: self.options().expand_named,
             certificate,
+            base_hints: self.options().base_hints.clone(),
         }
     }
 
@@ -224,6 +229,18 @@ where
                 attempts,
             );
         }
+        let too_large = matches!(built, Err(AlgebraError::TooLarge(..)))
+            || matches!(ring.error(), Some(AlgebraError::TooLarge(..)));
+        if too_large && rebases < 3 {
+            // the bases chosen as the arguments came may write a later argument with
+            // large multiples; a basis of every argument seen may keep it small
+            let hints = ring.rebase_hints();
+            if hints != opts.base_hints {
+                rebases += 1;
+                opts.base_hints = hints;
+                continue;
+            }
+        }
         let pairs = match built {
             Ok(p) => p,
             Err(e) => return Proof::failed(e.to_string(), ms(&t0), attempts),
@@ -247,6 +264,7 @@ where
         }
         proof.ms = ms(&t0);
         proof.attempts = attempts;
+        proof.base_hints = opts.base_hints;
         return proof;
     }
 }

@@ -42,7 +42,7 @@
 use super::context::{eval, Ctx};
 use super::result::Evidence;
 use crate::algebra::{
-    prove_components, AlgResult, AlgebraError, Outcome, Proof, Ring, RingOptions, Sym,
+    prove_components, AlgResult, AlgebraError, BaseHint, Outcome, Proof, Ring, RingOptions, Sym,
 };
 use crate::claims::ast::{BinOp, Expr, ExprKind};
 use crate::claims::builtins::Primitive;
@@ -492,10 +492,12 @@ fn prove_case(
     points: &[Point],
     sides_of: (&PExpr, &PExpr),
     certificate: bool,
+    base_hints: Vec<BaseHint>,
 ) -> Proof {
     let opts = RingOptions {
         points: points.len(),
         certificate,
+        base_hints,
         ..RingOptions::default()
     };
     let mut exprs: Vec<&Expr> = vec![&sides_of.0.expr, &sides_of.1.expr];
@@ -540,8 +542,11 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
     let mut info = ProofInfo::none("");
     info.reason = None;
     info.method = ProofMethod::Symbolic;
+    let mut hints = Vec::new();
     for (key, points) in &cases {
-        let p = prove_case(ctx, &roles, points, (lhs, rhs), certificate);
+        // the cases differ in signs only: the bases that served one serve the next
+        let p = prove_case(ctx, &roles, points, (lhs, rhs), certificate, hints);
+        hints = p.base_hints.clone();
         merge(&mut info, key, p);
         if !info.is_proved() {
             break;
