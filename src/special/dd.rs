@@ -152,18 +152,14 @@ impl<R: Real> Dd<R> {
         self.mul(self)
     }
 
-    /// `self / o`: one correction of the quotient of the leading parts (the correction
-    /// is scaled by `1/o`, a division independent of the quotient, so that the two run
-    /// side by side).
+    /// `self / o`: one correction of the quotient of the leading parts.
     #[inline(always)]
     pub(crate) fn div(&self, o: &Self) -> Self {
-        let b = o.v();
-        let rb = 1.0 / b;
         let hi = self.hi.clone() / o.hi.clone();
-        let q = hi.to_f64();
+        let (q, b) = (hi.to_f64(), o.v());
         let (p, e) = two_prod(q, b);
         let r = ((self.v() - p) - e) + (self.lo - q * o.lo);
-        Dd { hi, lo: r * rb }
+        Dd { hi, lo: r / b }
     }
 
     /// `√self` (`self > 0`): one Newton correction of the root of the leading part.

@@ -77,18 +77,16 @@ pub(crate) struct Theta<R> {
 }
 
 /// `x^{1/4}` of a positive double-double: two square roots, then one Newton step
-/// `t + (x − t⁴)/(4t³) = t + (x − t⁴)·t/(4x)·(1 + O(2⁻⁵²))` with `x − t⁴` formed
-/// exactly (`1/(4x)` is computed beside the square roots).
+/// `t + (x − t⁴)/(4t³)` with `x − t⁴` formed exactly.
 #[inline(always)]
 fn quarter_root<R: Real>(x: &Dd<R>) -> Dd<R> {
-    let r4 = 0.25 / x.v();
     let t = x.hi.sqrt().sqrt();
     let tv = t.to_f64();
     let t2 = Dd::from(t.clone()).sqr();
     let t4 = t2.sqr();
     let resid = (x.v() - t4.v()) + (x.lo - t4.lo);
     Dd {
-        lo: resid * tv * r4,
+        lo: resid / (4.0 * tv * tv * tv),
         hi: t,
     }
 }
