@@ -83,6 +83,20 @@ impl JacobiFn {
         Self::ALL.into_iter().find(|f| f.name() == name)
     }
 
+    /// Where `p` and `q` of `pq = p/q` sit in `(sn, cn, dn)`: `None` for `n`, i.e. `1`.
+    ///
+    /// ```
+    /// use eulertop::special::JacobiFn;
+    /// assert_eq!(JacobiFn::Cd.parts(), (Some(1), Some(2))); // cd = cn/dn
+    /// assert_eq!(JacobiFn::Ns.parts(), (None, Some(0))); // ns = 1/sn
+    /// assert_eq!(JacobiFn::Dn.parts(), (Some(2), None));
+    /// ```
+    pub fn parts(self) -> (Option<usize>, Option<usize>) {
+        let (p, q) = self.letters();
+        let at = |l: Letter| (l != Letter::N).then_some(l as usize);
+        (at(p), at(q))
+    }
+
     /// Numerator and denominator letters.
     fn letters(self) -> (Letter, Letter) {
         use Letter::*;

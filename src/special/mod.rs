@@ -96,6 +96,7 @@ mod glaisher;
 mod inverse;
 mod jacobi;
 mod landen;
+mod landen_mpfr;
 mod reduce;
 #[cfg(test)]
 mod tests;

@@ -5,6 +5,7 @@ use crate::claims::backend::{Num, RealFn, RealFn2};
 use crate::claims::cmath;
 use crate::claims::value::Value;
 use crate::linalg::{Mat2, Mat3, Vec3};
+use crate::special::JacobiFn;
 
 fn arity<T>(a: &[Value<T>], n: usize) -> Result<(), String> {
     if a.len() != n {
@@ -28,7 +29,9 @@ pub fn apply<T: Num>(f: Builtin, like: &T, a: &[Value<T>]) -> Result<Value<T>, S
     match f {
         B::Sign | B::Atan2 | B::Min | B::Max => real_misc(f, a),
         B::Re | B::Im | B::Conj | B::Arg | B::Cplx => complex(f, a),
-        B::Sn | B::Cn | B::Dn | B::Am | B::K | B::Kp | B::F | B::JacobiInverse => elliptic(f, a),
+        B::Sn | B::Cn | B::Dn => jacobi(f, a),
+        B::Cd | B::Dc | B::Ns | B::Nc | B::Nd | B::Sc | B::Sd | B::Cs | B::Ds => jacobi(f, a),
+        B::Am | B::K | B::Kp | B::F | B::JacobiInverse => elliptic(f, a),
         B::Vec | B::Dot | B::Cross | B::Norm2 | B::Norm | B::VnormInf => vector(f, a),
         B::Sum | B::Prod | B::D | B::Grad => {
             Err(format!("'{}' is a special form, not a function", f.name()))
@@ -126,26 +129,68 @@ fn complex<T: Num>(f: Builtin, a: &[Value<T>]) -> Result<Value<T>, String> {
     }
 }
 
+/// The twelve Jacobi functions `pq = p/q` (Glaisher's notation) from sn, cn, dn of a
+/// real or complex `u`: one division at the working precision; a zero denominator is a
+/// pole, reported as an error.
+fn jacobi<T: Num>(f: Builtin, a: &[Value<T>]) -> Result<Value<T>, String> {
+    arity(a, 2)?;
+    let k = a[1].as_real()?;
+    let g = JacobiFn::from_name(f.name()).ok_or("not a Jacobi function")?;
+    let [s, c, d] = match &a[0] {
+        Value::Real(u) => T::sncndn(u, &k)?.map(Value::Real),
+        Value::Complex(u) => T::sncndn_complex(u, &k)?.map(Value::Complex),
+        v => {
+            return Err(format!(
+                "argument u must be real or complex, got a {}",
+                v.type_name()
+            ))
+        }
+    };
+    let pick = |i: Option<usize>| i.map(|i| [&s, &c, &d][i].clone());
+    let (p, q) = g.parts();
+    let num = pick(p).unwrap_or_else(|| Value::Real(k.one()));
+    let Some(den) = pick(q) else {
+        return Ok(num);
+    };
+    let zero = match &den {
+        Value::Real(x) => x.is_zero(),
+        Value::Complex(z) => z.re.is_zero() && z.im.is_zero(),
+        _ => false,
+    };
+    // sn vanishes only at its zeros 2jK (+ 2liK'), of which only 0 is representable; a
+    // zero cn or dn is an underflow (e.g. sech u at k = 1), so the quotient overflows
+    if zero && q == Some(0) {
+        return Err(format!("pole: sn(u, k) = 0 at u = {}", at(&a[0])));
+    }
+    let overflow = || format!("overflows at u = {}", at(&a[0]));
+    if zero {
+        return Err(overflow());
+    }
+    let v = num.div(&den)?;
+    let finite = match &v {
+        Value::Real(x) => x.is_finite(),
+        Value::Complex(z) => z.re.is_finite() && z.im.is_finite(),
+        _ => true,
+    };
+    if finite {
+        Ok(v)
+    } else {
+        Err(overflow())
+    }
+}
+
+/// `u` for a message: a real or a complex number in `f64`.
+fn at<T: Num>(u: &Value<T>) -> String {
+    match u {
+        Value::Complex(z) => format!("{:e} + {:e}i", z.re.to_f64(), z.im.to_f64()),
+        Value::Real(x) => format!("{:e}", x.to_f64()),
+        v => v.type_name().to_string(),
+    }
+}
+
 fn elliptic<T: Num>(f: Builtin, a: &[Value<T>]) -> Result<Value<T>, String> {
     let r = |j: usize| a[j].as_real();
     match f {
-        Builtin::Sn | Builtin::Cn | Builtin::Dn => {
-            arity(a, 2)?;
-            let k = r(1)?;
-            let j = match f {
-                Builtin::Sn => 0,
-                Builtin::Cn => 1,
-                _ => 2,
-            };
-            match &a[0] {
-                Value::Real(u) => T::sncndn(u, &k).map(|s| Value::Real(s[j].clone())),
-                Value::Complex(u) => T::sncndn_complex(u, &k).map(|s| Value::Complex(s[j].clone())),
-                v => Err(format!(
-                    "argument u must be real or complex, got a {}",
-                    v.type_name()
-                )),
-            }
-        }
         Builtin::Am => {
             arity(a, 2)?;
             T::am(&r(0)?, &r(1)?).map(Value::Real)

@@ -1,0 +1,111 @@
+//! The Landen chain ([`Chain`]) for `rug::Float`: the same arithmetic as the generic
+//! build and climb, written with in-place MPFR operations, so that a level allocates
+//! nothing but the values it keeps (the generic code, through [`Real`](crate::numbers::Real),
+//! creates a new `Float` for every intermediate result).  Chosen at compile time by
+//! the type (`std::any::Any`), as the caches are.
+
+use super::landen::Chain;
+use super::SpecialError;
+use rug::{Assign, Float};
+use std::any::Any;
+
+/// `x` as a `T` when `S` is `T` (resolved at compile time).
+#[inline(always)]
+pub(super) fn as_float<S: 'static, T: 'static>(x: &S) -> Option<&T> {
+    (x as &dyn Any).downcast_ref::<T>()
+}
+
+/// `x` moved into `R`, for `R` the type of `x` (the callers check that first).
+#[inline(always)]
+pub(super) fn into_r<T: 'static, R: 'static>(x: T) -> R {
+    let mut out: Option<R> = None;
+    if let Some(o) = (&mut out as &mut dyn Any).downcast_mut::<Option<T>>() {
+        *o = Some(x);
+    }
+    match out {
+        Some(r) => r,
+        None => unreachable!("into_r is called with R = T only"),
+    }
+}
+
+/// `log2 |x|` (`−∞` for zero), without overflow or underflow for any exponent.
+fn log2_abs(x: &Float) -> f64 {
+    if x.is_zero() {
+        return f64::NEG_INFINITY;
+    }
+    let (m, e) = x.to_f64_exp();
+    m.abs().log2() + f64::from(e)
+}
+
+impl Chain<Float> {
+    /// [`Chain::new`] in place: descend while `c_n⁴ ≥ (ε/4)·a_n⁴` (compared through
+    /// `log2`, which needs no full-precision arithmetic).
+    pub(super) fn new_mpfr(k: &Float, kp: &Float) -> Result<Self, SpecialError> {
+        let p = k.prec();
+        let log2_tol = 1.0 - f64::from(p) - 2.0;
+        let mut levels = Vec::new();
+        let (mut a, mut b, mut c) = (Float::with_val(p, 1), kp.clone(), k.clone());
+        while 4.0 * (log2_abs(&c) - log2_abs(&a)) > log2_tol {
+            if levels.len() >= 64 {
+                return Err(SpecialError::NoConvergence(
+                    "Landen chain of moduli did not converge in 64 steps".into(),
+                ));
+            }
+            let mut a1 = Float::with_val(p, &a + &b);
+            a1 >>= 1;
+            let mut c1 = Float::with_val(p, &a - &b);
+            c1 >>= 1;
+            b *= &a;
+            b.sqrt_mut();
+            let (an, cn) = (a1.clone(), c1.clone());
+            levels.push([std::mem::replace(&mut a, an), a1, c1]);
+            c = cn;
+        }
+        let mut k2q = Float::with_val(p, &c / &a);
+        k2q.square_mut();
+        k2q >>= 2;
+        let mut kq = Float::with_val(p, 1 + &k2q);
+        kq *= Float::with_val(p, rug::float::Constant::Pi);
+        kq /= &a;
+        kq >>= 1;
+        Ok(Chain {
+            levels,
+            kq,
+            a_n: a,
+            k2q,
+            k2: Float::with_val(p, k.square_ref()),
+            kp2: Float::with_val(p, kp.square_ref()),
+        })
+    }
+
+    /// [`Chain::eval`] in place, at the precision of `t`.
+    pub(super) fn eval_mpfr(&self, t: &Float) -> (Float, Float, Float) {
+        let p = t.prec();
+        let mut z = Float::with_val(p, t * &self.a_n);
+        let (mut s, mut c) = (Float::new(p), Float::new(p));
+        (&mut s, &mut c).assign(z.sin_cos_ref());
+        // s = sin z − (k_N²/4)(z − sin z cos z) cos z
+        let mut tmp = Float::with_val(p, &s * &c);
+        z -= &tmp;
+        z *= &self.k2q;
+        z *= &c;
+        s -= &z;
+        for [a_prev, a_cur, c_cur] in self.levels.iter().rev() {
+            tmp.assign(s.square_ref());
+            tmp *= c_cur;
+            tmp += a_cur;
+            s *= a_prev;
+            s /= &tmp;
+        }
+        // cn = √((1 − s)(1 + s)), dn = √(k'² + k²cn²)
+        c.assign(1 - &s);
+        tmp.assign(1 + &s);
+        c *= &tmp;
+        c.sqrt_mut();
+        tmp.assign(c.square_ref());
+        tmp *= &self.k2;
+        tmp += &self.kp2;
+        tmp.sqrt_mut();
+        (s, c, tmp)
+    }
+}
