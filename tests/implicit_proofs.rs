@@ -116,6 +116,50 @@ x = delta1(A, B, C, Msq, E, h)
 '''
 lhs = "sn(x, k) / (cn(x, k) * dn(x, k))"
 rhs = "h * nuE(A, B, C, Msq, E) / 2 / (1 - alpha2(A, B, C, Msq, E) * sn(x, k)^2)"
+[[claim]]
+id = "t.chain.msq-M1"
+environment = "Proposition 4"
+role = "control"
+labels = []
+location = "control: the derivative of the kept M^2 through the step, by the chain rule"
+printed = 'x'
+kind = "identity"
+expect = "proved"
+domain = "top"
+vars = [["h", "uniform(0.01, 0.1)"]]
+let = "Mh = step_gamma2(M, h, A, B, C)"
+lhs = "d(MsqP(Mh), M, 1)"
+rhs = "2 * M[1]"
+
+[[claim]]
+id = "t.chain.msq-A"
+environment = "Proposition 4"
+role = "control"
+labels = []
+location = "control: M^2 of the step does not depend on A at fixed M"
+printed = 'x'
+kind = "identity"
+expect = "proved"
+domain = "top"
+vars = [["h", "uniform(0.01, 0.1)"]]
+let = "Mh = step_gamma1(M, h, A, B, C)"
+lhs = "d(MsqP(Mh), A)"
+rhs = "0"
+
+[[claim]]
+id = "t.chain.msq-M1.wrong"
+environment = "Proposition 4"
+role = "control"
+labels = []
+location = "control: a wrong derivative through the step"
+printed = 'x'
+kind = "identity"
+expect = "refuted"
+domain = "top"
+vars = [["h", "uniform(0.01, 0.1)"]]
+let = "Mh = step_gamma2(M, h, A, B, C)"
+lhs = "d(MsqP(Mh), M, 1)"
+rhs = "2 * Mh[1]"
 "#;
 
 fn catalogue() -> Catalogue {
@@ -158,10 +202,20 @@ fn the_printed_map_is_proved_and_its_wrong_variants_are_not() {
         "t.prop4.vm.wrong-integral",
         "t.master12.delta-off",
         "t.master12.alpha2-for-gamma1",
+        "t.chain.msq-M1.wrong",
     ] {
         let (ok, why) = proved(&cat, id);
         assert!(!ok, "{id} was proved");
         assert!(!why.is_empty(), "{id}: no reason given");
+    }
+}
+
+#[test]
+fn derivatives_through_a_parametrized_step_follow_the_chain_rule() {
+    let cat = catalogue();
+    for id in ["t.chain.msq-M1", "t.chain.msq-A"] {
+        let (ok, why) = proved(&cat, id);
+        assert!(ok, "{id}: {why}");
     }
 }
 

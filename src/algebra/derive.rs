@@ -35,6 +35,15 @@ impl Sym {
     /// assert!(ring.prove(&ds, &(c * d)).is_proved()); // DLMF 22.13.1
     /// ```
     pub fn derivative(&self, x: &Sym) -> AlgResult<Sym> {
+        if let Some(c) = self.ring.change_of_variables() {
+            return self.derivative_in_coordinates(x, c);
+        }
+        self.derivative_plain(x)
+    }
+
+    /// The derivation with respect to the indeterminate `x` itself (all other symbols
+    /// fixed), whether or not coordinates are declared.
+    pub(crate) fn derivative_plain(&self, x: &Sym) -> AlgResult<Sym> {
         let ring = &self.ring;
         if !ring.same(&x.ring) {
             return Err(AlgebraError::RingMismatch);

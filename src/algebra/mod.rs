@@ -88,6 +88,7 @@
 
 mod addition;
 pub mod certificate;
+mod coordinates;
 mod derive;
 pub mod elliptic;
 mod error;

@@ -135,6 +135,8 @@ pub(crate) struct State {
     pub opaque_calls: std::collections::BTreeMap<String, Val>,
     /// Values of implicitly defined functions at given arguments (see [`Ring::remember`]).
     pub implicit_values: std::collections::BTreeMap<String, ImplicitValue>,
+    /// The change of variables of a parametrization, for derivatives.
+    pub coordinates: Option<super::coordinates::Coordinates>,
 }
 
 pub(crate) struct Inner {
@@ -193,6 +195,7 @@ impl Ring {
             derivation_lines: Vec::new(),
             opaque_calls: std::collections::BTreeMap::new(),
             implicit_values: std::collections::BTreeMap::new(),
+            coordinates: None,
         };
         Ring {
             inner: Arc::new(Inner {

@@ -110,11 +110,12 @@ fn midpoint(f: ModelFn, gamma: Gamma, args: &[Value<Sym>]) -> Result<Parametrize
             s_num[j].push(sj);
         }
     }
-    let s = Vec3::new(
+    let (s1, s2, s3) = (
         fresh(&h, "S1", &s_num[0])?,
         fresh(&h, "S2", &s_num[1])?,
         fresh(&h, "S3", &s_num[2])?,
     );
+    let s = Vec3::new(s1.clone(), s2.clone(), s3.clone());
     let g = fresh(&h, "g", &g_num)?;
     let fs = i.field_et(&s).scale(&g);
     let half = h.from_ratio(1, 2);
@@ -129,6 +130,7 @@ fn midpoint(f: ModelFn, gamma: Gamma, args: &[Value<Sym>]) -> Result<Parametrize
         replace: vec![Value::Vec3(m_new), Value::Real(h_new)],
         value: Value::Vec3(m_hat),
         also: Vec::new(),
+        params: vec![s1, s2, s3, g],
         checks,
         note: format!(
             "{}: M = (S − g·f(S))/2 and M̂ = (S + g·f(S))/2 with S = M + M̂ and f the (ET) field; h solved from the residual of (impl spec) with {}, which is affine in h",
@@ -172,6 +174,7 @@ fn cayley_param(f: ModelFn, args: &[Value<Sym>]) -> Result<Parametrized, String>
         replace: vec![Value::Vec3(m_new)],
         value,
         also: vec![also],
+        params: v.0.to_vec(),
         checks,
         note: format!(
             "{}: ω = cayley(v) = (I + v̌)(I − v̌)⁻¹ and M = vee(ωJ − Jωᵀ)/h, from (M thru omega), which is linear in M",
@@ -226,8 +229,9 @@ fn phase_param(f: ModelFn, args: &[Value<Sym>]) -> Result<Parametrized, String> 
     let checks = vec![eq(&h_new)];
     Ok(Parametrized {
         replace: vec![Value::Real(h_new)],
-        value: Value::Real(delta),
+        value: Value::Real(delta.clone()),
         also: Vec::new(),
+        params: vec![delta],
         checks,
         note: format!(
             "{}: δ is a new base argument {name} with its own sn, cn, dn; h solved from {}, which is affine in h",

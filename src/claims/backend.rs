@@ -196,6 +196,8 @@ fn real_fn_generic<R: Real>(x: &R, f: RealFn) -> Result<R, String> {
     };
     if r.is_finite() {
         Ok(r)
+    } else if let Some(why) = Real::failure(&r) {
+        Err(format!("{f:?}: {why}"))
     } else {
         Err(format!("{f:?} of {:.6e} is not finite", x.to_f64()))
     }

@@ -40,6 +40,9 @@ pub struct Parametrized {
     /// The components of the defining equations at the replaced arguments and the
     /// value: each must be 0 identically.
     pub checks: Vec<Sym>,
+    /// The new indeterminates, as many as the eliminated arguments have components
+    /// (for derivatives with respect to the claim's variables, by the chain rule).
+    pub params: Vec<Sym>,
     /// What the parametrization is, for the reader.
     pub note: String,
 }

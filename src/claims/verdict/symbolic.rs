@@ -338,8 +338,11 @@ fn bind_variables<'c>(
         ev.bind(name, value);
     }
     let mut checks = Vec::new();
+    let mut params = Vec::new();
     for plan in plans {
-        checks.extend(parametrize(ctx, &mut ev, plan)?);
+        let (c, p) = parametrize(ctx, &mut ev, plan)?;
+        checks.extend(c);
+        params.extend(p);
         for (name, role, def) in roles {
             if *role == Role::Computed {
                 let v = eval(&ev, def).map_err(fail)?;
@@ -347,11 +350,44 @@ fn bind_variables<'c>(
             }
         }
     }
+    if !plans.is_empty() {
+        declare_coordinates(&ev, ring, roles, plans, params)?;
+    }
     for b in &ctx.claim.lets {
         ev.bind_let(b)
             .map_err(|e| fail(format!("let {}: {}", b.name, e.message)))?;
     }
     Ok((ev, checks))
+}
+
+/// After parametrizations, the claim's free variables as functions of the remaining
+/// indeterminates and the new parameters (for derivatives by the chain rule).
+fn declare_coordinates(
+    ev: &Evaluator<'_, Sym>,
+    ring: &Ring,
+    roles: &[(String, Role, &PExpr)],
+    plans: &[Plan<'_>],
+    new_params: Vec<Sym>,
+) -> AlgResult<()> {
+    let symbolic = |v: &Value<Sym>| -> Vec<Sym> {
+        v.components()
+            .into_iter()
+            .filter(|c| c.as_rational().is_none())
+            .collect()
+    };
+    let (mut coords, mut params) = (Vec::new(), Vec::new());
+    for (name, role, _) in roles {
+        if *role != Role::Free {
+            continue;
+        }
+        let Some(v) = ev.lookup(name) else { continue };
+        coords.extend(symbolic(v));
+        if !plans.iter().any(|p| p.vars.contains(name)) {
+            params.extend(symbolic(v));
+        }
+    }
+    params.extend(new_params);
+    ring.set_coordinates(coords, params)
 }
 
 /// The symbolic value of one sampled variable.
@@ -397,7 +433,11 @@ fn bind_one(
 
 /// Replaces the free arguments of one implicit call by its parametrization, and
 /// remembers the call's value at the new arguments.
-fn parametrize(ctx: Ctx<'_>, ev: &mut Evaluator<'_, Sym>, plan: &Plan<'_>) -> AlgResult<Vec<Sym>> {
+fn parametrize(
+    ctx: Ctx<'_>,
+    ev: &mut Evaluator<'_, Sym>,
+    plan: &Plan<'_>,
+) -> AlgResult<(Vec<Sym>, Vec<Sym>)> {
     let fail = |m: String| AlgebraError::Domain(format!("{}: {m}", plan.name));
     let imp = ctx
         .cat
@@ -427,7 +467,7 @@ fn parametrize(ctx: Ctx<'_>, ev: &mut Evaluator<'_, Sym>, plan: &Plan<'_>) -> Al
         imp.equations()
     ));
     ring.assume(format!("{}: {}", plan.name, imp.branch()));
-    Ok(p.checks)
+    Ok((p.checks, p.params))
 }
 
 /// Both sides as pairs of scalar components (every component of lhs − rhs against 0).

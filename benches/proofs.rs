@@ -1,0 +1,54 @@
+//! The slowest symbolic proofs of the catalogue, whole: sampling the domain points,
+//! parametrizing the implicit maps, evaluating both sides, restarts, and the zero test.
+//!
+//! `cargo bench --bench proofs`
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use eulertop::bindings::euler_top::registry;
+use eulertop::claims::catalogue::{load_sources, Body, Catalogue};
+use eulertop::claims::verdict::context::Ctx;
+use eulertop::claims::verdict::symbolic::prove;
+
+/// The three claims whose proofs took longest in `verify --format json` (`proof.ms`).
+const SLOWEST: [&str; 3] = [
+    "sec7.master12.step.up",
+    "sec6.discr-eq.corrected.up",
+    "sec6.corollary.up",
+];
+
+fn catalogue() -> Catalogue {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/identities");
+    let mut sources: Vec<(String, String)> = std::fs::read_dir(dir)
+        .expect("identities/")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .map(|p| {
+            let text = std::fs::read_to_string(&p).expect("readable catalogue file");
+            (p.display().to_string(), text)
+        })
+        .collect();
+    sources.sort();
+    load_sources(&sources, registry().expect("registry")).expect("catalogue loads")
+}
+
+fn proofs(c: &mut Criterion) {
+    let cat = catalogue();
+    let mut g = c.benchmark_group("catalogue proofs");
+    g.sample_size(10);
+    for id in SLOWEST {
+        let claim = cat.claims.iter().find(|c| c.id == id).expect("claim");
+        let Body::Identity { lhs, rhs } = &claim.body else {
+            panic!("{id} is not an identity")
+        };
+        g.bench_function(id, |b| {
+            b.iter(|| {
+                let p = prove(Ctx { cat: &cat, claim }, lhs, rhs, false);
+                assert!(p.is_proved(), "{id}: {:?}", p.reason);
+            })
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, proofs);
+criterion_main!(benches);
