@@ -2,7 +2,7 @@
 //! point and the `let` bindings, the residual scale, the dispatch of one computation to
 //! the backend of a rung, and the loop that draws samples and records failures.
 
-use super::result::{Cause, FailedSample, Named};
+use super::failure::{Cause, FailedSample, Named};
 use crate::claims::catalogue::{Catalogue, Claim, PExpr};
 use crate::claims::eval::{Backend, Evaluator};
 use crate::claims::sampler::{Point, Sampler, Stream};

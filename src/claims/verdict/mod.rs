@@ -12,6 +12,7 @@ pub mod asymptotic;
 pub mod context;
 pub mod exact;
 pub mod existence;
+pub mod failure;
 pub mod identity;
 pub mod independence;
 pub mod ladder;
