@@ -47,4 +47,17 @@ pub enum Cause {
     /// Another layer panicked (a bug there).
     #[error("internal error (panic) while evaluating: {0}")]
     Panic(String),
+    /// A counted condition has the same value at every sample (see
+    /// [`vacuity`](super::vacuity)).
+    #[error("vacuous on domain {domain}: the condition {condition} is {value} at all {samples} samples, so the claim never meets the case it is about")]
+    Vacuous {
+        /// The domain's name.
+        domain: String,
+        /// The condition as written.
+        condition: String,
+        /// Its value at every sample.
+        value: bool,
+        /// How many samples evaluated it.
+        samples: usize,
+    },
 }

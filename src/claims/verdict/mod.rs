@@ -4,7 +4,9 @@
 //! One module per kind ([`identity`], [`independence`], [`asymptotic`], [`existence`],
 //! [`negation`], and [`exact`] for the rational evaluation of identities); each returns
 //! its [`Evidence`] or a typed [`Failure`].  The ladder rule shared by the residual kinds
-//! is in [`ladder`].  This module runs the right kind and builds the [`ClaimResult`] once.
+//! is in [`ladder`].  Before a kind runs, [`vacuity`] checks that the conditions the
+//! claim counts are exercised on its domain.  This module runs the right kind and builds
+//! the [`ClaimResult`] once.
 //!
 //! Samples that cannot be evaluated are reported as failures and replaced, never counted.
 
@@ -19,6 +21,7 @@ pub mod ladder;
 pub mod negation;
 pub mod result;
 pub mod symbolic;
+pub mod vacuity;
 
 pub use crate::claims::kind::Verdict;
 pub use result::{
@@ -129,6 +132,9 @@ fn judge(ctx: Ctx<'_>, opts: &Options) -> Result<Evidence, Failure> {
     let bits = &opts.bits;
     if bits.is_empty() {
         return Err(Failure::bare(Cause::EmptyLadder));
+    }
+    if !matches!(ctx.claim.body, Body::Definition(_)) {
+        vacuity::check(ctx).map_err(Failure::bare)?;
     }
     match &ctx.claim.body {
         Body::Definition(_) => Ok(Evidence::new(Verdict::Defined, "definition: no verdict")),
