@@ -156,8 +156,9 @@ fn worst_slopes(bits: &[u32], samples: &[Sample<Point, Slopes>]) -> Vec<Worst> {
 
 /// The verdict from the judgements of every sample at every judged rung: holds if every
 /// one passes, refuted if at every judged rung some sample is below, else inconclusive.
-/// Also returns the (rung index, sample index) of the evidence: a sample below at the
-/// highest judged rung, or the first sample that does not pass.
+/// Also returns the (rung index, sample index) of the evidence: the sample below with the
+/// smallest fitted slope at the highest judged rung, or the first sample that does not
+/// pass.
 fn decide(
     bits: &[u32],
     samples: &[Sample<Point, Slopes>],
@@ -165,10 +166,16 @@ fn decide(
 ) -> (Verdict, Option<(usize, usize)>) {
     let idx: Vec<usize> = (0..bits.len()).collect();
     let judged_idx: Vec<usize> = judged(&idx, |&j| bits[j]).into_iter().copied().collect();
+    // the sample with the smallest fitted slope among those judged `want` at rung j
     let at = |j: usize, want: Judgement| {
-        samples
-            .iter()
-            .position(|s| s.rungs[j].judge(spec.order, spec.slope_tol) == want)
+        let mut best: Option<usize> = None;
+        for (i, s) in samples.iter().enumerate() {
+            let better = best.map_or(true, |b| s.rungs[j].fit < samples[b].rungs[j].fit);
+            if s.rungs[j].judge(spec.order, spec.slope_tol) == want && better {
+                best = Some(i);
+            }
+        }
+        best
     };
     let last = judged_idx.last().copied();
     if judged_idx
