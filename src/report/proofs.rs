@@ -682,6 +682,7 @@ mod tests {
             proof: crate::claims::verdict::ProofInfo::none("not attempted"),
             note: None,
             reason: String::new(),
+            elapsed_ms: 0.0,
         }
     }
 

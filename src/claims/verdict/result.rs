@@ -233,6 +233,10 @@ pub struct ClaimResult {
     pub note: Option<String>,
     /// Why this verdict, in one line.
     pub reason: String,
+    /// Wall time of the claim's verification in milliseconds, set by
+    /// [`run_claim`](super::run_claim).  It varies from run to run, so the report never
+    /// shows it; `verify --format json` gives it to find the slow claims.
+    pub elapsed_ms: f64,
 }
 
 impl ClaimResult {
@@ -268,6 +272,7 @@ impl ClaimResult {
                 .unwrap_or_else(|| ProofInfo::none(not_attempted(claim.kind))),
             note: claim.note.clone(),
             reason: ev.reason,
+            elapsed_ms: 0.0,
         }
     }
 }
