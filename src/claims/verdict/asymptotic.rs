@@ -170,7 +170,7 @@ fn decide(
     let at = |j: usize, want: Judgement| {
         let mut best: Option<usize> = None;
         for (i, s) in samples.iter().enumerate() {
-            let better = best.map_or(true, |b| s.rungs[j].fit < samples[b].rungs[j].fit);
+            let better = best.is_none_or(|b| s.rungs[j].fit < samples[b].rungs[j].fit);
             if s.rungs[j].judge(spec.order, spec.slope_tol) == want && better {
                 best = Some(i);
             }
