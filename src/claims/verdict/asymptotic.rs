@@ -197,7 +197,7 @@ fn decide(
     }
 }
 
-/// The reason of a verdict, quoting the slopes of the sample `ji` (rung, sample).
+/// The reason of a verdict, quoting `slopes`: those of the sample that [`decide`] names.
 fn reason(v: Verdict, spec: &Spec<'_>, slopes: Option<Slopes>) -> String {
     let (order, thr) = (spec.order, spec.order - spec.slope_tol);
     let tail = |s: &Slopes| match s.tail {
