@@ -4,3 +4,4 @@
 mod claims_engine;
 mod coverage;
 mod fuzz_claims;
+mod verdict_rules;

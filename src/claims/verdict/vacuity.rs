@@ -51,10 +51,11 @@ fn is_indicator(e: &Expr) -> Option<&Expr> {
     }
 }
 
-/// The guards of the counted conditions in `e`.
+/// The guards of the counted conditions in `e`, in the order they are written.
 pub fn counted_guards(e: &Expr) -> Vec<&Expr> {
     let mut out = Vec::new();
     collect(e, &mut out);
+    out.sort_by_key(|g| g.span.start);
     out
 }
 
