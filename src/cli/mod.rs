@@ -55,6 +55,7 @@ pub fn check_jobs(jobs: Option<usize>) -> Result<(), CliError> {
 
 pub mod jacobi;
 pub mod orbit;
+mod orbit_row;
 mod orbit_svg;
 pub mod step;
 

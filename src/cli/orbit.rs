@@ -12,6 +12,7 @@
 //! as for `step`, plus: a start point on a coordinate axis (where `φ` is undefined) →
 //! exit status 2.
 
+pub use super::orbit_row::Row;
 use super::step::{check_bits, digits_for, iterates, parse, write_point, Problem};
 use super::{stdout, write_error, CliError};
 use crate::linalg::Vec3;
@@ -39,21 +40,6 @@ pub struct Args {
     /// Write an SVG plot to this file (at most 20000 steps).
     #[arg(long)]
     pub svg: Option<PathBuf>,
-}
-
-/// One row of the orbit table.
-#[derive(Clone, Debug)]
-pub struct Row<R> {
-    /// Step index n.
-    pub n: usize,
-    /// `t = n·h`.
-    pub t: R,
-    /// The iterate `M_n`.
-    pub m: Vec3<R>,
-    /// The continuous solution `M(t)` through `M_0`.
-    pub sol: Vec3<R>,
-    /// `(φ̄, Δφ)` of the step `n−1 → n`.
-    pub phase: Option<(R, R)>,
 }
 
 /// Turns the iterates `M₀, M₁, …` into [`Row`]s, one at a time: (sol) at `t = n·h` and

@@ -2,7 +2,7 @@
 //! (lines) and the iterates (dots) against `t`, and `Δφ` against `φ̄` with the
 //! predicted `δ` as a horizontal line.
 
-use super::orbit::Row;
+use super::orbit_row::Row;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 

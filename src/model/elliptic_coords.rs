@@ -19,7 +19,7 @@
 //! The printed Jacobian `∂(M₁,M₂,M₃)/∂(M²,E,φ) = −dn²φ/(4ν)` does not hold; computed
 //! by AD it is `−1/(4ν(M², E))`, independent of `φ`, which is what (PB in ell)
 //! `{E, φ} = −2ν` (confirmed) implies because `det ∂(M²,E,φ)/∂M = 2{E, φ}`.  The
-//! conclusion (non-vanishing) is unaffected.  See `tests/model_elliptic.rs`.
+//! conclusion (non-vanishing) is unaffected.  See `tests/model/model_elliptic.rs`.
 
 use super::params::{EllipticParams, Regime};
 use super::{Inertia, ModelError};

@@ -8,6 +8,7 @@
 //! verdict, counterexample), `errata.md`, `conventions.md` and `figures/residuals-*.svg`.  Output is deterministic: no timestamps, catalogue order,
 //! fixed number formatting.
 
+pub mod cells;
 pub mod decimal;
 pub mod figures;
 pub mod markdown;

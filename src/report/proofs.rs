@@ -15,8 +15,8 @@
 //!   else it *has a gap* (the inconclusive claims, or refuted ones without a correction
 //!   that holds, are named).  An environment without proof steps: *no proof printed*.
 
+use super::cells::{anchor, best_residual, printed_markdown, verdict_badge};
 use super::decimal::round_numbers;
-use super::markdown::{anchor, best_residual, verdict_badge};
 use super::paper_text::to_markdown;
 use super::{stem_of, ReportInput};
 use crate::claims::kind::Form;
@@ -479,7 +479,7 @@ fn claim_entry(input: &ReportInput, s: &Structure, r: &ClaimResult, n: usize) ->
         anchor(&r.id)
     );
     let _ = writeln!(t, "{}\n", r.location);
-    t.push_str(&super::markdown::printed_markdown(input, &r.printed));
+    t.push_str(&printed_markdown(input, &r.printed));
     if r.verdict != Verdict::Defined {
         let _ = writeln!(t, "Best residual: {}; {}.\n", best_residual(r), r.reason);
     }
@@ -682,6 +682,7 @@ mod tests {
             proof: crate::claims::verdict::ProofInfo::none("not attempted"),
             note: None,
             reason: String::new(),
+            elapsed_ms: 0.0,
         }
     }
 

@@ -1,5 +1,5 @@
 //! The paper's identities written directly against the algebra API, shared by the
-//! tests (`tests/algebra_paper.rs`) and the benchmark (`benches/algebra.rs`).
+//! tests (`tests/algebra/algebra_paper.rs`) and the benchmark (`benches/algebra.rs`).
 //!
 //! Domain points are exact rationals with A > B > C > 0 and E/M² inside the regime.
 #![allow(dead_code)]

@@ -90,10 +90,10 @@ pub const DEFAULTS: [FieldDefault; 10] = [
     FieldDefault {
         field: "slope_tol",
         applies: "asymptotic",
-        value: 0.25,
+        value: 0.1,
         min: 0.0,
         max: INF,
-        meaning: "holds if every judged slope ≥ order − slope_tol",
+        meaning: "threshold order − slope_tol for the fitted and local slopes",
     },
     FieldDefault {
         field: "tries",

@@ -2,11 +2,12 @@
 //! point and the `let` bindings, the residual scale, the dispatch of one computation to
 //! the backend of a rung, and the loop that draws samples and records failures.
 
-use super::result::{Cause, FailedSample, Named};
+use super::failure::{Cause, FailedSample, Named};
 use crate::claims::catalogue::{Catalogue, Claim, PExpr};
 use crate::claims::eval::{Backend, Evaluator};
 use crate::claims::sampler::{Point, Sampler, Stream};
 use crate::claims::value::{Layout, Value};
+use rayon::prelude::*;
 use rug::Float;
 
 /// One claim of one catalogue.
@@ -124,14 +125,21 @@ pub struct Sides {
 }
 
 /// Draws `claim.samples` samples and evaluates `at(sample, bits)` at every rung.  A
-/// sample that fails at some rung is recorded in `failures` and replaced; after
-/// `claim.samples` failures the claim cannot be judged.
-pub fn collect<P, V>(
+/// sample that fails at some rung is recorded in `failures` (with the lowest failing
+/// rung) and replaced; after `claim.samples` failures the claim cannot be judged.
+///
+/// The draws are sequential (the streams are), in batches of as many samples as are still
+/// missing; the evaluations of a batch, one job per sample and rung, run in parallel on
+/// the current rayon pool, so one slow claim keeps every core busy.  The result is the
+/// same as drawing and evaluating one sample at a time: a batch never draws more than
+/// that loop would (at most the missing samples, and at most the failures still
+/// allowed), and its results are taken in draw order.
+pub fn collect<P: Sync, V: Send>(
     claim: &Claim,
     bits: &[u32],
     failures: &mut Vec<FailedSample>,
     mut draw: impl FnMut() -> Result<(P, Point), Cause>,
-    mut at: impl FnMut(&P, u32) -> Result<V, String>,
+    at: impl Fn(&P, u32) -> Result<V, String> + Sync,
 ) -> Result<Vec<Sample<P, V>>, Cause> {
     let mut good = Vec::new();
     while good.len() < claim.samples {
@@ -141,30 +149,67 @@ pub fn collect<P, V>(
                 first: failures.first().map_or("", |f| f.message.as_str()).into(),
             });
         }
-        let (drawn, point) = draw()?;
-        let mut rungs = Vec::new();
-        let mut failed = None;
-        for &b in bits {
-            match at(&drawn, b) {
-                Ok(x) => rungs.push(x),
-                Err(m) => {
-                    failed = Some((b, m));
+        let batch = (claim.samples - good.len()).min(claim.samples - failures.len());
+        let mut drawn = Vec::with_capacity(batch);
+        let mut stopped = None;
+        for _ in 0..batch {
+            match draw() {
+                Ok(d) => drawn.push(d),
+                Err(cause) => {
+                    stopped = Some(cause);
                     break;
                 }
             }
         }
-        match failed {
-            Some((b, message)) => failures.push(FailedSample {
-                point: named(&point),
-                bits: b,
-                message,
-            }),
-            None => good.push(Sample {
-                drawn,
-                point,
-                rungs,
-            }),
+        let rows = evaluate(&drawn, bits, &at);
+        for ((drawn, point), row) in drawn.into_iter().zip(rows) {
+            match row {
+                Ok(rungs) => good.push(Sample {
+                    drawn,
+                    point,
+                    rungs,
+                }),
+                Err((b, message)) => failures.push(FailedSample {
+                    point: named(&point),
+                    bits: b,
+                    message,
+                }),
+            }
+        }
+        if let Some(cause) = stopped {
+            return Err(cause);
         }
     }
     Ok(good)
+}
+
+/// Evaluates every drawn sample at every rung in parallel; per sample, its values in
+/// ladder order or its lowest failing rung with the message.
+fn evaluate<P: Sync, V: Send>(
+    drawn: &[(P, Point)],
+    bits: &[u32],
+    at: &(impl Fn(&P, u32) -> Result<V, String> + Sync),
+) -> Vec<Result<Vec<V>, (u32, String)>> {
+    let jobs: Vec<(usize, u32)> = (0..drawn.len())
+        .flat_map(|i| bits.iter().map(move |&b| (i, b)))
+        .collect();
+    let values: Vec<Result<V, String>> =
+        jobs.par_iter().map(|&(i, b)| at(&drawn[i].0, b)).collect();
+    let mut values = values.into_iter();
+    (0..drawn.len())
+        .map(|_| {
+            let mut row = Vec::with_capacity(bits.len());
+            let mut failed = None;
+            for (&b, v) in bits.iter().zip(values.by_ref()) {
+                match v {
+                    Ok(x) if failed.is_none() => row.push(x),
+                    Ok(_) => {}
+                    Err(m) => {
+                        failed.get_or_insert((b, m));
+                    }
+                }
+            }
+            failed.map_or(Ok(row), Err)
+        })
+        .collect()
 }

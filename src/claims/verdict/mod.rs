@@ -4,7 +4,9 @@
 //! One module per kind ([`identity`], [`independence`], [`asymptotic`], [`existence`],
 //! [`negation`], and [`exact`] for the rational evaluation of identities); each returns
 //! its [`Evidence`] or a typed [`Failure`].  The ladder rule shared by the residual kinds
-//! is in [`ladder`].  This module runs the right kind and builds the [`ClaimResult`] once.
+//! is in [`ladder`].  Before a kind runs, [`vacuity`] checks that the conditions the
+//! claim counts are exercised on its domain.  This module runs the right kind and builds
+//! the [`ClaimResult`] once.
 //!
 //! Samples that cannot be evaluated are reported as failures and replaced, never counted.
 
@@ -12,12 +14,14 @@ pub mod asymptotic;
 pub mod context;
 pub mod exact;
 pub mod existence;
+pub mod failure;
 pub mod identity;
 pub mod independence;
 pub mod ladder;
 pub mod negation;
 pub mod result;
 pub mod symbolic;
+pub mod vacuity;
 
 pub use crate::claims::kind::Verdict;
 pub use result::{
@@ -52,8 +56,9 @@ impl Default for Options {
 }
 
 /// Verifies the claims selected by `select`, in parallel, calling `done` as each finishes.
-/// Results are in catalogue order.  With the environment variable `EULERTOP_TIMING`
-/// set, per-claim wall times are printed on standard error.
+/// Results are in catalogue order.  The claims run in parallel, and so do the samples
+/// and rungs of each claim (see [`context::collect`]).  With the environment variable
+/// `EULERTOP_TIMING` set, per-claim wall times are printed on standard error.
 pub fn verify(
     cat: &Catalogue,
     opts: &Options,
@@ -66,14 +71,9 @@ pub fn verify(
     chosen
         .par_iter()
         .map(|c| {
-            let t0 = std::time::Instant::now();
             let r = run_claim(cat, c, opts);
             if timing {
-                eprintln!(
-                    "timing {:8.1} ms  {}",
-                    t0.elapsed().as_secs_f64() * 1e3,
-                    c.id
-                );
+                eprintln!("timing {:8.1} ms  {}", r.elapsed_ms, c.id);
             }
             done(&r);
             r
@@ -109,6 +109,7 @@ pub fn verify(
 /// assert!(r.as_expected && r.samples == 8);
 /// ```
 pub fn run_claim(cat: &Catalogue, claim: &Claim, opts: &Options) -> ClaimResult {
+    let t0 = std::time::Instant::now();
     let ctx = Ctx { cat, claim };
     let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| judge(ctx, opts)))
         .unwrap_or_else(|p| {
@@ -120,7 +121,10 @@ pub fn run_claim(cat: &Catalogue, claim: &Claim, opts: &Options) -> ClaimResult 
             Err(Failure::bare(Cause::Panic(msg)))
         });
     let evidence = outcome.unwrap_or_else(Failure::into_evidence);
-    ClaimResult::new(claim, evidence)
+    ClaimResult {
+        elapsed_ms: t0.elapsed().as_secs_f64() * 1e3,
+        ..ClaimResult::new(claim, evidence)
+    }
 }
 
 /// Runs the claim's kind.
@@ -128,6 +132,9 @@ fn judge(ctx: Ctx<'_>, opts: &Options) -> Result<Evidence, Failure> {
     let bits = &opts.bits;
     if bits.is_empty() {
         return Err(Failure::bare(Cause::EmptyLadder));
+    }
+    if !matches!(ctx.claim.body, Body::Definition(_)) {
+        vacuity::check(ctx).map_err(Failure::bare)?;
     }
     match &ctx.claim.body {
         Body::Definition(_) => Ok(Evidence::new(Verdict::Defined, "definition: no verdict")),

@@ -2,6 +2,7 @@
 //! the [`Evidence`] each kind returns, and the typed [`Failure`] of a kind that could not
 //! reach a verdict.
 
+pub use super::failure::{Cause, FailedSample, Named};
 use super::symbolic::ProofInfo;
 use crate::claims::catalogue::{Body, Claim};
 use crate::claims::kind::{Form, Kind, Verdict};
@@ -75,15 +76,6 @@ impl Serialize for Rung {
     }
 }
 
-/// A named value.
-#[derive(Clone, Debug, Serialize, PartialEq)]
-pub struct Named {
-    /// Name.
-    pub name: String,
-    /// Rendered value.
-    pub value: String,
-}
-
 /// A counterexample.
 #[derive(Clone, Debug, Serialize, PartialEq)]
 pub struct Counterexample {
@@ -97,17 +89,6 @@ pub struct Counterexample {
     pub rhs: String,
     /// Residual (log2).
     pub log2_residual: Option<f64>,
-}
-
-/// A sample that could not be evaluated.
-#[derive(Clone, Debug, Serialize, PartialEq)]
-pub struct FailedSample {
-    /// The point.
-    pub point: Vec<Named>,
-    /// Rung (bits) where it failed, 0 for sampling / exact.
-    pub bits: u32,
-    /// What went wrong.
-    pub message: String,
 }
 
 /// Evidence of an exact evaluation.
@@ -163,31 +144,6 @@ impl Evidence {
             proof: None,
         }
     }
-}
-
-/// Why a claim could not be judged.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum Cause {
-    /// The precision ladder is empty.
-    #[error("empty precision ladder")]
-    EmptyLadder,
-    /// The domain cannot be sampled (the message names the variable or constraint).
-    #[error("{0}")]
-    Sampling(String),
-    /// As many samples failed as were asked for.
-    #[error("{count} samples could not be evaluated (first: {first})")]
-    Unevaluable {
-        /// How many failed.
-        count: usize,
-        /// The first failure's message.
-        first: String,
-    },
-    /// An existence claim found no f64 solution at a sample.
-    #[error("no solution found: {0}")]
-    NoSolution(String),
-    /// Another layer panicked (a bug there).
-    #[error("internal error (panic) while evaluating: {0}")]
-    Panic(String),
 }
 
 /// A kind that stopped without a verdict: the cause, and what it had gathered (failed
@@ -277,6 +233,10 @@ pub struct ClaimResult {
     pub note: Option<String>,
     /// Why this verdict, in one line.
     pub reason: String,
+    /// Wall time of the claim's verification in milliseconds, set by
+    /// [`run_claim`](super::run_claim).  It varies from run to run, so the report never
+    /// shows it; `verify --format json` gives it to find the slow claims.
+    pub elapsed_ms: f64,
 }
 
 impl ClaimResult {
@@ -312,6 +272,7 @@ impl ClaimResult {
                 .unwrap_or_else(|| ProofInfo::none(not_attempted(claim.kind))),
             note: claim.note.clone(),
             reason: ev.reason,
+            elapsed_ms: 0.0,
         }
     }
 }

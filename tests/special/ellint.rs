@@ -1,8 +1,7 @@
 //! K(k), K'(k) and F(φ, k) against Arb (python-flint) values cross-checked with mpmath
 //! (tests/data/ellint_ref.csv).
 
-mod common;
-use common::*;
+use crate::common::*;
 use eulertop::special::{ellipf, ellipk, ellipkp, SpecialError};
 use rug::Float;
 

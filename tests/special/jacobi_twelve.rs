@@ -4,8 +4,7 @@
 //! `m < 0` (imaginary modulus, DLMF 22.17.6–8), `0 ≤ m ≤ 1` and `m > 1`; poles as errors;
 //! identities between the twelve (DLMF 22.6.1–2) as properties.
 
-mod common;
-use common::*;
+use crate::common::*;
 use eulertop::special::{jacobi, jacobi_m, JacobiFn, SpecialError};
 use proptest::prelude::*;
 use rug::Float;

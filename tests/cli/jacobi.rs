@@ -1,6 +1,7 @@
-//! `eulertop jacobi`: the twelve functions (`--functions`), the parameter `m`
-//! (`--parameter`), `k ≥ 1`, and one-line errors with the line number for overflowing
-//! numbers, non-UTF-8 and overlong lines (exit status 2).
+//! `eulertop jacobi` end to end: output format and precision, complex arguments, the
+//! twelve functions (`--functions`), the parameter `m` (`--parameter`), `k ≥ 1`, and
+//! one-line errors with the line number (exit status 2) for malformed, overflowing and
+//! non-UTF-8 input and overlong lines.
 
 use std::io::Write;
 use std::process::{Command, Stdio};
@@ -28,6 +29,63 @@ fn run(args: &[&str], input: &[u8]) -> (i32, String, String) {
 
 fn numbers(s: &str) -> Vec<f64> {
     s.split_whitespace().map(|t| t.parse().unwrap()).collect()
+}
+
+/// mpmath: ellipfun('sn'|'cn'|'dn', 0.75, m=0.25):
+/// sn = 0.67011132822387532999, cn = 0.74226060638163576636, dn = 0.94219833471860286803
+#[test]
+fn f64_and_mpfr_output() {
+    let (code, out, err) = run(&[], b"# comment\n\n0.75 0.5\n");
+    assert_eq!(code, 0, "{err}");
+    let v: Vec<f64> = out.split_whitespace().map(|t| t.parse().unwrap()).collect();
+    assert_eq!(v.len(), 3);
+    let sn = v[0];
+    for (got, want) in v
+        .iter()
+        .zip([0.6701113282238753, 0.7422606063816358, 0.9421983347186029])
+    {
+        assert!((got - want).abs() < 5e-16, "{got} vs {want}");
+    }
+    assert!((sn * sn + v[1] * v[1] - 1.0).abs() < 1e-15);
+    assert!((v[2] * v[2] + 0.25 * sn * sn - 1.0).abs() < 1e-15);
+    // 17 significant digits per value
+    assert!(out.split_whitespace().all(|t| t
+        .split('e')
+        .next()
+        .unwrap()
+        .replace(['-', '.'], "")
+        .len()
+        == 17));
+
+    let (code, out, _) = run(&["--bits", "256"], b"0.75 0.5\n");
+    assert_eq!(code, 0);
+    let toks: Vec<&str> = out.split_whitespace().collect();
+    assert_eq!(toks.len(), 3);
+    // ceil(256·log10 2) + 2 = 80 digits
+    let mant = toks[0].split('e').next().unwrap().replace(['-', '.'], "");
+    assert_eq!(mant.len(), 80);
+    assert!(
+        toks[0].starts_with("6.701113282238753299945023434"),
+        "{}",
+        toks[0]
+    );
+}
+
+#[test]
+fn complex_output() {
+    let (code, out, _) = run(&["--complex"], b"0.5 0.25 0.5\n0.1 -0.2 0\n");
+    assert_eq!(code, 0);
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines.len(), 2);
+    let v: Vec<f64> = lines[0]
+        .split_whitespace()
+        .map(|t| t.parse().unwrap())
+        .collect();
+    assert_eq!(v.len(), 6);
+    // mpmath: ellipfun('sn', mpc(0.5,0.25), m=0.25) = 0.492218840478357096 + 0.215722356526344565j
+    assert!(
+        (v[0] - 0.4922188404783571).abs() < 1e-15 && (v[1] - 0.21572235652634456).abs() < 1e-15
+    );
 }
 
 #[test]
@@ -86,12 +144,21 @@ fn errors_are_one_line_with_the_line_number() {
             b"".to_vec(),
             "not available",
         ),
+        (vec![], b"0.5 0.5\n0.1 0.2\n1 -1\n".to_vec(), "line 3:"),
+        (vec![], b"0.5 abc\n".to_vec(), "line 1:"),
+        (vec![], b"0.5\n".to_vec(), "line 1:"),
+        (vec!["--bits", "128"], b"0.5 -0.5\n".to_vec(), "line 1:"),
+        (vec!["--complex"], b"0.5 0.5\n".to_vec(), "line 1:"),
     ];
     for (args, input, want) in cases {
         let (code, _, err) = run(&args, &input);
         assert_eq!(code, 2, "{want}: {err}");
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(err.len() < 200, "{err}");
+        // an error about an input line starts with its number
+        if let Some((line, _)) = want.split_once(':').filter(|(l, _)| l.starts_with("line ")) {
+            assert!(err.starts_with(&format!("eulertop: {line}:")), "{err}");
+        }
         assert!(err.contains(want), "{want}: {err}");
     }
     let (code, _, err) = run(&["--functions", "sn,xy"], b"");

@@ -8,8 +8,7 @@
 //!   with `sn`, `cn`, `dn` and `K` only, at random `u` and `0 < k < 1`;
 //! * the defining quotient at a complex argument (`cd·dn = cn`, …).
 
-mod common;
-use common::*;
+use crate::common::*;
 use eulertop::claims::eval::Evaluator;
 use eulertop::claims::parser::parse_expr;
 use eulertop::claims::registry::Registry;

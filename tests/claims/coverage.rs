@@ -14,11 +14,14 @@ fn paper() -> Option<String> {
 }
 
 fn checked_in_labels() -> Vec<String> {
-    include_str!("data/paper_labels.txt")
-        .lines()
-        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
-        .map(str::to_string)
-        .collect()
+    include_str!(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/paper_labels.txt"
+    ))
+    .lines()
+    .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+    .map(str::to_string)
+    .collect()
 }
 
 /// The numbered environments, in order, with the Corollary.
@@ -67,7 +70,10 @@ fn checked_in_label_list_matches_the_paper() {
 
 #[test]
 fn every_label_and_environment_has_a_claim() {
-    let cat = match load_dir(Path::new("identities"), registry().unwrap()) {
+    let cat = match load_dir(
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join("identities"),
+        registry().unwrap(),
+    ) {
         Ok(c) => c,
         Err(e) => panic!("catalogue does not load:\n{e}"),
     };

@@ -4,7 +4,7 @@
 //! parser, the catalogue loader and the evaluator at f64 and 256 bits.  Each step must
 //! return a value or an error: no panic, no stack overflow, no hang.
 //!
-//! 2,000 cases per property in the default suite; `cargo test --release --test
+//! 2,000 cases per property in the default suite; `cargo test --release --test claims
 //! fuzz_claims -- --ignored` runs 10⁵ (see the README).  A failure prints the input.
 
 use eulertop::claims::builtins::Builtin;

@@ -1,9 +1,11 @@
 //! The paper's identities proved through the algebra API (exact normal form 0), and
 //! deliberately wrong variants that must never be proved.
 
-mod algebra_identities;
+use crate::algebra_identities;
 
-use algebra_identities::{addition, cayley, g0g1, g1_alphabeta, mm, sol_et, Regime, Variant};
+use crate::algebra_identities::{
+    addition, cayley, g0g1, g1_alphabeta, mm, sol_et, Regime, Variant,
+};
 use eulertop::algebra::{prove_components, Proof, RingOptions};
 
 fn opts() -> RingOptions {

@@ -2,8 +2,7 @@
 //! (tests/data/jacobi_ref_complex.csv), including points next to the poles
 //! `2jK + (2l+1)iK'` and the zero of dn at `K + iK'`.
 
-mod common;
-use common::*;
+use crate::common::*;
 use eulertop::numbers::{Cplx, C64};
 use eulertop::special::{sncndn_complex, SpecialError};
 use rug::Float;

@@ -1,0 +1,8 @@
+//! Integration tests of the claims engine: verdicts on synthetic catalogues, the fuzzed
+//! lexer, parser, loader and evaluator, and the coverage of the paper's labels.
+
+mod claims_engine;
+mod coverage;
+mod fuzz_claims;
+mod implicit_proofs;
+mod verdict_rules;

@@ -1,0 +1,8 @@
+//! End-to-end tests of the `eulertop` binary: the claims commands, hostile input, the
+//! `jacobi`, `step` and `orbit` commands, and the report's figures.
+
+mod cli_claims;
+mod cli_hostile;
+mod jacobi;
+mod model_cli;
+mod report_figures;
