@@ -90,19 +90,20 @@ fn inverse(m: &[Vec<Sym>]) -> AlgResult<Vec<Vec<Sym>>> {
 
 impl Sym {
     /// `∂self/∂x` by the chain rule through the ring's declared coordinates, where `x`
-    /// is one of them.
+    /// is one of them (or, if `x` is one of the parameters, at fixed other parameters).
     pub(crate) fn derivative_in_coordinates(&self, x: &Sym, c: Coordinates) -> AlgResult<Sym> {
         let ring = self.ring().clone();
-        let i = c
-            .coords
-            .iter()
-            .position(|y| y.try_sub(x).map(|d| d.is_exact_zero()).unwrap_or(false))
-            .ok_or_else(|| {
-                AlgebraError::Derivative(format!(
-                    "{} is not one of the claim's variables after the change of variables",
-                    x.render_short(60)
-                ))
-            })?;
+        let same = |y: &Sym| y.try_sub(x).map(|d| d.is_exact_zero()).unwrap_or(false);
+        let Some(i) = c.coords.iter().position(same) else {
+            // a parameter itself: the derivative at fixed other parameters
+            if c.params.iter().any(same) {
+                return self.derivative_plain(x);
+            }
+            return Err(AlgebraError::Derivative(format!(
+                "{} is not one of the claim's variables after the change of variables",
+                x.render_short(60)
+            )));
+        };
         let inv = match c.inverse {
             Some(inv) => inv,
             None => {

@@ -160,6 +160,64 @@ vars = [["h", "uniform(0.01, 0.1)"]]
 let = "Mh = step_gamma2(M, h, A, B, C)"
 lhs = "d(MsqP(Mh), M, 1)"
 rhs = "2 * Mh[1]"
+[[claim]]
+id = "t.chain.half-args.wrong-sign"
+environment = "Theorem 1"
+role = "control"
+labels = []
+location = "control: the chain rule through half sums with a sign flipped"
+printed = 'x'
+kind = "identity"
+expect = "refuted"
+domain = "ell_up"
+vars = [["h", "uniform(0.01, 0.1)"]]
+let = '''
+k = kE(A, B, C, Msq, E)
+x = (phi + phi2) / 2
+y = (phi2 - phi) / 2
+Q = sn(x, k) * cn(y, k) + sn(y, k)^2
+'''
+lhs = "d(Q, phi)"
+rhs = "0.5 * (d(Q, x) + d(Q, y))"
+
+[[claim]]
+id = "t.chain.half-args"
+environment = "Theorem 1"
+role = "control"
+labels = []
+location = "control: the chain rule through half sums"
+printed = 'x'
+kind = "identity"
+expect = "proved"
+domain = "ell_up"
+vars = [["h", "uniform(0.01, 0.1)"]]
+let = '''
+k = kE(A, B, C, Msq, E)
+x = (phi + phi2) / 2
+y = (phi2 - phi) / 2
+Q = sn(x, k) * cn(y, k) + sn(y, k)^2
+'''
+lhs = "d(Q, phi)"
+rhs = "0.5 * (d(Q, x) - d(Q, y))"
+
+[[claim]]
+id = "t.chain.direct-use"
+environment = "Theorem 1"
+role = "control"
+labels = []
+location = "control: a derivative in a let while the variable is also used directly"
+printed = 'x'
+kind = "identity"
+expect = "holds"
+domain = "ell_up"
+vars = [["h", "uniform(0.01, 0.1)"]]
+let = '''
+k = kE(A, B, C, Msq, E)
+x = (phi + phi2) / 2
+Q = sn(x, k) + phi
+'''
+lhs = "d(Q, x)"
+rhs = "cn(x, k) * dn(x, k)"
 "#;
 
 fn catalogue() -> Catalogue {
@@ -203,6 +261,8 @@ fn the_printed_map_is_proved_and_its_wrong_variants_are_not() {
         "t.master12.delta-off",
         "t.master12.alpha2-for-gamma1",
         "t.chain.msq-M1.wrong",
+        "t.chain.half-args.wrong-sign",
+        "t.chain.direct-use",
     ] {
         let (ok, why) = proved(&cat, id);
         assert!(!ok, "{id} was proved");
@@ -213,7 +273,7 @@ fn the_printed_map_is_proved_and_its_wrong_variants_are_not() {
 #[test]
 fn derivatives_through_a_parametrized_step_follow_the_chain_rule() {
     let cat = catalogue();
-    for id in ["t.chain.msq-M1", "t.chain.msq-A"] {
+    for id in ["t.chain.msq-M1", "t.chain.msq-A", "t.chain.half-args"] {
         let (ok, why) = proved(&cat, id);
         assert!(ok, "{id}: {why}");
     }
