@@ -2,7 +2,7 @@
 //! reduced argument by climbing it (DLMF 22.7.1–3, 22.10.4–6, 19.8.12): the
 //! multi-precision algorithm ([`Bottom::Sine`](super::Bottom::Sine)).
 
-use super::landen_mpfr::{as_float, into_r};
+use super::downcast::{as_float, into_r};
 use super::SpecialError;
 use crate::numbers::Real;
 use rug::Float;

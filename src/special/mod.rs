@@ -91,6 +91,7 @@ mod agm;
 mod cache;
 mod complex;
 mod dd;
+mod downcast;
 mod ellint;
 mod glaisher;
 mod inverse;

@@ -19,6 +19,7 @@ pub mod identity;
 pub mod independence;
 pub mod ladder;
 pub mod negation;
+pub mod proof_info;
 pub mod result;
 pub mod symbolic;
 pub mod vacuity;

@@ -3,7 +3,7 @@
 //! reach a verdict.
 
 pub use super::failure::{Cause, FailedSample, Named};
-use super::symbolic::ProofInfo;
+use super::proof_info::ProofInfo;
 use crate::claims::catalogue::{Body, Claim};
 use crate::claims::kind::{Form, Kind, Verdict};
 use crate::claims::latex::{binding_to_latex, to_latex};

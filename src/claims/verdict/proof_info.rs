@@ -1,0 +1,63 @@
+//! The record of a proof attempt, as the results and reports show it.
+
+use serde::Serialize;
+
+/// How a claim was proved.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ProofMethod {
+    /// The symbolic normal form of lhs − rhs is 0.
+    Symbolic,
+    /// Not proved (the reason says why).
+    None,
+}
+
+/// The evidence of a proof attempt, as reported.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ProofInfo {
+    /// Proved symbolically, or not.
+    pub method: ProofMethod,
+    /// Why not, when not proved.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
+    /// The symbols: "name: what it stands for".
+    pub symbols: Vec<String>,
+    /// The relations of the square-root symbols.
+    pub relations: Vec<String>,
+    /// The decisions taken from the domain.
+    pub assumptions: Vec<String>,
+    /// The steps for the reader: addition-theorem instances, symbols introduced.
+    pub notes: Vec<String>,
+    /// The cases of the finitely-valued variables ("sa = 1, sc = -1"), if any.
+    pub cases: Vec<String>,
+    /// Terms of the numerators of both sides (the size of the identity).
+    pub terms: usize,
+    /// Wall time in milliseconds.
+    pub ms: f64,
+    /// The certificate (SymPy-recheckable), when requested.
+    #[serde(skip)]
+    pub certificate: Option<String>,
+}
+
+impl ProofInfo {
+    /// No proof, for `reason`.
+    pub fn none(reason: impl Into<String>) -> ProofInfo {
+        ProofInfo {
+            method: ProofMethod::None,
+            reason: Some(reason.into()),
+            symbols: Vec::new(),
+            relations: Vec::new(),
+            assumptions: Vec::new(),
+            notes: Vec::new(),
+            cases: Vec::new(),
+            terms: 0,
+            ms: 0.0,
+            certificate: None,
+        }
+    }
+
+    /// Was the claim proved?
+    pub fn is_proved(&self) -> bool {
+        self.method == ProofMethod::Symbolic
+    }
+}
