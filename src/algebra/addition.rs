@@ -55,9 +55,7 @@ impl Triples<'_> {
     fn base(&self, j: usize) -> [Val; 3] {
         let st = self.ring.state();
         let b = &st.tables[self.t].bases[j];
-        let (sv, c, d) = (b.s_var, b.c.clone(), b.d.clone());
-        drop(st);
-        [self.ring.var_sym(sv).val, c, d]
+        [b.s.clone(), b.c.clone(), b.d.clone()]
     }
 
     /// `n·bⱼ` by doubling.

@@ -176,10 +176,10 @@ impl Ring {
                 b.arg.clone(),
                 b.c.clone(),
                 b.d.clone(),
-                b.s_var,
+                b.s.clone(),
             )
         };
-        let s = self.var_sym(sj).val;
+        let s = sj;
         let du = self.val_derivative(&arg, jx)?;
         let dk = self.val_derivative(&k, jx)?;
         let m = |a: &Val, b: &Val| inner.v_mul(a, b);

@@ -48,7 +48,8 @@ pub struct BaseHint {
 pub(crate) struct Base {
     vec: Vec<Rational>,
     pub arg: Val,
-    pub s_var: usize,
+    /// `sn` of the base: its symbol, or the prescribed value.
+    pub s: Val,
     pub s_name: String,
     pub c: Val,
     pub d: Val,
@@ -515,6 +516,9 @@ impl Ring {
             }
         }
         let k = self.state().tables[t].k.clone();
+        if self.prescribed_base(t, vec.clone(), &arg, &k)? {
+            return Ok(());
+        }
         let (sv, cv, dv) = self.numeric_sncndn(&arg.sh, &k.sh)?;
         let nb: usize = self
             .state()
@@ -549,13 +553,64 @@ impl Ring {
         st.tables[t].bases.push(Base {
             vec,
             arg,
-            s_var: j,
+            s: s.val.clone(),
             s_name: format!("sn_{nb}"),
             c: c.val,
             d: d.val,
             z_var: None,
         });
         Ok(())
+    }
+
+    /// A base argument `±v` whose sn, cn, dn are prescribed (see
+    /// [`Ring::prescribe_sncndn`]) at this table's modulus: added with those values
+    /// instead of new symbols.
+    fn prescribed_base(&self, t: usize, vec: Vec<Rational>, arg: &Val, k: &Val) -> AlgResult<bool> {
+        let inner = &self.inner;
+        let prescribed = self.state().prescribed.clone();
+        let found = {
+            prescribed.iter().find_map(|p| {
+                let v = self.var_sym(p.var).val;
+                let same_k = inner.v_add(k, &p.k, true).ok()?.num.is_zero();
+                let plus = inner.v_add(arg, &v, true).ok()?.num.is_zero();
+                let minus = inner.v_add(arg, &v, false).ok()?.num.is_zero();
+                (same_k && (plus || minus)).then(|| (p.clone(), if plus { 1 } else { -1 }))
+            })
+        };
+        let Some((p, sign)) = found else {
+            return Ok(false);
+        };
+        if inner.opts.certificate {
+            return Err(AlgebraError::NotAlgebraic(
+                "a base argument with prescribed sn, cn, dn (in a certificate)".into(),
+            ));
+        }
+        let s = if sign > 0 {
+            p.s.clone()
+        } else {
+            inner.v_neg(&p.s)
+        };
+        let name = format!("sn({})", p.what);
+        self.note(format!(
+            "{} is a base argument with sn, cn, dn given by its definition: {}",
+            if sign > 0 {
+                p.what.clone()
+            } else {
+                format!("-{}", p.what)
+            },
+            p.why
+        ));
+        let mut st = self.state();
+        st.tables[t].bases.push(Base {
+            vec,
+            arg: arg.clone(),
+            s,
+            s_name: name,
+            c: p.c,
+            d: p.d,
+            z_var: None,
+        });
+        Ok(true)
     }
 
     /// sn, cn, dn at every point of an argument and modulus shadow.

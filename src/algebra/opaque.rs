@@ -40,9 +40,56 @@ impl Sym {
         let n = ring.state().opaque_calls.len() + 1;
         let s = ring.opaque(&format!("{f}{n}"), &shadow, false)?;
         ring.state().opaque_calls.insert(key, s.val.clone());
+        if let Some(j) = s.as_field_var() {
+            let vals = args.iter().map(|a| a.val.clone()).collect();
+            ring.state().opaque_args.insert(j, (f.to_string(), vals));
+        }
         ring.note(format!(
             "{f}{n} stands for {f}(…), which the prover does not expand"
         ));
         Ok(s)
+    }
+}
+
+impl Sym {
+    /// If `self` is the opaque symbol of a call of `f`, that call's arguments.
+    pub(crate) fn opaque_call_args(&self, f: &str) -> Option<Vec<Sym>> {
+        let j = self.as_field_var()?;
+        let (g, vals) = self.ring.state().opaque_args.get(&j).cloned()?;
+        (g == f).then(|| {
+            vals.into_iter()
+                .map(|v| Sym::from_val(&self.ring, v, None))
+                .collect()
+        })
+    }
+
+    /// `F(φ, k)` by rule: an opaque symbol `v`; when `φ = asin x`, `v` has `sn v = x`,
+    /// `cn v = √(1 − x²)`, `dn v = √(1 − k²x²)` (am v = φ ∈ [−π/2, π/2], DLMF 22.16.1 and
+    /// 22.16.11), which the elliptic expansions use.
+    pub(crate) fn ellipf_rule(phi: &Sym, k: &Sym) -> AlgResult<Sym> {
+        let v = Sym::opaque_call("F", &[phi, k], |z| {
+            let real = |c: &Complex| c.imag().is_zero().then(|| c.real().clone());
+            let f = crate::special::ellipf(&real(&z[0])?, &real(&z[1])?).ok()?;
+            Some(Complex::with_val(f.prec(), (f, 0)))
+        })?;
+        if let Some(x) = phi
+            .opaque_call_args("asin")
+            .and_then(|a| a.into_iter().next())
+        {
+            let one = phi.ring.integer(1);
+            let c = one.try_sub(&x.try_mul(&x)?)?.sqrt()?;
+            let d = one
+                .try_sub(&k.try_mul(k)?.try_mul(&x)?.try_mul(&x)?)?
+                .sqrt()?;
+            phi.ring.prescribe_sncndn(
+                &v,
+                k,
+                &x,
+                &c,
+                &d,
+                "F(asin x, k) has amplitude asin x, so sn = x, cn = sqrt(1 - x^2), dn = sqrt(1 - k^2 x^2) (DLMF 22.16.1, 22.16.11)",
+            )?;
+        }
+        Ok(v)
     }
 }

@@ -114,6 +114,20 @@ pub(crate) struct RootInfo {
 }
 
 /// The mutable part of a ring.
+/// A field variable `v` with `sn v`, `cn v`, `dn v` known at modulus `k`.
+#[derive(Clone, Debug)]
+pub(crate) struct Prescription {
+    pub var: usize,
+    pub k: Val,
+    pub s: Val,
+    pub c: Val,
+    pub d: Val,
+    /// The symbol, for notes.
+    pub what: String,
+    /// Why the values hold.
+    pub why: String,
+}
+
 /// A remembered value of an implicit function: its shape and components.
 pub(crate) type ImplicitValue = (String, Vec<(Val, Option<Arc<Node>>)>);
 
@@ -135,6 +149,10 @@ pub(crate) struct State {
     pub opaque_calls: std::collections::BTreeMap<String, Val>,
     /// Values of implicitly defined functions at given arguments (see [`Ring::remember`]).
     pub implicit_values: std::collections::BTreeMap<String, ImplicitValue>,
+    /// Symbols whose sn, cn, dn at a modulus are known (see [`Ring::prescribe_sncndn`]).
+    pub prescribed: Vec<Prescription>,
+    /// The arguments of opaque calls, by the field variable of the call's symbol.
+    pub opaque_args: std::collections::BTreeMap<usize, (String, Vec<Val>)>,
     /// The change of variables of a parametrization, for derivatives.
     pub coordinates: Option<super::coordinates::Coordinates>,
 }
@@ -196,6 +214,8 @@ impl Ring {
             opaque_calls: std::collections::BTreeMap::new(),
             implicit_values: std::collections::BTreeMap::new(),
             coordinates: None,
+            prescribed: Vec::new(),
+            opaque_args: std::collections::BTreeMap::new(),
         };
         Ring {
             inner: Arc::new(Inner {
@@ -462,6 +482,34 @@ impl Ring {
         }
     }
 
+    /// Declares that the symbol `v` (a field variable, such as an opaque `F(asin x, k)`)
+    /// has `sn v = s`, `cn v = c`, `dn v = d` at modulus `k`: a base argument `±v` of
+    /// that modulus then takes these values instead of new symbols.
+    pub fn prescribe_sncndn(
+        &self,
+        v: &Sym,
+        k: &Sym,
+        s: &Sym,
+        c: &Sym,
+        d: &Sym,
+        why: &str,
+    ) -> AlgResult<()> {
+        let var = v
+            .as_field_var()
+            .ok_or_else(|| AlgebraError::Internal("prescribed sn of a non-symbol".into()))?;
+        let what = v.render_short(40);
+        self.state().prescribed.push(Prescription {
+            var,
+            k: k.val.clone(),
+            s: s.val.clone(),
+            c: c.val.clone(),
+            d: d.val.clone(),
+            what,
+            why: why.to_string(),
+        });
+        Ok(())
+    }
+
     /// A symbol name not yet used in this ring: `base`, else `base` followed by a letter
     /// and a number.
     pub fn fresh_name(&self, base: &str) -> String {
@@ -541,10 +589,14 @@ impl Inner {
     ) -> AlgResult<usize> {
         let mut st = self.state();
         if st.vars.len() >= self.opts.max_vars {
-            return Err(AlgebraError::Capacity(format!(
+            // recorded in the ring too, so the prover restarts with more room even when
+            // the error reaches it only as a message
+            let e = AlgebraError::Capacity(format!(
                 "more than {} field variables (adding {name})",
                 self.opts.max_vars
-            )));
+            ));
+            st.error.get_or_insert_with(|| e.clone());
+            return Err(e);
         }
         st.vars.push(VarInfo { name, kind, values });
         Ok(st.vars.len() - 1)
@@ -561,10 +613,10 @@ impl Inner {
         let mut st = self.state();
         let i = st.roots.len();
         if i >= self.opts.max_roots {
-            return Err(AlgebraError::Capacity(format!(
-                "more than {} square roots",
-                self.opts.max_roots
-            )));
+            let e =
+                AlgebraError::Capacity(format!("more than {} square roots", self.opts.max_roots));
+            st.error.get_or_insert_with(|| e.clone());
+            return Err(e);
         }
         let r = Poly::var(&self.ctx, self.root_var(i));
         let relation = Arc::new(r.mul(&r).sub(&radicand));

@@ -222,12 +222,7 @@ impl Real for Sym {
         Sym::or_poison(&self.ring, r)
     }
     fn ellipf_by_rule(phi: &Self, k: &Self) -> Result<Self, String> {
-        Sym::opaque_call("F", &[phi, k], |z| {
-            let real = |c: &Complex| c.imag().is_zero().then(|| c.real().clone());
-            let f = crate::special::ellipf(&real(&z[0])?, &real(&z[1])?).ok()?;
-            Some(Complex::with_val(f.prec(), (f, 0)))
-        })
-        .map_err(|e| e.to_string())
+        Sym::ellipf_rule(phi, k).map_err(|e| e.to_string())
     }
     fn sinh(&self) -> Self {
         self.not_algebraic("sinh")

@@ -218,6 +218,47 @@ Q = sn(x, k) + phi
 '''
 lhs = "d(Q, x)"
 rhs = "cn(x, k) * dn(x, k)"
+[[claim]]
+id = "t.amplitude.sn"
+environment = "Proposition 4"
+role = "control"
+labels = []
+location = "control: sn, cn, dn of F(asin x, k)"
+printed = 'x'
+kind = "identity"
+expect = "proved"
+vars = [["x", "uniform(0.1, 0.9)"], ["k", "uniform(0.1, 0.9)"]]
+let = "v = F(asin(x), k)"
+lhs = "vec(sn(v, k), cn(v, k), dn(v, k))"
+rhs = "vec(x, sqrt(1 - x^2), sqrt(1 - k^2 * x^2))"
+
+[[claim]]
+id = "t.amplitude.cn-sign"
+environment = "Proposition 4"
+role = "control"
+labels = []
+location = "control: the wrong sign of cn of F(asin x, k)"
+printed = 'x'
+kind = "identity"
+expect = "refuted"
+vars = [["x", "uniform(0.1, 0.9)"], ["k", "uniform(0.1, 0.9)"]]
+let = "v = F(asin(x), k)"
+lhs = "cn(v, k)"
+rhs = "-sqrt(1 - x^2)"
+
+[[claim]]
+id = "t.amplitude.other-modulus"
+environment = "Proposition 4"
+role = "control"
+labels = []
+location = "control: the amplitude at another modulus is not prescribed"
+printed = 'x'
+kind = "identity"
+expect = "refuted"
+vars = [["x", "uniform(0.1, 0.9)"], ["k", "uniform(0.1, 0.5)"]]
+let = "v = F(asin(x), k)"
+lhs = "sn(v, 2 * k)"
+rhs = "x"
 "#;
 
 fn catalogue() -> Catalogue {
@@ -263,6 +304,8 @@ fn the_printed_map_is_proved_and_its_wrong_variants_are_not() {
         "t.chain.msq-M1.wrong",
         "t.chain.half-args.wrong-sign",
         "t.chain.direct-use",
+        "t.amplitude.cn-sign",
+        "t.amplitude.other-modulus",
     ] {
         let (ok, why) = proved(&cat, id);
         assert!(!ok, "{id} was proved");
@@ -273,7 +316,12 @@ fn the_printed_map_is_proved_and_its_wrong_variants_are_not() {
 #[test]
 fn derivatives_through_a_parametrized_step_follow_the_chain_rule() {
     let cat = catalogue();
-    for id in ["t.chain.msq-M1", "t.chain.msq-A", "t.chain.half-args"] {
+    for id in [
+        "t.chain.msq-M1",
+        "t.chain.msq-A",
+        "t.chain.half-args",
+        "t.amplitude.sn",
+    ] {
         let (ok, why) = proved(&cat, id);
         assert!(ok, "{id}: {why}");
     }
