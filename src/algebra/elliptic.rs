@@ -227,9 +227,13 @@ impl Ring {
             return Err(AlgebraError::RingMismatch);
         }
         let prec = self.precision();
+        // k = 1 exactly: sn = tanh, cn = dn = sech (DLMF 22.5.ii); the addition theorems
+        // hold, the quarter period does not exist
+        let one = k.as_rational().is_some_and(|q| q == 1);
         for p in 0..self.points() {
             let z = &k.val.sh.v[p];
-            if !k.val.sh.is_real_at(p, prec) || z.real().is_sign_negative() || *z.real() >= 1 {
+            let bad = z.real().is_sign_negative() || (*z.real() >= 1 && !one);
+            if !k.val.sh.is_real_at(p, prec) || bad {
                 return Err(AlgebraError::Domain(format!(
                     "modulus {} is not in [0, 1) at a domain point",
                     k.render_short(80)

@@ -5,7 +5,7 @@
 //! ([`super::Ring::error`]) and the operation returns a meaningless value (exact 0 with
 //! NaN shadows); a proof on such a ring is never reported as proved.
 
-use super::error::AlgebraError;
+use super::error::{AlgResult, AlgebraError};
 use super::sym::Sym;
 use crate::numbers::{NumError, Real, Scalar};
 use rug::{Complex, Float, Rational};
@@ -225,13 +225,14 @@ impl Real for Sym {
         Sym::ellipf_rule(phi, k).map_err(|e| e.to_string())
     }
     fn sinh(&self) -> Self {
-        self.not_algebraic("sinh")
+        // sinh u = sn(u, 1)/cn(u, 1) (DLMF 22.5.ii: sn = tanh, cn = dn = sech at k = 1)
+        self.hyperbolic(|s, c| s.try_div(c))
     }
     fn cosh(&self) -> Self {
-        self.not_algebraic("cosh")
+        self.hyperbolic(|_, c| c.try_powi(-1))
     }
     fn tanh(&self) -> Self {
-        self.not_algebraic("tanh")
+        self.hyperbolic(|s, _| Ok(s.clone()))
     }
     fn asinh(&self) -> Self {
         self.not_algebraic("asinh")
@@ -254,6 +255,14 @@ impl Real for Sym {
 }
 
 impl Sym {
+    /// A hyperbolic function of a real argument through the elliptic functions of
+    /// modulus 1 (DLMF 22.5.ii), so the addition theorems and exact derivatives apply.
+    fn hyperbolic(&self, f: impl Fn(&Sym, &Sym) -> AlgResult<Sym>) -> Sym {
+        let one = self.ring.integer(1);
+        let r = self.sncndn(&one).and_then(|(s, c, _)| f(&s, &c));
+        Sym::or_poison(&self.ring, r)
+    }
+
     /// The value as a complex shadow at every point (for callers that print values).
     pub fn values(&self) -> Vec<Complex> {
         self.val.sh.v.clone()

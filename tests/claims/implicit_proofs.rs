@@ -1,5 +1,8 @@
-//! The prover on implicit maps: the right statements are proved, deliberately wrong
-//! variants of the maps and of the phase step never are.
+//! The prover's changes of variables and special rules on controls: implicit maps
+//! (parametrized steps, stated values, phase steps), derivatives by the chain rule, the
+//! amplitude of F(asin x, k), hyperbolic functions as modulus 1.  The true controls are
+//! proved; deliberately wrong variants (of the maps, of δ, of a derivative, of a sign)
+//! never are.
 
 use eulertop::bindings::euler_top::registry;
 use eulertop::claims::catalogue::{load_sources, Body, Catalogue};
@@ -259,6 +262,31 @@ vars = [["x", "uniform(0.1, 0.9)"], ["k", "uniform(0.1, 0.5)"]]
 let = "v = F(asin(x), k)"
 lhs = "sn(v, 2 * k)"
 rhs = "x"
+[[claim]]
+id = "t.hyperbolic.addition"
+environment = "Proposition 4"
+role = "control"
+labels = []
+location = "control: the addition theorem of tanh and cosh^2 - sinh^2 = 1"
+printed = 'x'
+kind = "identity"
+expect = "proved"
+vars = [["u", "uniform(-2, 2)"], ["v", "uniform(-2, 2)"]]
+lhs = "vec(tanh(u + v), cosh(u)^2 - sinh(u)^2, d(tanh(u), u))"
+rhs = "vec((tanh(u) + tanh(v)) / (1 + tanh(u) * tanh(v)), 1, 1 / cosh(u)^2)"
+
+[[claim]]
+id = "t.hyperbolic.wrong"
+environment = "Proposition 4"
+role = "control"
+labels = []
+location = "control: a wrong hyperbolic identity"
+printed = 'x'
+kind = "identity"
+expect = "refuted"
+vars = [["u", "uniform(-2, 2)"], ["v", "uniform(-2, 2)"]]
+lhs = "tanh(u + v)"
+rhs = "(tanh(u) + tanh(v)) / (1 - tanh(u) * tanh(v))"
 "#;
 
 fn catalogue() -> Catalogue {
@@ -306,6 +334,7 @@ fn the_printed_map_is_proved_and_its_wrong_variants_are_not() {
         "t.chain.direct-use",
         "t.amplitude.cn-sign",
         "t.amplitude.other-modulus",
+        "t.hyperbolic.wrong",
     ] {
         let (ok, why) = proved(&cat, id);
         assert!(!ok, "{id} was proved");
@@ -314,7 +343,7 @@ fn the_printed_map_is_proved_and_its_wrong_variants_are_not() {
 }
 
 #[test]
-fn derivatives_through_a_parametrized_step_follow_the_chain_rule() {
+fn true_controls_are_proved() {
     let cat = catalogue();
     for id in [
         "t.chain.msq-M1",
