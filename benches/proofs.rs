@@ -5,7 +5,7 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use eulertop::bindings::euler_top::registry;
-use eulertop::claims::catalogue::{load_sources, Body, Catalogue};
+use eulertop::claims::catalogue::{load_dir, Body, Catalogue};
 use eulertop::claims::verdict::context::Ctx;
 use eulertop::claims::verdict::symbolic::prove;
 
@@ -17,18 +17,8 @@ const SLOWEST: [&str; 3] = [
 ];
 
 fn catalogue() -> Catalogue {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/identities");
-    let mut sources: Vec<(String, String)> = std::fs::read_dir(dir)
-        .expect("identities/")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .map(|p| {
-            let text = std::fs::read_to_string(&p).expect("readable catalogue file");
-            (p.display().to_string(), text)
-        })
-        .collect();
-    sources.sort();
-    load_sources(&sources, registry().expect("registry")).expect("catalogue loads")
+    let dir = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/identities"));
+    load_dir(dir, registry().expect("registry")).expect("catalogue loads")
 }
 
 fn proofs(c: &mut Criterion) {

@@ -5,7 +5,7 @@
 //! never are.
 
 use eulertop::bindings::euler_top::registry;
-use eulertop::claims::catalogue::{load_sources, Body, Catalogue};
+use eulertop::claims::catalogue::{load_sources, read_sources, Body, Catalogue};
 use eulertop::claims::verdict::context::Ctx;
 use eulertop::claims::verdict::symbolic::prove;
 
@@ -290,19 +290,10 @@ rhs = "(tanh(u) + tanh(v)) / (1 - tanh(u) * tanh(v))"
 "#;
 
 fn catalogue() -> Catalogue {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/identities");
-    let mut sources: Vec<(String, String)> = std::fs::read_dir(dir)
-        .expect("identities/")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .map(|p| {
-            let text = std::fs::read_to_string(&p).expect("readable catalogue file");
-            (p.display().to_string(), text)
-        })
-        .collect();
-    sources.sort();
+    let dir = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/identities"));
+    let mut sources = read_sources(dir).expect("catalogue files");
     sources.push(("controls.toml".into(), CONTROLS.into()));
-    load_sources(&sources, registry().expect("registry")).expect("catalogue loads")
+    load_sources(&sources, registry().expect("registry")).expect("catalogue with controls loads")
 }
 
 fn proved(cat: &Catalogue, id: &str) -> (bool, String) {

@@ -33,6 +33,20 @@ use toml::Spanned;
 /// Loads a catalogue: every `*.toml` file of the directory `path` (sorted by name), or
 /// the one file `path`.  A catalogue without claims is an error.
 pub fn load_dir(path: &Path, registry: Registry) -> Result<Catalogue, LoadError> {
+    let sources = read_sources(path)?;
+    let cat = load_sources(&sources, registry)?;
+    if cat.claims.is_empty() {
+        return Err(LoadError::whole(
+            path.display().to_string(),
+            "the catalogue has no claims",
+        ));
+    }
+    Ok(cat)
+}
+
+/// The `(file name, text)` of every `*.toml` file of the directory `path` (sorted by
+/// name), or of the one file `path`, for [`load_sources`].
+pub fn read_sources(path: &Path) -> Result<Vec<(String, String)>, LoadError> {
     let shown = path.display().to_string();
     let files: Vec<PathBuf> = if path.is_file() {
         vec![path.to_path_buf()]
@@ -57,11 +71,7 @@ pub fn load_dir(path: &Path, registry: Registry) -> Result<Catalogue, LoadError>
         let text = source::utf8(&name, bytes)?;
         sources.push((name, text));
     }
-    let cat = load_sources(&sources, registry)?;
-    if cat.claims.is_empty() {
-        return Err(LoadError::whole(shown, "the catalogue has no claims"));
-    }
-    Ok(cat)
+    Ok(sources)
 }
 
 /// The catalogue being assembled from its files.
