@@ -190,6 +190,10 @@ where
     prove_components(opts, title, |r| Ok(vec![build(r)?]))
 }
 
+/// The start of the message of [`AlgebraError::Capacity`], as it reads when the error
+/// reached the build only as text.
+const CAPACITY_MESSAGE: &str = "too many symbols";
+
 /// [`prove_identity`] for several components (a vector or matrix identity): proved
 /// when every component's normal form is 0.
 pub fn prove_components<F>(opts: RingOptions, title: &str, build: F) -> Proof
@@ -205,8 +209,14 @@ where
         let ring = Ring::new(opts.clone());
         let built = build(&ring);
         let wanted = ring.state().rebase_wanted;
-        let capacity = matches!(built, Err(AlgebraError::Capacity(_)))
+        let typed = matches!(built, Err(AlgebraError::Capacity(_)))
             || matches!(ring.error(), Some(AlgebraError::Capacity(_)));
+        // a capacity error that reached the build only as text: a rebase comes first
+        // (it may need fewer symbols), more room only if none is wanted
+        let as_text = !wanted
+            && ring.state().capacity_hit
+            && matches!(&built, Err(e) if e.to_string().contains(CAPACITY_MESSAGE));
+        let capacity = typed || as_text;
         if capacity && grows < 3 {
             grows += 1;
             opts.max_roots *= 2;

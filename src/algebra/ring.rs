@@ -149,6 +149,9 @@ pub(crate) struct State {
     pub opaque_calls: std::collections::BTreeMap<String, Val>,
     /// Values of implicitly defined functions at given arguments (see [`Ring::remember`]).
     pub implicit_values: std::collections::BTreeMap<String, ImplicitValue>,
+    /// A symbol or root could not be added for lack of room (the build may have
+    /// recovered, or reported it as a message).
+    pub capacity_hit: bool,
     /// Symbols whose sn, cn, dn at a modulus are known (see [`Ring::prescribe_sncndn`]).
     pub prescribed: Vec<Prescription>,
     /// The arguments of opaque calls, by the field variable of the call's symbol.
@@ -215,6 +218,7 @@ impl Ring {
             implicit_values: std::collections::BTreeMap::new(),
             coordinates: None,
             prescribed: Vec::new(),
+            capacity_hit: false,
             opaque_args: std::collections::BTreeMap::new(),
         };
         Ring {
@@ -367,39 +371,29 @@ impl Ring {
     }
 
     pub(crate) fn var_sym(&self, j: usize) -> Sym {
-        let (p, values, name) = {
+        let (values, name) = {
             let st = self.state();
-            let idx = self.inner.kvar(j);
-            (
-                Poly::var(&self.inner.ctx, idx),
-                st.vars[j].values.clone(),
-                st.vars[j].name.clone(),
-            )
+            (st.vars[j].values.clone(), st.vars[j].name.clone())
         };
-        let val = Val {
-            num: p,
-            den: Poly::from_i64(&self.inner.ctx, 1),
-            sh: Shadow::leaf(values),
-        };
-        Sym::from_val(self, val, Some(Node::symbol(&name)))
+        self.leaf_sym(self.inner.kvar(j), values, &name)
     }
 
     pub(crate) fn root_sym(&self, i: usize) -> Sym {
-        let (p, values, name) = {
+        let (values, name) = {
             let st = self.state();
-            let idx = self.inner.root_var(i);
-            (
-                Poly::var(&self.inner.ctx, idx),
-                st.roots[i].values.clone(),
-                st.roots[i].name.clone(),
-            )
+            (st.roots[i].values.clone(), st.roots[i].name.clone())
         };
+        self.leaf_sym(self.inner.root_var(i), values, &name)
+    }
+
+    /// The symbol of polynomial variable `idx` with its values.
+    fn leaf_sym(&self, idx: usize, values: Vec<Complex>, name: &str) -> Sym {
         let val = Val {
-            num: p,
+            num: Poly::var(&self.inner.ctx, idx),
             den: Poly::from_i64(&self.inner.ctx, 1),
             sh: Shadow::leaf(values),
         };
-        Sym::from_val(self, val, Some(Node::symbol(&name)))
+        Sym::from_val(self, val, Some(Node::symbol(name)))
     }
 
     /// Sets where the following decisions come from (a definition or the claim).
@@ -589,14 +583,13 @@ impl Inner {
     ) -> AlgResult<usize> {
         let mut st = self.state();
         if st.vars.len() >= self.opts.max_vars {
-            // recorded in the ring too, so the prover restarts with more room even when
-            // the error reaches it only as a message
-            let e = AlgebraError::Capacity(format!(
+            // noted in the ring too, so the prover restarts with more room when the
+            // error reaches it only as a message
+            st.capacity_hit = true;
+            return Err(AlgebraError::Capacity(format!(
                 "more than {} field variables (adding {name})",
                 self.opts.max_vars
-            ));
-            st.error.get_or_insert_with(|| e.clone());
-            return Err(e);
+            )));
         }
         st.vars.push(VarInfo { name, kind, values });
         Ok(st.vars.len() - 1)
@@ -613,10 +606,11 @@ impl Inner {
         let mut st = self.state();
         let i = st.roots.len();
         if i >= self.opts.max_roots {
-            let e =
-                AlgebraError::Capacity(format!("more than {} square roots", self.opts.max_roots));
-            st.error.get_or_insert_with(|| e.clone());
-            return Err(e);
+            st.capacity_hit = true;
+            return Err(AlgebraError::Capacity(format!(
+                "more than {} square roots",
+                self.opts.max_roots
+            )));
         }
         let r = Poly::var(&self.ctx, self.root_var(i));
         let relation = Arc::new(r.mul(&r).sub(&radicand));
