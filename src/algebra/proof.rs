@@ -194,6 +194,18 @@ where
 /// reached the build only as text.
 const CAPACITY_MESSAGE: &str = "too many symbols";
 
+/// Did the build run out of symbols or roots?  A capacity error that reached the build
+/// only as text counts when no rebase is wanted (a rebase comes first: it may need
+/// fewer symbols).
+fn needs_room<T>(ring: &Ring, built: &AlgResult<T>, wanted: bool) -> bool {
+    let typed = matches!(built, Err(AlgebraError::Capacity(_)))
+        || matches!(ring.error(), Some(AlgebraError::Capacity(_)));
+    let as_text = !wanted
+        && ring.state().capacity_hit
+        && matches!(built, Err(e) if e.to_string().contains(CAPACITY_MESSAGE));
+    typed || as_text
+}
+
 /// [`prove_identity`] for several components (a vector or matrix identity): proved
 /// when every component's normal form is 0.
 pub fn prove_components<F>(opts: RingOptions, title: &str, build: F) -> Proof
@@ -209,14 +221,7 @@ where
         let ring = Ring::new(opts.clone());
         let built = build(&ring);
         let wanted = ring.state().rebase_wanted;
-        let typed = matches!(built, Err(AlgebraError::Capacity(_)))
-            || matches!(ring.error(), Some(AlgebraError::Capacity(_)));
-        // a capacity error that reached the build only as text: a rebase comes first
-        // (it may need fewer symbols), more room only if none is wanted
-        let as_text = !wanted
-            && ring.state().capacity_hit
-            && matches!(&built, Err(e) if e.to_string().contains(CAPACITY_MESSAGE));
-        let capacity = typed || as_text;
+        let capacity = needs_room(&ring, &built, wanted);
         if capacity && grows < 3 {
             grows += 1;
             opts.max_roots *= 2;
