@@ -109,23 +109,42 @@ impl Inner {
         } else {
             a.sh.add(&b.sh)
         };
-        let (n, d) = if a.den == b.den {
-            let n = if sub {
-                a.num.sub(&b.num)
-            } else {
-                a.num.add(&b.num)
-            };
-            (n, a.den.clone())
+        let combine = |l: Poly, r: Poly| if sub { l.sub(&r) } else { l.add(&r) };
+        if a.den == b.den {
+            let n = combine(a.num.clone(), b.num.clone());
+            let (num, den) = self.normalise(n, a.den.clone())?;
+            return Ok(Val { num, den, sh });
+        }
+        // Henrici: with g = gcd(D₁, D₂), the sum N/(D₁·D₂/g) can only cancel
+        // factors of g, because N₁/D₁ and N₂/D₂ are in lowest terms.
+        let g = a.den.gcd(&b.den)?;
+        let ad = exact(&a.den, &g)?;
+        let bd = exact(&b.den, &g)?;
+        let n = combine(a.num.mul(&bd), b.num.mul(&ad));
+        let d = a.den.mul(&bd);
+        let (num, den) = if g.is_one() {
+            self.lowest_terms(n, d)?
         } else {
-            let g = a.den.gcd(&b.den)?;
-            let ad = exact(&a.den, &g)?;
-            let bd = exact(&b.den, &g)?;
-            let l = a.num.mul(&bd);
-            let r = b.num.mul(&ad);
-            (if sub { l.sub(&r) } else { l.add(&r) }, a.den.mul(&bd))
+            let common = if n.is_zero() { g } else { n.gcd(&g)? };
+            self.lowest_terms(exact(&n, &common)?, exact(&d, &common)?)?
         };
-        let (num, den) = self.normalise(n, d)?;
         Ok(Val { num, den, sh })
+    }
+
+    /// `num/den` already in lowest terms: checks the size bound and makes the
+    /// denominator's leading coefficient positive, without a gcd.
+    pub(crate) fn lowest_terms(&self, num: Poly, den: Poly) -> AlgResult<(Poly, Poly)> {
+        let size = num.len() + den.len();
+        if size > MAX_TERMS {
+            return Err(AlgebraError::TooLarge(size, MAX_TERMS));
+        }
+        if num.is_zero() {
+            return Ok((num, Poly::from_i64(&self.ctx, 1)));
+        }
+        if den.leading_coefficient() < 0 {
+            return Ok((num.neg(), den.neg()));
+        }
+        Ok((num, den))
     }
 
     pub(crate) fn v_mul(&self, a: &Val, b: &Val) -> AlgResult<Val> {
@@ -137,8 +156,12 @@ impl Inner {
         let reduced = self.reduce(prod.clone());
         let changed = reduced != prod;
         let den = ad.mul(&bd);
-        let (num, den) = if changed || !den.is_one() {
+        // Crosswise cancellation leaves the product in lowest terms unless the
+        // root relations changed the numerator.
+        let (num, den) = if changed {
             self.normalise(reduced, den)?
+        } else if !den.is_one() {
+            self.lowest_terms(reduced, den)?
         } else {
             (reduced, den)
         };
@@ -217,7 +240,7 @@ impl Inner {
                 den: b.num.clone(),
                 sh: b.sh.clone(),
             };
-            let (n, d) = self.normalise(flipped.num, flipped.den)?;
+            let (n, d) = self.lowest_terms(flipped.num, flipped.den)?;
             self.v_mul(
                 a,
                 &Val {

@@ -71,10 +71,19 @@ impl Gamma {
         mhat: &Vec3<R>,
         h: &R,
     ) -> Result<R, ModelError> {
-        Ok(self.eval_grad(inertia, m, mhat, h)?.0)
+        let one = h.one();
+        let s = m.clone() + mhat.clone();
+        let four = one.from_i64(4);
+        match self {
+            Gamma::G0 => Ok(one),
+            Gamma::G1 => Ok(four * m.norm2() / s.norm2()),
+            Gamma::G2 => Ok(four * inertia.energy(m) / s.dot(&inertia.omega(&s))),
+            Gamma::Vm => Ok(one.from_i64(2) / (one + vm_root(inertia, &s, h)?)),
+        }
     }
 
-    /// γ and its gradient with respect to `M̂`.
+    /// γ and its gradient with respect to `M̂` (γ alone is [`Gamma::eval`], which the
+    /// symbolic backend uses: it spares the gradient's divisions).
     pub fn eval_grad<R: Real>(
         &self,
         inertia: &Inertia<R>,
@@ -84,41 +93,38 @@ impl Gamma {
     ) -> Result<(R, Vec3<R>), ModelError> {
         let one = h.one();
         let s = m.clone() + mhat.clone();
-        let four = one.from_i64(4);
-        match self {
-            Gamma::G0 => Ok((one.clone(), Vec3::zeros(&one))),
-            Gamma::G1 => {
-                let n = s.norm2();
-                let g = four * m.norm2() / n.clone();
-                let grad = s.scale(&(-(g.clone() * one.from_i64(2)) / n));
-                Ok((g, grad))
-            }
+        let g = self.eval(inertia, m, mhat, h)?;
+        let two = one.from_i64(2);
+        let grad = match self {
+            Gamma::G0 => Vec3::zeros(&one),
+            Gamma::G1 => s.scale(&(-(g.clone() * two) / s.norm2())),
             Gamma::G2 => {
                 let om = inertia.omega(&s);
                 let n = s.dot(&om);
-                let g = four * inertia.energy(m) / n.clone();
-                let grad = om.scale(&(-(g.clone() * one.from_i64(2)) / n));
-                Ok((g, grad))
+                om.scale(&(-(g.clone() * two) / n))
             }
             Gamma::Vm => {
-                let om = inertia.omega(&s);
-                let h2 = h.sqr();
-                let q = one.clone() - h2.clone() * om.norm2() / four.clone();
-                if q < one.zero() || !q.is_finite() {
-                    return Err(ModelError::ImaginarySqrt(q.to_f64()));
-                }
-                let r = q.sqrt();
-                let g = one.from_i64(2) / (one.clone() + r.clone());
-                let om2 = inertia.omega(&om);
-                let grad = if r.is_zero() {
+                let r = vm_root(inertia, &s, h)?;
+                if r.is_zero() {
                     Vec3::zeros(&one)
                 } else {
-                    om2.scale(&(g.sqr() * h2 / (one.from_i64(8) * r)))
-                };
-                Ok((g, grad))
+                    let om2 = inertia.omega(&inertia.omega(&s));
+                    om2.scale(&(g.sqr() * h.sqr() / (one.from_i64(8) * r)))
+                }
             }
-        }
+        };
+        Ok((g, grad))
     }
+}
+
+/// `√(1 − h²|ΩS|²/4)`, the root in (gammaMV); an error where the radicand is negative.
+fn vm_root<R: Real>(inertia: &Inertia<R>, s: &Vec3<R>, h: &R) -> Result<R, ModelError> {
+    let one = h.one();
+    let q = one.clone() - h.sqr() * inertia.omega(s).norm2() / one.from_i64(4);
+    if q < one.zero() || !q.is_finite() {
+        return Err(ModelError::ImaginarySqrt(q.to_f64()));
+    }
+    Ok(q.sqrt())
 }
 
 /// The residual of (impl spec 1–3): `M̂ − M − ¼hγ(M,M̂,h)·f(M+M̂)`, with `f` the
