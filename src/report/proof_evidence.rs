@@ -1,5 +1,5 @@
-//! The symbolic proof of a claim as shown in the reports: what it rests on (symbols,
-//! relations, assumptions, cases), or why there is none.  Times are left out, so the
+//! The symbolic proof of a claim as shown in the reports: its steps and what it rests on
+//! (symbols, relations, assumptions, cases), or why there is none.  Times are left out, so the
 //! reports stay byte-identical from run to run.
 
 use crate::claims::verdict::ProofInfo;
@@ -29,6 +29,9 @@ pub fn proof_block(p: &ProofInfo) -> String {
             let _ = writeln!(s, "- {title}: {}", shown.join("; "));
         }
     };
+    if !p.notes.is_empty() {
+        let _ = writeln!(s, "- steps: {}", p.notes.join("; "));
+    }
     items(&mut s, "cases", &p.cases);
     items(&mut s, "symbols", &p.symbols);
     items(&mut s, "relations", &p.relations);

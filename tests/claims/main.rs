@@ -5,4 +5,5 @@ mod claims_engine;
 mod coverage;
 mod fuzz_claims;
 mod implicit_proofs;
+mod proof_hints;
 mod verdict_rules;

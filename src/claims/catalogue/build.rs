@@ -3,11 +3,11 @@
 //! outer claim's values through [`inherit`]), then one function per kind for the
 //! kind-specific fields.  Every missing-field error points at its table.
 
-use super::claim::{Body, Claim, ExactSpec, PExpr};
+use super::claim::{Body, Claim, ExactSpec, Hint, PExpr};
 use super::defaults::{of, pick, pick_count};
 use super::fields::{bindings, name_field, pexpr, pexprs, var_list};
 use super::raw::ClaimToml;
-use super::source::{LoadError, Located, SourceFile};
+use super::source::{LoadError, Located, Origin, SourceFile};
 use crate::claims::kind::{Form, Kind, Verdict};
 use std::sync::Arc;
 use toml::Spanned;
@@ -98,6 +98,7 @@ pub fn build_claim(
     let mut claim = shell(&tb)?;
     claim.exact = exact(&tb, claim.kind)?;
     claim.body = body(&tb, &claim)?;
+    claim.hint = hint(&tb, &claim)?;
     Ok(claim)
 }
 
@@ -217,7 +218,38 @@ fn shell(tb: &Table<'_>) -> Result<Claim, LoadError> {
         environment: t.environment.as_ref().map(|s| Located::of(tb.file, s)),
         role: t.role.as_ref().map(|s| Located::of(tb.file, s)),
         uses: t.uses.iter().map(|s| Located::of(tb.file, s)).collect(),
+        hint: None,
     })
+}
+
+/// `hint`: identity claims only, naming one of the claim's own `let`s.
+fn hint(tb: &Table<'_>, claim: &Claim) -> Result<Option<Hint>, LoadError> {
+    let Some(h) = &tb.t.hint else {
+        return Ok(None);
+    };
+    if claim.kind != Kind::Identity {
+        return Err(tb.at(h, "a proof hint is only read for identity claims"));
+    }
+    let value = h.get_ref().value.get_ref();
+    if !claim
+        .lets
+        .iter()
+        .any(|b| &b.name == value && b.params.is_none())
+    {
+        return Err(tb.at(
+            &h.get_ref().value,
+            format!("the hint's value '{value}' is not a let of this claim"),
+        ));
+    }
+    let multipliers = pexprs(tb.file, &h.get_ref().multipliers)?;
+    if multipliers.is_empty() {
+        return Err(tb.at(h, "a proof hint needs at least one multiplier"));
+    }
+    Ok(Some(Hint {
+        value: value.clone(),
+        multipliers,
+        origin: Origin::of(tb.file, &h.get_ref().value),
+    }))
 }
 
 /// `exact = true`: identities only.

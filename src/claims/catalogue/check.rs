@@ -208,6 +208,9 @@ impl Checker<'_> {
             Body::Identity { lhs, rhs } => {
                 let s = lets(sampled)?;
                 scale(&s)?;
+                for q in c.hint.iter().flat_map(|h| &h.multipliers) {
+                    self.pexpr(q, &s)?;
+                }
                 self.pexpr(lhs, &s)?;
                 self.pexpr(rhs, &s)
             }

@@ -78,6 +78,25 @@ pub struct ExactSpec {
     pub samples: usize,
 }
 
+/// A proof hint (identity claims): the paper's multipliers of the defining equations.
+///
+/// The `let` named `value` is a call of an implicit function (a step of a map).  With
+/// the hint, the prover does not parametrize that call: its value becomes unknowns
+/// `M̂`, `R` are the function's equations at `M̂`, and the claim is proved when every
+/// component `(lhs − rhs)ⱼ − ⟨qⱼ, R⟩` has the normal form 0 (ideal membership with the
+/// given multipliers `qⱼ`).  A wrong hint leaves a remainder: the claim is then not
+/// proved, whatever other route might have served.
+#[derive(Debug, Clone)]
+pub struct Hint {
+    /// The `let` that holds the implicit call.
+    pub value: String,
+    /// One multiplier per component of `lhs − rhs`, each with as many components as
+    /// the equations.
+    pub multipliers: Vec<PExpr>,
+    /// Where the hint is.
+    pub origin: Origin,
+}
+
 /// A sampling domain.
 #[derive(Debug, Clone)]
 pub struct Domain {
@@ -142,6 +161,8 @@ pub struct Claim {
     pub role: Option<Located>,
     /// Ids of the claims this one uses.
     pub uses: Vec<Located>,
+    /// A proof hint (identity claims only).
+    pub hint: Option<Hint>,
 }
 
 /// The whole catalogue.

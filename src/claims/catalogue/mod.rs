@@ -16,7 +16,7 @@ mod raw;
 pub mod source;
 pub mod structure;
 
-pub use claim::{Body, Catalogue, Claim, Domain, ExactSpec, PExpr};
+pub use claim::{Body, Catalogue, Claim, Domain, ExactSpec, Hint, PExpr};
 pub use source::{LoadError, Located, Origin, SourceFile};
 
 use crate::claims::ast::Binding;

@@ -124,4 +124,15 @@ pub struct ClaimToml {
     pub role: Option<Spanned<String>>,
     #[serde(default)]
     pub uses: Vec<Spanned<String>>,
+    pub hint: Option<Spanned<HintToml>>,
+}
+
+/// `hint = { value = "…", multipliers = [...] }`: a proof hint of an identity claim.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HintToml {
+    /// The `let` whose body is the implicit call.
+    pub value: Spanned<String>,
+    /// One multiplier per component of `lhs − rhs`.
+    pub multipliers: Vec<Spanned<String>>,
 }

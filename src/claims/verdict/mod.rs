@@ -15,6 +15,7 @@ pub mod context;
 pub mod exact;
 pub mod existence;
 pub mod failure;
+pub mod hinted;
 pub mod identity;
 pub mod independence;
 pub mod ladder;

@@ -47,7 +47,7 @@ use crate::algebra::{
 };
 use crate::claims::ast::{BinOp, Expr, ExprKind};
 use crate::claims::builtins::Primitive;
-use crate::claims::catalogue::PExpr;
+use crate::claims::catalogue::{Hint, PExpr};
 use crate::claims::eval::Evaluator;
 use crate::claims::kind::Verdict;
 use crate::claims::sampler::{Point, Stream};
@@ -270,7 +270,8 @@ fn bind_variables<'c>(
     roles: &[(String, Role, &PExpr)],
     points: &[Point],
     plans: &[Plan<'c>],
-) -> AlgResult<(Evaluator<'c, Sym>, Vec<Sym>)> {
+    hint: Option<&Hint>,
+) -> AlgResult<Bound<'c>> {
     let mut ev = Evaluator::new(&ctx.cat.registry, ring.integer(0));
     let fail = |m: String| AlgebraError::Domain(m);
     for (name, role, def) in roles {
@@ -294,11 +295,31 @@ fn bind_variables<'c>(
         recompute(&mut ev, roles)?;
         declare_coordinates(&ev, ring, roles, &replaced, params)?;
     }
+    let unknown = match hint {
+        Some(h) => Some(super::hinted::unknown(ctx, ring, h, points)?),
+        None => None,
+    };
     for b in &ctx.claim.lets {
-        ev.bind_let(b)
-            .map_err(|e| fail(format!("let {}: {}", b.name, e.message)))?;
+        match (hint, &unknown) {
+            (Some(h), Some(v)) if h.value == b.name => ev.bind(&b.name, v.clone()),
+            _ => ev
+                .bind_let(b)
+                .map_err(|e| fail(format!("let {}: {}", b.name, e.message)))?,
+        }
     }
-    Ok((ev, checks))
+    Ok(Bound {
+        ev,
+        checks,
+        unknown,
+    })
+}
+
+/// The claim's variables bound in the prover: the evaluator, the equations the
+/// parametrizations must satisfy, and the unknown value of a hinted call.
+struct Bound<'c> {
+    ev: Evaluator<'c, Sym>,
+    checks: Vec<Sym>,
+    unknown: Option<Value<Sym>>,
 }
 
 /// Re-evaluates the computed variables after free ones were replaced.
@@ -699,12 +720,27 @@ fn prove_case(
         base_hints,
         ..RingOptions::default()
     };
+    let hint = ctx.claim.hint.as_ref();
     let mut exprs: Vec<&Expr> = vec![&sides_of.0.expr, &sides_of.1.expr];
-    exprs.extend(ctx.claim.lets.iter().map(|b| &b.body));
+    // a hinted call stays unknown: it is not parametrized
+    exprs.extend(
+        ctx.claim
+            .lets
+            .iter()
+            .filter(|b| hint.is_none_or(|h| h.value != b.name))
+            .map(|b| &b.body),
+    );
     let plans = plans(ctx, roles, &exprs);
     prove_components(opts, &ctx.claim.id, |ring| {
-        let (ev, checks) = bind_variables(ctx, ring, roles, points, &plans)?;
-        let mut pairs = sides(&ev, sides_of.0, sides_of.1)?;
+        let Bound {
+            ev,
+            checks,
+            unknown,
+        } = bind_variables(ctx, ring, roles, points, &plans, hint)?;
+        let mut pairs = match (hint, &unknown) {
+            (Some(h), Some(v)) => super::hinted::sides(ctx, &ev, h, v, sides_of)?,
+            _ => sides(&ev, sides_of.0, sides_of.1)?,
+        };
         let zero = ev.like().zero();
         pairs.extend(checks.into_iter().map(|c| (c, zero.clone())));
         Ok(pairs)
@@ -781,6 +817,7 @@ fn merge(info: &mut ProofInfo, key: &[String], p: Proof) {
         p.symbols.iter().map(|(n, w)| format!("{n}: {w}")).collect(),
     );
     add(&mut info.relations, p.relations.clone());
+    add(&mut info.notes, p.notes.clone());
     add(
         &mut info.assumptions,
         p.assumptions.iter().map(|a| a.statement.clone()).collect(),
