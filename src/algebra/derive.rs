@@ -12,12 +12,13 @@
 //!   `∂Z/∂k = k s c d/k'² − k c² Z/k'² + k b`, `Z' = k² c² b' + ∂Z/∂k · k'(x)`;
 //! * `K`, `K'`: 0 when the modulus does not depend on `x` (otherwise an error).
 
-use super::certificate::{Node, Op};
 use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
+use super::node::{Node, Op};
 use super::ring::{Ring, VarKind};
 use super::shadow::Shadow;
-use super::sym::{Sym, Val};
+use super::sym::Sym;
+use super::val::Val;
 use crate::numbers::Dual;
 use crate::special::sncndn;
 use rug::{Complex, Float, Rational};

@@ -17,13 +17,14 @@
 //! DLMF 22.5.1 (`sn(K/2) = (1+k')^{-1/2}`, `sn(iK'/2) = i k^{-1/2}`, …).  Every result is
 //! checked against a direct numeric evaluation at the domain points.
 
-use super::certificate::{Node, Op};
 use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
+use super::node::{Node, Op};
 use super::ring::{Origin, Ring, VarKind};
 use super::roots::Prescribed;
 use super::shadow::Shadow;
-use super::sym::{Sym, Val};
+use super::sym::Sym;
+use super::val::Val;
 use crate::special::{ellipk, ellipkp, sncndn, sncndn_complex};
 use rug::{Complex, Float, Integer, Rational};
 use std::collections::HashMap;

@@ -94,6 +94,7 @@ pub mod elliptic;
 mod error;
 pub mod flint;
 mod lattice;
+mod node;
 mod opaque;
 mod order;
 mod proof;
@@ -102,6 +103,7 @@ pub mod roots;
 mod scalar;
 pub mod shadow;
 mod sym;
+mod val;
 
 pub use elliptic::BaseHint;
 pub use error::{AlgResult, AlgebraError};

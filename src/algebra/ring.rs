@@ -9,12 +9,13 @@
 //! transcendental symbols such as `sn` of a base argument) is variable `R + j`.  The
 //! leading monomial of `rᵢ² − aᵢ` is then `rᵢ²`, and these are pairwise coprime.
 
-use super::certificate::Node;
 use super::error::{AlgResult, AlgebraError};
 use super::flint::{Ctx, Poly};
+use super::node::Node;
 use super::roots::FactorBasis;
 use super::shadow::Shadow;
-use super::sym::{Sym, Val};
+use super::sym::Sym;
+use super::val::Val;
 use rug::{Complex, Float, Rational};
 use std::sync::{Arc, Mutex, MutexGuard};
 

@@ -17,9 +17,11 @@
 
 use super::error::{AlgResult, AlgebraError};
 use super::flint::{factor_integer, Poly};
+use super::node::Node;
 use super::ring::Ring;
 use super::shadow::Shadow;
-use super::sym::{Sym, Val};
+use super::sym::Sym;
+use super::val::Val;
 use rug::{Complex, Integer};
 
 /// Values a new root must take at the domain points (instead of the principal branch),
@@ -523,10 +525,7 @@ impl Sym {
                     .map(|&s| Complex::with_val(ring.precision(), s))
                     .collect::<Vec<_>>(),
             );
-            let node = self
-                .node
-                .as_ref()
-                .map(|n| super::certificate::Node::sqrt(n, &cand, ring, 1));
+            let node = self.node.as_ref().map(|n| Node::sqrt(n, &cand, 1));
             return Ok(Sym::from_val(ring, cand, node));
         }
         let sigma = ring.decide_sign(&target, &cand.sh, &what)?;
@@ -540,7 +539,7 @@ impl Sym {
         let node = self
             .node
             .as_ref()
-            .map(|n| super::certificate::Node::sqrt(n, &result.val, ring, sigma));
+            .map(|n| Node::sqrt(n, &result.val, sigma));
         Ok(result.with_node(node))
     }
 

@@ -8,11 +8,12 @@
 //! Over the field ℚ(x) and roots of pairwise independent radicands the form is unique,
 //! so a value is zero exactly when `N = 0`.
 
-use super::certificate::{Node, Op};
 use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
+use super::node::{Node, Op};
 use super::ring::{Inner, Ring, VarKind};
 use super::shadow::Shadow;
+use super::val::Val;
 use rug::Complex;
 use std::sync::Arc;
 
@@ -20,15 +21,6 @@ use std::sync::Arc;
 /// it a proof stops with [`AlgebraError::TooLarge`] (such values come from iterations
 /// written out in a claim, such as Newton steps, not from the paper's identities).
 pub const MAX_TERMS: usize = 8_000;
-
-/// The exact part of a value with its shadow, without the ring handle (so the symbol
-/// table can store values without reference cycles).
-#[derive(Clone, Debug)]
-pub(crate) struct Val {
-    pub num: Poly,
-    pub den: Poly,
-    pub sh: Shadow,
-}
 
 /// An exact element of a [`Ring`]'s tower, with its numeric values at the domain points.
 ///
