@@ -19,6 +19,7 @@
 
 use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
+use super::lattice::{lattice_basis, solve};
 use super::node::{Node, Op};
 use super::ring::{Origin, Ring, VarKind};
 use super::roots::Prescribed;
@@ -84,59 +85,6 @@ fn pad(v: &mut Vec<Rational>, n: usize) {
     while v.len() < n {
         v.push(Rational::new());
     }
-}
-
-/// Solves `v = Σ nⱼ bⱼ` over ℚ (the bases are independent); `None` outside their span.
-pub(crate) fn solve(bases: &[Vec<Rational>], v: &[Rational]) -> Option<Vec<Rational>> {
-    let m = bases.len();
-    let n = bases
-        .iter()
-        .map(|b| b.len())
-        .max()
-        .unwrap_or(0)
-        .max(v.len());
-    // rows: directions; columns: bases, then v
-    let mut a: Vec<Vec<Rational>> = (0..n)
-        .map(|i| {
-            let mut row: Vec<Rational> = bases
-                .iter()
-                .map(|b| b.get(i).cloned().unwrap_or_default())
-                .collect();
-            row.push(v.get(i).cloned().unwrap_or_default());
-            row
-        })
-        .collect();
-    let mut piv = Vec::new();
-    let mut r = 0;
-    for c in 0..m {
-        let Some(p) = (r..n).find(|&i| a[i][c] != 0) else {
-            continue;
-        };
-        a.swap(r, p);
-        let inv = Rational::from(1) / a[r][c].clone();
-        for x in a[r].iter_mut() {
-            *x *= &inv;
-        }
-        let pivot_row = a[r].clone();
-        for (i, row) in a.iter_mut().enumerate() {
-            if i != r && row[c] != 0 {
-                let f = row[c].clone();
-                for (x, p) in row.iter_mut().zip(&pivot_row) {
-                    *x -= Rational::from(&f * p);
-                }
-            }
-        }
-        piv.push(c);
-        r += 1;
-    }
-    if a[r..].iter().any(|row| row[m] != 0) {
-        return None;
-    }
-    let mut x = vec![Rational::new(); m];
-    for (i, &c) in piv.iter().enumerate() {
-        x[c] = a[i][m].clone();
-    }
-    Some(x)
 }
 
 impl Table {
@@ -440,7 +388,7 @@ impl Ring {
             for r in rows.iter_mut() {
                 pad(r, n);
             }
-            let basis = super::lattice::lattice_basis(&rows);
+            let basis = lattice_basis(&rows);
             let bases = basis
                 .iter()
                 .map(|row| {
@@ -780,27 +728,5 @@ impl Sym {
     /// `dn(self, k)`, see [`Sym::sncndn`].
     pub fn dn(&self, k: &Sym) -> AlgResult<Sym> {
         Ok(self.sncndn(k)?.2)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn q(n: i64, d: i64) -> Rational {
-        Rational::from((n, d))
-    }
-
-    #[test]
-    fn solve_in_span_and_outside() {
-        let b = vec![vec![q(1, 1), q(1, 1)], vec![q(1, 1), q(-1, 1)]];
-        let x = solve(&b, &[q(1, 1), q(0, 1)]).unwrap();
-        assert_eq!(x, vec![q(1, 2), q(1, 2)]);
-        let b1 = vec![vec![q(1, 1), q(0, 1)]];
-        assert!(solve(&b1, &[q(0, 1), q(1, 1)]).is_none());
-        assert_eq!(solve(&b1, &[q(3, 1), q(0, 1)]).unwrap(), vec![q(3, 1)]);
-        // a shorter right side means zeros in the directions it does not mention
-        let b2 = vec![vec![q(1, 1), q(1, 1)], vec![q(0, 1), q(1, 1)]];
-        assert_eq!(solve(&b2, &[q(1, 1)]).unwrap(), vec![q(1, 1), q(-1, 1)]);
     }
 }
