@@ -102,6 +102,7 @@ mod ring;
 pub mod roots;
 mod scalar;
 pub mod shadow;
+mod square_classes;
 mod sym;
 mod val;
 

@@ -12,8 +12,8 @@
 use super::error::{AlgResult, AlgebraError};
 use super::flint::{Ctx, Poly};
 use super::node::Node;
-use super::roots::FactorBasis;
 use super::shadow::Shadow;
+use super::square_classes::FactorBasis;
 use super::sym::Sym;
 use super::val::Val;
 use rug::{Complex, Float, Rational};
