@@ -21,10 +21,12 @@
 //! relations, and compares with the stated normal form; elliptic nodes are recomputed
 //! from the base symbols with its own addition formulae; the claim is checked last.
 
+use super::base_table::Table;
 use super::flint::Poly;
 use super::node::{Node, Op};
 use super::ring::Ring;
 use super::sym::Sym;
+use super::val::Val;
 
 use std::collections::HashMap;
 use std::fmt::Write;
@@ -181,7 +183,7 @@ impl Ring {
             .i_root
             .map_or("none".to_string(), |i| st.roots[i].name.clone());
         for (ti, t) in st.tables.iter().enumerate() {
-            out.push_str(&t.certificate_lines(ti, names, |j| self.inner.kvar(j), &i_name));
+            out.push_str(&table_lines(t, ti, names, |j| self.inner.kvar(j), &i_name));
         }
         for line in &st.derivation_lines {
             out.push_str(line);
@@ -189,4 +191,52 @@ impl Ring {
         }
         out
     }
+}
+
+/// The lines of elliptic table `ti`: its bases and, where used, its quarter-period data.
+fn table_lines(
+    table: &Table,
+    ti: usize,
+    names: &[String],
+    kvar: impl Fn(usize) -> usize,
+    i_name: &str,
+) -> String {
+    let nf = |v: &Val| format!("({})/({})", v.num.render(names), v.den.render(names));
+    let mut out = String::new();
+    for (bi, b) in table.bases.iter().enumerate() {
+        let z = b
+            .z_var
+            .map_or(String::new(), |j| format!(" z={}", names[kvar(j)]));
+        let _ = writeln!(
+            out,
+            "base b_{}_{} k={} s={} c={} d={} arg={}{z}",
+            ti + 1,
+            bi + 1,
+            nf(&table.k),
+            b.s_name,
+            nf(&b.c),
+            nf(&b.d),
+            nf(&b.arg)
+        );
+    }
+    let triple = |t: &Option<[Val; 3]>| {
+        t.as_ref().map_or("none".to_string(), |[s, c, d]| {
+            format!("[{}, {}, {}]", nf(s), nf(c), nf(d))
+        })
+    };
+    if table.kp.is_some() || table.half_kp.is_some() {
+        let kp = table.kp.as_ref().map_or("none".to_string(), nf);
+        let name = |v: Option<usize>| v.map_or("none".to_string(), |j| names[kvar(j)].clone());
+        let _ = writeln!(
+            out,
+            "period table {} k={} kp={kp} K={} Kp={} i={i_name} halfK={} halfiKp={}",
+            ti + 1,
+            nf(&table.k),
+            name(table.k_var),
+            name(table.kp_var),
+            triple(&table.half_k),
+            triple(&table.half_kp)
+        );
+    }
+    out
 }

@@ -17,6 +17,8 @@
 //! DLMF 22.5.1 (`sn(K/2) = (1+k')^{-1/2}`, `sn(iK'/2) = i k^{-1/2}`, …).  Every result is
 //! checked against a direct numeric evaluation at the domain points.
 
+use super::base_table::{Base, Table};
+pub use super::base_table::{BaseHint, DirKey, Terms};
 use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
 use super::lattice::{lattice_basis, solve};
@@ -28,52 +30,6 @@ use super::sym::Sym;
 use super::val::Val;
 use crate::special::{ellipk, ellipkp, sncndn, sncndn_complex};
 use rug::{Complex, Float, Integer, Rational};
-use std::collections::HashMap;
-use std::fmt::Write;
-
-/// The terms of a polynomial, as plain data (portable between rings built the same way).
-pub type Terms = Vec<(Integer, Vec<u64>)>;
-
-/// A direction: a monomial (exponent vector) over a primitive denominator.
-pub type DirKey = (Vec<u64>, Terms);
-
-/// Base arguments to start from, for a modulus (given by the terms of its normal form).
-#[derive(Clone, Debug, PartialEq)]
-pub struct BaseHint {
-    /// Numerator and denominator terms of the modulus.
-    pub modulus: (Terms, Terms),
-    /// Each base as rational coefficients over directions.
-    pub bases: Vec<Vec<(DirKey, Rational)>>,
-}
-
-#[derive(Clone, Debug)]
-pub(crate) struct Base {
-    vec: Vec<Rational>,
-    pub arg: Val,
-    /// `sn` of the base: its symbol, or the prescribed value.
-    pub s: Val,
-    pub s_name: String,
-    pub c: Val,
-    pub d: Val,
-    pub z_var: Option<usize>,
-}
-
-/// The elliptic data of one modulus.
-#[derive(Clone, Debug)]
-pub(crate) struct Table {
-    pub k: Val,
-    pub k2: Val,
-    pub kp: Option<Val>,
-    pub k_var: Option<usize>,
-    pub kp_var: Option<usize>,
-    dirs: Vec<(DirKey, Val)>,
-    pub bases: Vec<Base>,
-    pub triples: HashMap<Vec<i64>, [Val; 3]>,
-    pub half_k: Option<[Val; 3]>,
-    pub half_kp: Option<[Val; 3]>,
-    seen: Vec<Vec<Rational>>,
-    pending: Vec<Vec<(DirKey, Rational)>>,
-}
 
 fn terms(p: &Poly) -> Terms {
     let mut t = Vec::new();
@@ -84,80 +40,6 @@ fn terms(p: &Poly) -> Terms {
 fn pad(v: &mut Vec<Rational>, n: usize) {
     while v.len() < n {
         v.push(Rational::new());
-    }
-}
-
-impl Table {
-    fn new(k: Val, k2: Val) -> Table {
-        Table {
-            k,
-            k2,
-            kp: None,
-            k_var: None,
-            kp_var: None,
-            dirs: Vec::new(),
-            bases: Vec::new(),
-            triples: HashMap::new(),
-            half_k: None,
-            half_kp: None,
-            seen: Vec::new(),
-            pending: Vec::new(),
-        }
-    }
-
-    fn dir_index(&mut self, key: DirKey, val: impl FnOnce() -> Val) -> usize {
-        if let Some(i) = self.dirs.iter().position(|(k, _)| *k == key) {
-            return i;
-        }
-        self.dirs.push((key, val()));
-        self.dirs.len() - 1
-    }
-
-    pub fn certificate_lines(
-        &self,
-        ti: usize,
-        names: &[String],
-        kvar: impl Fn(usize) -> usize,
-        i_name: &str,
-    ) -> String {
-        let nf = |v: &Val| format!("({})/({})", v.num.render(names), v.den.render(names));
-        let mut out = String::new();
-        for (bi, b) in self.bases.iter().enumerate() {
-            let z = b
-                .z_var
-                .map_or(String::new(), |j| format!(" z={}", names[kvar(j)]));
-            let _ = writeln!(
-                out,
-                "base b_{}_{} k={} s={} c={} d={} arg={}{z}",
-                ti + 1,
-                bi + 1,
-                nf(&self.k),
-                b.s_name,
-                nf(&b.c),
-                nf(&b.d),
-                nf(&b.arg)
-            );
-        }
-        let triple = |t: &Option<[Val; 3]>| {
-            t.as_ref().map_or("none".to_string(), |[s, c, d]| {
-                format!("[{}, {}, {}]", nf(s), nf(c), nf(d))
-            })
-        };
-        if self.kp.is_some() || self.half_kp.is_some() {
-            let kp = self.kp.as_ref().map_or("none".to_string(), nf);
-            let name = |v: Option<usize>| v.map_or("none".to_string(), |j| names[kvar(j)].clone());
-            let _ = writeln!(
-                out,
-                "period table {} k={} kp={kp} K={} Kp={} i={i_name} halfK={} halfiKp={}",
-                ti + 1,
-                nf(&self.k),
-                name(self.k_var),
-                name(self.kp_var),
-                triple(&self.half_k),
-                triple(&self.half_kp)
-            );
-        }
-        out
     }
 }
 

@@ -87,6 +87,7 @@
 //! ```
 
 mod addition;
+mod base_table;
 pub mod certificate;
 mod coordinates;
 mod derive;

@@ -37,7 +37,7 @@ pub struct RingOptions {
     pub expand_named: bool,
     /// Base arguments of the elliptic functions to start from (see
     /// [`crate::algebra::prove_identity`], which fills this in on a restart).
-    pub base_hints: Vec<super::elliptic::BaseHint>,
+    pub base_hints: Vec<super::base_table::BaseHint>,
 }
 
 impl Default for RingOptions {
@@ -136,7 +136,7 @@ pub(crate) struct State {
     pub vars: Vec<VarInfo>,
     pub roots: Vec<RootInfo>,
     pub basis: FactorBasis,
-    pub tables: Vec<super::elliptic::Table>,
+    pub tables: Vec<super::base_table::Table>,
     pub assumptions: Vec<Assumption>,
     pub notes: Vec<String>,
     pub error: Option<AlgebraError>,
