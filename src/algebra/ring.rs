@@ -129,8 +129,22 @@ pub(crate) struct Prescription {
     pub why: String,
 }
 
+/// A value as the ring stores it: without the ring handle (see [`Val`]), with its
+/// derivation when the ring records certificates.
+pub(crate) type Stored = (Val, Option<Arc<Node>>);
+
 /// A remembered value of an implicit function: its shape and components.
-pub(crate) type ImplicitValue = (String, Vec<(Val, Option<Arc<Node>>)>);
+pub(crate) type ImplicitValue = (String, Vec<Stored>);
+
+/// A change of variables (module [`super::coordinates`]): the claim's variables as
+/// values in new indeterminates, the parameters, and the inverse Jacobian `D⁻¹` once
+/// computed.
+#[derive(Clone, Default)]
+pub(crate) struct Coordinates {
+    pub coords: Vec<Stored>,
+    pub params: Vec<Stored>,
+    pub inverse: Option<Vec<Vec<Stored>>>,
+}
 
 pub(crate) struct State {
     pub vars: Vec<VarInfo>,
@@ -158,7 +172,7 @@ pub(crate) struct State {
     /// The arguments of opaque calls, by the field variable of the call's symbol.
     pub opaque_args: std::collections::BTreeMap<usize, (String, Vec<Val>)>,
     /// The change of variables of a parametrization, for derivatives.
-    pub coordinates: Option<super::coordinates::Coordinates>,
+    pub coordinates: Option<Coordinates>,
 }
 
 pub(crate) struct Inner {
@@ -524,10 +538,7 @@ impl Ring {
     /// defined function at the arguments described by `key` (the function's name and
     /// the normal forms of its arguments), so that evaluating the call returns them.
     pub fn remember(&self, key: &str, shape: &str, values: &[Sym]) {
-        let vals = values
-            .iter()
-            .map(|v| (v.val.clone(), v.node.clone()))
-            .collect();
+        let vals = values.iter().map(Sym::stored).collect();
         self.state()
             .implicit_values
             .insert(key.to_string(), (shape.to_string(), vals));
@@ -536,10 +547,7 @@ impl Ring {
     /// The shape and values remembered for `key`, if any.
     pub fn recall(&self, key: &str) -> Option<(String, Vec<Sym>)> {
         let (shape, vals) = self.state().implicit_values.get(key).cloned()?;
-        let syms = vals
-            .into_iter()
-            .map(|(v, n)| Sym::from_val(self, v, n))
-            .collect();
+        let syms = vals.into_iter().map(|s| Sym::restored(self, s)).collect();
         Some((shape, syms))
     }
 }

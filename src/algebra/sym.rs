@@ -11,7 +11,7 @@
 use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
 use super::node::{Node, Op};
-use super::ring::{Inner, Ring, VarKind};
+use super::ring::{Inner, Ring, Stored, VarKind};
 use super::shadow::Shadow;
 use super::val::Val;
 use rug::Complex;
@@ -276,6 +276,16 @@ impl Sym {
             val,
             node,
         }
+    }
+
+    /// The value as the ring stores it (without the ring handle).
+    pub(crate) fn stored(&self) -> Stored {
+        (self.val.clone(), self.node.clone())
+    }
+
+    /// A stored value back on its ring.
+    pub(crate) fn restored(ring: &Ring, (val, node): Stored) -> Sym {
+        Sym::from_val(ring, val, node)
     }
 
     /// The ring of this value.
