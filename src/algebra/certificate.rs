@@ -24,7 +24,7 @@
 use super::base_table::Table;
 use super::flint::Poly;
 use super::node::{Node, Op};
-use super::ring::Ring;
+use super::ring::{describe_kind, Ring, VarKind};
 use super::sym::Sym;
 use super::val::Val;
 
@@ -33,8 +33,8 @@ use std::fmt::Write;
 use std::sync::Arc;
 
 /// A machine-readable tag of a field variable's kind.
-fn kind_tag(k: &super::ring::VarKind) -> &'static str {
-    use super::ring::VarKind::*;
+fn kind_tag(k: &VarKind) -> &'static str {
+    use VarKind::*;
     match k {
         Indeterminate => "indeterminate",
         Named(_) => "named",
@@ -159,9 +159,9 @@ impl Ring {
         let st = self.state();
         let mut out = String::new();
         for v in &st.vars {
-            let what = super::sym::describe_kind(&v.kind);
+            let what = describe_kind(&v.kind);
             let _ = writeln!(out, "field {} {}  # {what}", v.name, kind_tag(&v.kind));
-            if let super::ring::VarKind::Named(def) = &v.kind {
+            if let VarKind::Named(def) = &v.kind {
                 let _ = writeln!(
                     out,
                     "named {} = {}",

@@ -23,7 +23,7 @@ use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
 use super::lattice::{lattice_basis, solve};
 use super::node::{Node, Op};
-use super::ring::{Origin, Ring, VarKind};
+use super::ring::{Origin, Prescription, Ring, VarKind};
 use super::roots::Prescribed;
 use super::shadow::Shadow;
 use super::sym::Sym;
@@ -393,6 +393,34 @@ impl Ring {
             c: c.val,
             d: d.val,
             z_var: None,
+        });
+        Ok(())
+    }
+
+    /// Declares that the symbol `v` (a field variable, such as an opaque `F(asin x, k)`)
+    /// has `sn v = s`, `cn v = c`, `dn v = d` at modulus `k`: a base argument `±v` of
+    /// that modulus then takes these values instead of new symbols.
+    pub fn prescribe_sncndn(
+        &self,
+        v: &Sym,
+        k: &Sym,
+        s: &Sym,
+        c: &Sym,
+        d: &Sym,
+        why: &str,
+    ) -> AlgResult<()> {
+        let var = v
+            .as_field_var()
+            .ok_or_else(|| AlgebraError::Internal("prescribed sn of a non-symbol".into()))?;
+        let what = v.render_short(40);
+        self.state().prescribed.push(Prescription {
+            var,
+            k: k.val.clone(),
+            s: s.val.clone(),
+            c: c.val.clone(),
+            d: d.val.clone(),
+            what,
+            why: why.to_string(),
         });
         Ok(())
     }

@@ -105,6 +105,7 @@ mod scalar;
 pub mod shadow;
 mod square_classes;
 mod sym;
+mod symbols;
 mod val;
 
 pub use elliptic::BaseHint;

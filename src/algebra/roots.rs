@@ -487,6 +487,12 @@ impl Sym {
 }
 
 impl Ring {
+    /// The imaginary unit, a root symbol with `i² = −1` (shared by the whole ring).
+    pub fn i(&self) -> AlgResult<Sym> {
+        let m1 = self.integer(-1);
+        m1.sqrt()
+    }
+
     /// Signs σₚ with `target = σₚ · cand` at each point.
     fn pointwise_signs(&self, target: &Shadow, cand: &Shadow, what: &str) -> AlgResult<Vec<i32>> {
         let prec = self.precision();

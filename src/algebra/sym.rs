@@ -11,10 +11,10 @@
 use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
 use super::node::{Node, Op};
-use super::ring::{Inner, Ring, Stored, VarKind};
+use super::ring::{Inner, Ring, Stored};
 use super::shadow::Shadow;
 use super::val::Val;
-use rug::Complex;
+use rug::{Complex, Rational};
 use std::sync::Arc;
 
 /// The largest numerator plus denominator, in terms, that the prover works with; beyond
@@ -38,18 +38,6 @@ pub struct Sym {
 impl std::fmt::Debug for Sym {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "{}", self.render())
-    }
-}
-
-pub(crate) fn describe_kind(k: &VarKind) -> String {
-    match k {
-        VarKind::Indeterminate => "indeterminate".into(),
-        VarKind::Named(_) => "named quantity (free symbol)".into(),
-        VarKind::Sn { .. } => "sn of a base argument".into(),
-        VarKind::Zeta { .. } => "E(am u, k) - k'^2 u of a base argument".into(),
-        VarKind::QuarterK { .. } => "quarter period K(k)".into(),
-        VarKind::QuarterKp { .. } => "complementary quarter period K'(k)".into(),
-        VarKind::Opaque { .. } => "opaque symbol".into(),
     }
 }
 
@@ -468,6 +456,42 @@ impl Sym {
 }
 
 impl Ring {
+    /// The exact integer `n`.
+    pub fn integer(&self, n: i64) -> Sym {
+        self.rational(&Rational::from(n))
+    }
+
+    /// The exact rational `q`.
+    pub fn rational(&self, q: &Rational) -> Sym {
+        Sym::from_val(self, self.inner.const_val(q), Some(Node::constant(q)))
+    }
+
+    pub(crate) fn var_sym(&self, j: usize) -> Sym {
+        let (values, name) = {
+            let st = self.state();
+            (st.vars[j].values.clone(), st.vars[j].name.clone())
+        };
+        self.leaf_sym(self.inner.kvar(j), values, &name)
+    }
+
+    pub(crate) fn root_sym(&self, i: usize) -> Sym {
+        let (values, name) = {
+            let st = self.state();
+            (st.roots[i].values.clone(), st.roots[i].name.clone())
+        };
+        self.leaf_sym(self.inner.root_var(i), values, &name)
+    }
+
+    /// The symbol of polynomial variable `idx` with its values.
+    fn leaf_sym(&self, idx: usize, values: Vec<Complex>, name: &str) -> Sym {
+        let val = Val {
+            num: Poly::var(&self.inner.ctx, idx),
+            den: Poly::from_i64(&self.inner.ctx, 1),
+            sh: Shadow::leaf(values),
+        };
+        Sym::from_val(self, val, Some(Node::symbol(name)))
+    }
+
     /// A meaningless value (exact 0 with NaN shadows), returned after an error.
     pub(crate) fn nan(&self) -> Sym {
         let prec = self.precision();
