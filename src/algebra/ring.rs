@@ -194,7 +194,7 @@ pub(crate) struct Inner {
 }
 
 /// A tower of fields ℚ(x₁…xₙ)(r₁)…(rₘ), rᵢ² = aᵢ, with numeric shadows at domain
-/// points; the factory of [`Sym`] values.  Cloning gives another handle to the same
+/// points; the factory of [`Sym`](super::Sym) values.  Cloning gives another handle to the same
 /// ring.
 ///
 /// ```
