@@ -4,7 +4,8 @@
 
 use super::error::AlgResult;
 use super::ring::{Origin, Ring};
-use super::sym::{Sym, Val};
+use super::sym::Sym;
+use super::val::Val;
 use rug::Rational;
 
 /// The triple arithmetic of DLMF 22.8 and 22.4.3 on values.

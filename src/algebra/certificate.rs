@@ -21,88 +21,20 @@
 //! relations, and compares with the stated normal form; elliptic nodes are recomputed
 //! from the base symbols with its own addition formulae; the claim is checked last.
 
+use super::base_table::Table;
 use super::flint::Poly;
-use super::ring::Ring;
-use super::sym::{Sym, Val};
+use super::node::{Node, Op};
+use super::ring::{describe_kind, Ring, VarKind};
+use super::sym::Sym;
+use super::val::Val;
 
 use std::collections::HashMap;
 use std::fmt::Write;
 use std::sync::Arc;
 
-/// An operation of the derivation DAG.
-#[derive(Clone, Debug)]
-pub(crate) enum Op {
-    /// A symbol of the ring.
-    Symbol(String),
-    /// An exact rational constant.
-    Const(String),
-    Add,
-    Sub,
-    Mul,
-    Div,
-    Neg,
-    Pow(i32),
-    /// A square root with the sign chosen from the shadows.
-    Sqrt(i32),
-    /// `f` ∈ {sn, cn, dn} of `Σ nⱼ bⱼ + p·K/2 + q·iK'/2` of table `table`.
-    Elliptic {
-        f: &'static str,
-        table: usize,
-        combo: Vec<(usize, i64)>,
-        half_k: i64,
-        half_kp: i64,
-    },
-    /// The derivative with respect to an indeterminate.
-    Deriv(String),
-}
-
-/// A node of the derivation DAG: the operation, its arguments, and (for operations
-/// that reduce or introduce symbols) the normal form of the result.
-#[derive(Debug)]
-pub(crate) struct Node {
-    pub op: Op,
-    pub args: Vec<Arc<Node>>,
-    pub nf: Option<(Poly, Poly)>,
-}
-
-/// Dropping a long chain of nodes one by one (a recursive drop could overflow the
-/// stack on deep derivations).
-impl Drop for Node {
-    fn drop(&mut self) {
-        let mut stack = std::mem::take(&mut self.args);
-        while let Some(a) = stack.pop() {
-            if let Ok(mut inner) = Arc::try_unwrap(a) {
-                stack.append(&mut inner.args);
-            }
-        }
-    }
-}
-
-impl Node {
-    pub fn new(op: Op, args: Vec<Arc<Node>>) -> Arc<Node> {
-        Arc::new(Node { op, args, nf: None })
-    }
-    pub fn symbol(name: &str) -> Arc<Node> {
-        Node::new(Op::Symbol(name.to_string()), Vec::new())
-    }
-    pub fn constant(q: &rug::Rational) -> Arc<Node> {
-        Node::new(Op::Const(q.to_string()), Vec::new())
-    }
-    pub fn with_nf(op: Op, args: Vec<Arc<Node>>, v: &Val) -> Arc<Node> {
-        Arc::new(Node {
-            op,
-            args,
-            nf: Some((v.num.clone(), v.den.clone())),
-        })
-    }
-    pub fn sqrt(arg: &Arc<Node>, v: &Val, _ring: &Ring, sigma: i32) -> Arc<Node> {
-        Node::with_nf(Op::Sqrt(sigma), vec![arg.clone()], v)
-    }
-}
-
 /// A machine-readable tag of a field variable's kind.
-fn kind_tag(k: &super::ring::VarKind) -> &'static str {
-    use super::ring::VarKind::*;
+fn kind_tag(k: &VarKind) -> &'static str {
+    use VarKind::*;
     match k {
         Indeterminate => "indeterminate",
         Named(_) => "named",
@@ -227,9 +159,9 @@ impl Ring {
         let st = self.state();
         let mut out = String::new();
         for v in &st.vars {
-            let what = super::sym::describe_kind(&v.kind);
+            let what = describe_kind(&v.kind);
             let _ = writeln!(out, "field {} {}  # {what}", v.name, kind_tag(&v.kind));
-            if let super::ring::VarKind::Named(def) = &v.kind {
+            if let VarKind::Named(def) = &v.kind {
                 let _ = writeln!(
                     out,
                     "named {} = {}",
@@ -251,7 +183,7 @@ impl Ring {
             .i_root
             .map_or("none".to_string(), |i| st.roots[i].name.clone());
         for (ti, t) in st.tables.iter().enumerate() {
-            out.push_str(&t.certificate_lines(ti, names, |j| self.inner.kvar(j), &i_name));
+            out.push_str(&table_lines(t, ti, names, |j| self.inner.kvar(j), &i_name));
         }
         for line in &st.derivation_lines {
             out.push_str(line);
@@ -259,4 +191,52 @@ impl Ring {
         }
         out
     }
+}
+
+/// The lines of elliptic table `ti`: its bases and, where used, its quarter-period data.
+fn table_lines(
+    table: &Table,
+    ti: usize,
+    names: &[String],
+    kvar: impl Fn(usize) -> usize,
+    i_name: &str,
+) -> String {
+    let nf = |v: &Val| format!("({})/({})", v.num.render(names), v.den.render(names));
+    let mut out = String::new();
+    for (bi, b) in table.bases.iter().enumerate() {
+        let z = b
+            .z_var
+            .map_or(String::new(), |j| format!(" z={}", names[kvar(j)]));
+        let _ = writeln!(
+            out,
+            "base b_{}_{} k={} s={} c={} d={} arg={}{z}",
+            ti + 1,
+            bi + 1,
+            nf(&table.k),
+            b.s_name,
+            nf(&b.c),
+            nf(&b.d),
+            nf(&b.arg)
+        );
+    }
+    let triple = |t: &Option<[Val; 3]>| {
+        t.as_ref().map_or("none".to_string(), |[s, c, d]| {
+            format!("[{}, {}, {}]", nf(s), nf(c), nf(d))
+        })
+    };
+    if table.kp.is_some() || table.half_kp.is_some() {
+        let kp = table.kp.as_ref().map_or("none".to_string(), nf);
+        let name = |v: Option<usize>| v.map_or("none".to_string(), |j| names[kvar(j)].clone());
+        let _ = writeln!(
+            out,
+            "period table {} k={} kp={kp} K={} Kp={} i={i_name} halfK={} halfiKp={}",
+            ti + 1,
+            nf(&table.k),
+            name(table.k_var),
+            name(table.kp_var),
+            triple(&table.half_k),
+            triple(&table.half_kp)
+        );
+    }
+    out
 }

@@ -8,17 +8,18 @@
 //! once, by Gaussian elimination in the tower); once coordinates are declared, every
 //! derivative goes through them, so a derivative with respect to an indeterminate that
 //! a replacement depends on is never taken at fixed parameters by mistake.
+//! [`Sym::derivative`] is defined here for that reason: the chain rule through the
+//! coordinates once they are declared, else the derivation of module [`super::derive`].
 
 use super::error::{AlgResult, AlgebraError};
-use super::ring::Ring;
+use super::ring::{Coordinates, Ring, Stored};
 use super::sym::Sym;
 
 /// The coordinates `x` as values in the parameters `p`, and `D⁻¹` once computed.
-#[derive(Clone, Default)]
-pub(crate) struct Coordinates {
-    pub coords: Vec<Sym>,
-    pub params: Vec<Sym>,
-    pub inverse: Option<Vec<Vec<Sym>>>,
+struct ChangeOfVariables {
+    coords: Vec<Sym>,
+    params: Vec<Sym>,
+    inverse: Option<Vec<Vec<Sym>>>,
 }
 
 impl Ring {
@@ -34,15 +35,24 @@ impl Ring {
             )));
         }
         self.state().coordinates = Some(Coordinates {
-            coords,
-            params,
+            coords: coords.iter().map(Sym::stored).collect(),
+            params: params.iter().map(Sym::stored).collect(),
             inverse: None,
         });
         Ok(())
     }
 
-    pub(crate) fn change_of_variables(&self) -> Option<Coordinates> {
-        self.state().coordinates.clone()
+    /// The declared coordinates, parameters and `D⁻¹` (once computed) as values.
+    fn change_of_variables(&self) -> Option<ChangeOfVariables> {
+        let c = self.state().coordinates.clone()?;
+        let values = |v: Vec<Stored>| -> Vec<Sym> {
+            v.into_iter().map(|s| Sym::restored(self, s)).collect()
+        };
+        Some(ChangeOfVariables {
+            coords: values(c.coords),
+            params: values(c.params),
+            inverse: c.inverse.map(|m| m.into_iter().map(values).collect()),
+        })
     }
 }
 
@@ -89,9 +99,27 @@ fn inverse(m: &[Vec<Sym>]) -> AlgResult<Vec<Vec<Sym>>> {
 }
 
 impl Sym {
+    /// The exact derivative with respect to an indeterminate `x`.
+    ///
+    /// ```
+    /// use eulertop::algebra::{Ring, RingOptions};
+    /// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
+    /// let u = ring.indeterminate_f64("u", &[0.3, 0.9]).unwrap();
+    /// let k = ring.indeterminate_f64("k", &[0.6, 0.3]).unwrap();
+    /// let (s, c, d) = u.sncndn(&k).unwrap();
+    /// let ds = s.derivative(&u).unwrap();
+    /// assert!(ring.prove(&ds, &(c * d)).is_proved()); // DLMF 22.13.1
+    /// ```
+    pub fn derivative(&self, x: &Sym) -> AlgResult<Sym> {
+        if let Some(c) = self.ring.change_of_variables() {
+            return self.derivative_in_coordinates(x, c);
+        }
+        self.derivative_plain(x)
+    }
+
     /// `∂self/∂x` by the chain rule through the ring's declared coordinates, where `x`
     /// is one of them (or, if `x` is one of the parameters, at fixed other parameters).
-    pub(crate) fn derivative_in_coordinates(&self, x: &Sym, c: Coordinates) -> AlgResult<Sym> {
+    fn derivative_in_coordinates(&self, x: &Sym, c: ChangeOfVariables) -> AlgResult<Sym> {
         let ring = self.ring().clone();
         let same = |y: &Sym| y.try_sub(x).map(|d| d.is_exact_zero()).unwrap_or(false);
         let Some(i) = c.coords.iter().position(same) else {
@@ -119,7 +147,11 @@ impl Sym {
                     .collect::<AlgResult<_>>()?;
                 let inv = inverse(&jac)?;
                 if let Some(st) = ring.state().coordinates.as_mut() {
-                    st.inverse = Some(inv.clone());
+                    st.inverse = Some(
+                        inv.iter()
+                            .map(|r| r.iter().map(Sym::stored).collect())
+                            .collect(),
+                    );
                 }
                 inv
             }

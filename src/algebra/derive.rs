@@ -12,35 +12,18 @@
 //!   `∂Z/∂k = k s c d/k'² − k c² Z/k'² + k b`, `Z' = k² c² b' + ∂Z/∂k · k'(x)`;
 //! * `K`, `K'`: 0 when the modulus does not depend on `x` (otherwise an error).
 
-use super::certificate::{Node, Op};
 use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
+use super::node::{Node, Op};
 use super::ring::{Ring, VarKind};
 use super::shadow::Shadow;
-use super::sym::{Sym, Val};
+use super::sym::Sym;
+use super::val::Val;
 use crate::numbers::Dual;
 use crate::special::sncndn;
 use rug::{Complex, Float, Rational};
 
 impl Sym {
-    /// The exact derivative with respect to an indeterminate `x`.
-    ///
-    /// ```
-    /// use eulertop::algebra::{Ring, RingOptions};
-    /// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
-    /// let u = ring.indeterminate_f64("u", &[0.3, 0.9]).unwrap();
-    /// let k = ring.indeterminate_f64("k", &[0.6, 0.3]).unwrap();
-    /// let (s, c, d) = u.sncndn(&k).unwrap();
-    /// let ds = s.derivative(&u).unwrap();
-    /// assert!(ring.prove(&ds, &(c * d)).is_proved()); // DLMF 22.13.1
-    /// ```
-    pub fn derivative(&self, x: &Sym) -> AlgResult<Sym> {
-        if let Some(c) = self.ring.change_of_variables() {
-            return self.derivative_in_coordinates(x, c);
-        }
-        self.derivative_plain(x)
-    }
-
     /// The derivation with respect to the indeterminate `x` itself (all other symbols
     /// fixed), whether or not coordinates are declared.
     pub(crate) fn derivative_plain(&self, x: &Sym) -> AlgResult<Sym> {

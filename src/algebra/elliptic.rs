@@ -17,61 +17,19 @@
 //! DLMF 22.5.1 (`sn(K/2) = (1+k')^{-1/2}`, `sn(iK'/2) = i k^{-1/2}`, …).  Every result is
 //! checked against a direct numeric evaluation at the domain points.
 
-use super::certificate::{Node, Op};
+use super::base_table::{Base, Table};
+pub use super::base_table::{BaseHint, DirKey, Terms};
 use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
-use super::ring::{Origin, Ring, VarKind};
+use super::lattice::{lattice_basis, solve};
+use super::node::{Node, Op};
+use super::ring::{Origin, Prescription, Ring, VarKind};
 use super::roots::Prescribed;
 use super::shadow::Shadow;
-use super::sym::{Sym, Val};
+use super::sym::Sym;
+use super::val::Val;
 use crate::special::{ellipk, ellipkp, sncndn, sncndn_complex};
 use rug::{Complex, Float, Integer, Rational};
-use std::collections::HashMap;
-use std::fmt::Write;
-
-/// The terms of a polynomial, as plain data (portable between rings built the same way).
-pub type Terms = Vec<(Integer, Vec<u64>)>;
-
-/// A direction: a monomial (exponent vector) over a primitive denominator.
-pub type DirKey = (Vec<u64>, Terms);
-
-/// Base arguments to start from, for a modulus (given by the terms of its normal form).
-#[derive(Clone, Debug, PartialEq)]
-pub struct BaseHint {
-    /// Numerator and denominator terms of the modulus.
-    pub modulus: (Terms, Terms),
-    /// Each base as rational coefficients over directions.
-    pub bases: Vec<Vec<(DirKey, Rational)>>,
-}
-
-#[derive(Clone, Debug)]
-pub(crate) struct Base {
-    vec: Vec<Rational>,
-    pub arg: Val,
-    /// `sn` of the base: its symbol, or the prescribed value.
-    pub s: Val,
-    pub s_name: String,
-    pub c: Val,
-    pub d: Val,
-    pub z_var: Option<usize>,
-}
-
-/// The elliptic data of one modulus.
-#[derive(Clone, Debug)]
-pub(crate) struct Table {
-    pub k: Val,
-    pub k2: Val,
-    pub kp: Option<Val>,
-    pub k_var: Option<usize>,
-    pub kp_var: Option<usize>,
-    dirs: Vec<(DirKey, Val)>,
-    pub bases: Vec<Base>,
-    pub triples: HashMap<Vec<i64>, [Val; 3]>,
-    pub half_k: Option<[Val; 3]>,
-    pub half_kp: Option<[Val; 3]>,
-    seen: Vec<Vec<Rational>>,
-    pending: Vec<Vec<(DirKey, Rational)>>,
-}
 
 fn terms(p: &Poly) -> Terms {
     let mut t = Vec::new();
@@ -82,133 +40,6 @@ fn terms(p: &Poly) -> Terms {
 fn pad(v: &mut Vec<Rational>, n: usize) {
     while v.len() < n {
         v.push(Rational::new());
-    }
-}
-
-/// Solves `v = Σ nⱼ bⱼ` over ℚ (the bases are independent); `None` outside their span.
-pub(crate) fn solve(bases: &[Vec<Rational>], v: &[Rational]) -> Option<Vec<Rational>> {
-    let m = bases.len();
-    let n = bases
-        .iter()
-        .map(|b| b.len())
-        .max()
-        .unwrap_or(0)
-        .max(v.len());
-    // rows: directions; columns: bases, then v
-    let mut a: Vec<Vec<Rational>> = (0..n)
-        .map(|i| {
-            let mut row: Vec<Rational> = bases
-                .iter()
-                .map(|b| b.get(i).cloned().unwrap_or_default())
-                .collect();
-            row.push(v.get(i).cloned().unwrap_or_default());
-            row
-        })
-        .collect();
-    let mut piv = Vec::new();
-    let mut r = 0;
-    for c in 0..m {
-        let Some(p) = (r..n).find(|&i| a[i][c] != 0) else {
-            continue;
-        };
-        a.swap(r, p);
-        let inv = Rational::from(1) / a[r][c].clone();
-        for x in a[r].iter_mut() {
-            *x *= &inv;
-        }
-        let pivot_row = a[r].clone();
-        for (i, row) in a.iter_mut().enumerate() {
-            if i != r && row[c] != 0 {
-                let f = row[c].clone();
-                for (x, p) in row.iter_mut().zip(&pivot_row) {
-                    *x -= Rational::from(&f * p);
-                }
-            }
-        }
-        piv.push(c);
-        r += 1;
-    }
-    if a[r..].iter().any(|row| row[m] != 0) {
-        return None;
-    }
-    let mut x = vec![Rational::new(); m];
-    for (i, &c) in piv.iter().enumerate() {
-        x[c] = a[i][m].clone();
-    }
-    Some(x)
-}
-
-impl Table {
-    fn new(k: Val, k2: Val) -> Table {
-        Table {
-            k,
-            k2,
-            kp: None,
-            k_var: None,
-            kp_var: None,
-            dirs: Vec::new(),
-            bases: Vec::new(),
-            triples: HashMap::new(),
-            half_k: None,
-            half_kp: None,
-            seen: Vec::new(),
-            pending: Vec::new(),
-        }
-    }
-
-    fn dir_index(&mut self, key: DirKey, val: impl FnOnce() -> Val) -> usize {
-        if let Some(i) = self.dirs.iter().position(|(k, _)| *k == key) {
-            return i;
-        }
-        self.dirs.push((key, val()));
-        self.dirs.len() - 1
-    }
-
-    pub fn certificate_lines(
-        &self,
-        ti: usize,
-        names: &[String],
-        kvar: impl Fn(usize) -> usize,
-        i_name: &str,
-    ) -> String {
-        let nf = |v: &Val| format!("({})/({})", v.num.render(names), v.den.render(names));
-        let mut out = String::new();
-        for (bi, b) in self.bases.iter().enumerate() {
-            let z = b
-                .z_var
-                .map_or(String::new(), |j| format!(" z={}", names[kvar(j)]));
-            let _ = writeln!(
-                out,
-                "base b_{}_{} k={} s={} c={} d={} arg={}{z}",
-                ti + 1,
-                bi + 1,
-                nf(&self.k),
-                b.s_name,
-                nf(&b.c),
-                nf(&b.d),
-                nf(&b.arg)
-            );
-        }
-        let triple = |t: &Option<[Val; 3]>| {
-            t.as_ref().map_or("none".to_string(), |[s, c, d]| {
-                format!("[{}, {}, {}]", nf(s), nf(c), nf(d))
-            })
-        };
-        if self.kp.is_some() || self.half_kp.is_some() {
-            let kp = self.kp.as_ref().map_or("none".to_string(), nf);
-            let name = |v: Option<usize>| v.map_or("none".to_string(), |j| names[kvar(j)].clone());
-            let _ = writeln!(
-                out,
-                "period table {} k={} kp={kp} K={} Kp={} i={i_name} halfK={} halfiKp={}",
-                ti + 1,
-                nf(&self.k),
-                name(self.k_var),
-                name(self.kp_var),
-                triple(&self.half_k),
-                triple(&self.half_kp)
-            );
-        }
-        out
     }
 }
 
@@ -439,7 +270,7 @@ impl Ring {
             for r in rows.iter_mut() {
                 pad(r, n);
             }
-            let basis = super::lattice::lattice_basis(&rows);
+            let basis = lattice_basis(&rows);
             let bases = basis
                 .iter()
                 .map(|row| {
@@ -562,6 +393,34 @@ impl Ring {
             c: c.val,
             d: d.val,
             z_var: None,
+        });
+        Ok(())
+    }
+
+    /// Declares that the symbol `v` (a field variable, such as an opaque `F(asin x, k)`)
+    /// has `sn v = s`, `cn v = c`, `dn v = d` at modulus `k`: a base argument `±v` of
+    /// that modulus then takes these values instead of new symbols.
+    pub fn prescribe_sncndn(
+        &self,
+        v: &Sym,
+        k: &Sym,
+        s: &Sym,
+        c: &Sym,
+        d: &Sym,
+        why: &str,
+    ) -> AlgResult<()> {
+        let var = v
+            .as_field_var()
+            .ok_or_else(|| AlgebraError::Internal("prescribed sn of a non-symbol".into()))?;
+        let what = v.render_short(40);
+        self.state().prescribed.push(Prescription {
+            var,
+            k: k.val.clone(),
+            s: s.val.clone(),
+            c: c.val.clone(),
+            d: d.val.clone(),
+            what,
+            why: why.to_string(),
         });
         Ok(())
     }
@@ -779,27 +638,5 @@ impl Sym {
     /// `dn(self, k)`, see [`Sym::sncndn`].
     pub fn dn(&self, k: &Sym) -> AlgResult<Sym> {
         Ok(self.sncndn(k)?.2)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn q(n: i64, d: i64) -> Rational {
-        Rational::from((n, d))
-    }
-
-    #[test]
-    fn solve_in_span_and_outside() {
-        let b = vec![vec![q(1, 1), q(1, 1)], vec![q(1, 1), q(-1, 1)]];
-        let x = solve(&b, &[q(1, 1), q(0, 1)]).unwrap();
-        assert_eq!(x, vec![q(1, 2), q(1, 2)]);
-        let b1 = vec![vec![q(1, 1), q(0, 1)]];
-        assert!(solve(&b1, &[q(0, 1), q(1, 1)]).is_none());
-        assert_eq!(solve(&b1, &[q(3, 1), q(0, 1)]).unwrap(), vec![q(3, 1)]);
-        // a shorter right side means zeros in the directions it does not mention
-        let b2 = vec![vec![q(1, 1), q(1, 1)], vec![q(0, 1), q(1, 1)]];
-        assert_eq!(solve(&b2, &[q(1, 1)]).unwrap(), vec![q(1, 1), q(-1, 1)]);
     }
 }

@@ -33,6 +33,18 @@
 //!   Certificates (module [`certificate`]) are rechecked by SymPy with
 //!   `scripts/recheck-certificates.py`.
 //!
+//! # Layers
+//!
+//! The files import one another one way, bottom to top: [`flint`], [`shadow`] and the
+//! errors; the value `Val` (a normal form with its shadow), the classes modulo squares,
+//! the lattice of arguments; the derivation DAG of certificates and the elliptic
+//! tables' data; the ring's state (`ring`: options, symbol table, assumptions and its
+//! plumbing); [`Sym`] and its arithmetic; then square roots ([`roots`]), comparisons,
+//! the claim's symbols, the addition theorems, [`elliptic`], derivatives and the change
+//! of variables, opaque functions, [`certificate`], the scalar traits; and proofs on top.
+//! `Ring` has `impl` blocks in the module of each concept ([`Ring::i`] in [`roots`],
+//! [`Ring::quarter_period`] in [`elliptic`], …), so no lower file needs a higher one.
+//!
 //! # Using it from an expression evaluator
 //!
 //! 1. Per claim, [`prove_components`] with a closure that builds both sides on the ring
@@ -87,6 +99,7 @@
 //! ```
 
 mod addition;
+mod base_table;
 pub mod certificate;
 mod coordinates;
 mod derive;
@@ -94,6 +107,7 @@ pub mod elliptic;
 mod error;
 pub mod flint;
 mod lattice;
+mod node;
 mod opaque;
 mod order;
 mod proof;
@@ -101,7 +115,10 @@ mod ring;
 pub mod roots;
 mod scalar;
 pub mod shadow;
+mod square_classes;
 mod sym;
+mod symbols;
+mod val;
 
 pub use elliptic::BaseHint;
 pub use error::{AlgResult, AlgebraError};

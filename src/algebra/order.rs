@@ -90,18 +90,3 @@ impl Sym {
         }
     }
 }
-
-impl super::ring::Ring {
-    pub(crate) fn record_assumption(&self, statement: String, sign: i32) {
-        let mut st = self.state();
-        let origin = st.origin.clone();
-        let a = super::ring::Assumption {
-            statement,
-            sign,
-            origin,
-        };
-        if !st.assumptions.contains(&a) {
-            st.assumptions.push(a);
-        }
-    }
-}

@@ -9,12 +9,12 @@
 //! transcendental symbols such as `sn` of a base argument) is variable `R + j`.  The
 //! leading monomial of `rᵢ² − aᵢ` is then `rᵢ²`, and these are pairwise coprime.
 
-use super::certificate::Node;
 use super::error::{AlgResult, AlgebraError};
 use super::flint::{Ctx, Poly};
-use super::roots::FactorBasis;
+use super::node::Node;
 use super::shadow::Shadow;
-use super::sym::{Sym, Val};
+use super::square_classes::FactorBasis;
+use super::val::Val;
 use rug::{Complex, Float, Rational};
 use std::sync::{Arc, Mutex, MutexGuard};
 
@@ -36,7 +36,7 @@ pub struct RingOptions {
     pub expand_named: bool,
     /// Base arguments of the elliptic functions to start from (see
     /// [`crate::algebra::prove_identity`], which fills this in on a restart).
-    pub base_hints: Vec<super::elliptic::BaseHint>,
+    pub base_hints: Vec<super::base_table::BaseHint>,
 }
 
 impl Default for RingOptions {
@@ -92,6 +92,19 @@ pub(crate) enum VarKind {
     Opaque { constant: bool },
 }
 
+/// What a field variable of kind `k` is, for the reader.
+pub(crate) fn describe_kind(k: &VarKind) -> String {
+    match k {
+        VarKind::Indeterminate => "indeterminate".into(),
+        VarKind::Named(_) => "named quantity (free symbol)".into(),
+        VarKind::Sn { .. } => "sn of a base argument".into(),
+        VarKind::Zeta { .. } => "E(am u, k) - k'^2 u of a base argument".into(),
+        VarKind::QuarterK { .. } => "quarter period K(k)".into(),
+        VarKind::QuarterKp { .. } => "complementary quarter period K'(k)".into(),
+        VarKind::Opaque { .. } => "opaque symbol".into(),
+    }
+}
+
 #[derive(Clone, Debug)]
 pub(crate) struct VarInfo {
     pub name: String,
@@ -113,7 +126,6 @@ pub(crate) struct RootInfo {
     pub note: String,
 }
 
-/// The mutable part of a ring.
 /// A field variable `v` with `sn v`, `cn v`, `dn v` known at modulus `k`.
 #[derive(Clone, Debug)]
 pub(crate) struct Prescription {
@@ -128,14 +140,29 @@ pub(crate) struct Prescription {
     pub why: String,
 }
 
-/// A remembered value of an implicit function: its shape and components.
-pub(crate) type ImplicitValue = (String, Vec<(Val, Option<Arc<Node>>)>);
+/// A value as the ring stores it: without the ring handle (see [`Val`]), with its
+/// derivation when the ring records certificates.
+pub(crate) type Stored = (Val, Option<Arc<Node>>);
 
+/// A remembered value of an implicit function: its shape and components.
+pub(crate) type ImplicitValue = (String, Vec<Stored>);
+
+/// A change of variables (module [`super::coordinates`]): the claim's variables as
+/// values in new indeterminates, the parameters, and the inverse Jacobian `D⁻¹` once
+/// computed.
+#[derive(Clone, Default)]
+pub(crate) struct Coordinates {
+    pub coords: Vec<Stored>,
+    pub params: Vec<Stored>,
+    pub inverse: Option<Vec<Vec<Stored>>>,
+}
+
+/// The mutable part of a ring.
 pub(crate) struct State {
     pub vars: Vec<VarInfo>,
     pub roots: Vec<RootInfo>,
     pub basis: FactorBasis,
-    pub tables: Vec<super::elliptic::Table>,
+    pub tables: Vec<super::base_table::Table>,
     pub assumptions: Vec<Assumption>,
     pub notes: Vec<String>,
     pub error: Option<AlgebraError>,
@@ -157,7 +184,7 @@ pub(crate) struct State {
     /// The arguments of opaque calls, by the field variable of the call's symbol.
     pub opaque_args: std::collections::BTreeMap<usize, (String, Vec<Val>)>,
     /// The change of variables of a parametrization, for derivatives.
-    pub coordinates: Option<super::coordinates::Coordinates>,
+    pub coordinates: Option<Coordinates>,
 }
 
 pub(crate) struct Inner {
@@ -167,7 +194,7 @@ pub(crate) struct Inner {
 }
 
 /// A tower of fields ℚ(x₁…xₙ)(r₁)…(rₘ), rᵢ² = aᵢ, with numeric shadows at domain
-/// points; the factory of [`Sym`] values.  Cloning gives another handle to the same
+/// points; the factory of [`Sym`](super::Sym) values.  Cloning gives another handle to the same
 /// ring.
 ///
 /// ```
@@ -188,12 +215,6 @@ impl std::fmt::Debug for Ring {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "Ring({} points)", self.inner.opts.points)
     }
-}
-
-/// Is `name` acceptable for a user symbol (letters and digits, starting with a letter)?
-pub(crate) fn valid_name(name: &str) -> bool {
-    let mut it = name.chars();
-    matches!(it.next(), Some(c) if c.is_ascii_alphabetic()) && it.all(|c| c.is_ascii_alphanumeric())
 }
 
 impl Ring {
@@ -254,148 +275,6 @@ impl Ring {
         Arc::ptr_eq(&self.inner, &other.inner)
     }
 
-    /// An independent indeterminate with its values at the domain points.
-    pub fn indeterminate(&self, name: &str, values: &[Complex]) -> AlgResult<Sym> {
-        self.check_new_name(name)?;
-        self.check_values(name, values)?;
-        let prec = self.precision();
-        let v = values.iter().map(|z| Complex::with_val(prec, z)).collect();
-        let j = self
-            .inner
-            .add_var(name.to_string(), VarKind::Indeterminate, v)?;
-        Ok(self.var_sym(j))
-    }
-
-    /// An indeterminate with real values given as `f64`.
-    pub fn indeterminate_f64(&self, name: &str, values: &[f64]) -> AlgResult<Sym> {
-        let prec = self.precision();
-        let v: Vec<Complex> = values
-            .iter()
-            .map(|&x| Complex::with_val(prec, (x, 0)))
-            .collect();
-        self.indeterminate(name, &v)
-    }
-
-    /// An indeterminate with exact rational values (written `3/2`, `-7`, …).
-    pub fn indeterminate_rational(&self, name: &str, values: &[&str]) -> AlgResult<Sym> {
-        let prec = self.precision();
-        let mut v = Vec::with_capacity(values.len());
-        for s in values {
-            let q: Rational = s.parse().map_err(|_| {
-                AlgebraError::Domain(format!("malformed rational '{s}' for {name}"))
-            })?;
-            v.push(Complex::with_val(prec, (Float::with_val(prec, &q), 0)));
-        }
-        self.indeterminate(name, &v)
-    }
-
-    /// A symbol the prover cannot expand (such as `u0` given by an inverse function),
-    /// with its values; `constant` says whether its derivative with respect to every
-    /// indeterminate is 0 (otherwise a derivative through it is an error).
-    pub fn opaque(&self, name: &str, values: &[Complex], constant: bool) -> AlgResult<Sym> {
-        self.check_new_name(name)?;
-        self.check_values(name, values)?;
-        let prec = self.precision();
-        let v = values.iter().map(|z| Complex::with_val(prec, z)).collect();
-        let j = self
-            .inner
-            .add_var(name.to_string(), VarKind::Opaque { constant }, v)?;
-        Ok(self.var_sym(j))
-    }
-
-    /// A named quantity (`k`, `nu`, …): a free symbol standing for `definition` (with the
-    /// definition's values, and its derivative for the chain rule), or the definition
-    /// itself when the ring expands named quantities.  Proving with free symbols first
-    /// keeps expressions small; an identity proved so holds for every value of the
-    /// symbol, in particular for the definition.
-    pub fn named(&self, name: &str, definition: &Sym) -> AlgResult<Sym> {
-        if self.inner.opts.expand_named {
-            return Ok(definition.clone());
-        }
-        self.check_new_name(name)?;
-        if !definition.ring.same(self) {
-            return Err(AlgebraError::RingMismatch);
-        }
-        let values = definition.val.sh.v.clone();
-        let kind = VarKind::Named(Box::new(definition.val.clone()));
-        let j = self.inner.add_var(name.to_string(), kind, values)?;
-        Ok(self.var_sym(j))
-    }
-
-    fn check_new_name(&self, name: &str) -> AlgResult<()> {
-        if !valid_name(name) {
-            return Err(AlgebraError::Domain(format!(
-                "symbol name '{name}' must be letters and digits, starting with a letter"
-            )));
-        }
-        let st = self.state();
-        if st.vars.iter().any(|v| v.name == name) || st.roots.iter().any(|r| r.name == name) {
-            return Err(AlgebraError::Domain(format!(
-                "symbol '{name}' defined twice"
-            )));
-        }
-        Ok(())
-    }
-
-    fn check_values(&self, name: &str, values: &[Complex]) -> AlgResult<()> {
-        if values.len() != self.points() {
-            return Err(AlgebraError::Domain(format!(
-                "{name}: {} values for {} domain points",
-                values.len(),
-                self.points()
-            )));
-        }
-        if values
-            .iter()
-            .any(|z| !z.real().is_finite() || !z.imag().is_finite())
-        {
-            return Err(AlgebraError::Domain(format!("{name}: non-finite value")));
-        }
-        Ok(())
-    }
-
-    /// The exact integer `n`.
-    pub fn integer(&self, n: i64) -> Sym {
-        self.rational(&Rational::from(n))
-    }
-
-    /// The exact rational `q`.
-    pub fn rational(&self, q: &Rational) -> Sym {
-        Sym::from_val(self, self.inner.const_val(q), Some(Node::constant(q)))
-    }
-
-    /// The imaginary unit, a root symbol with `i² = −1` (shared by the whole ring).
-    pub fn i(&self) -> AlgResult<Sym> {
-        let m1 = self.integer(-1);
-        m1.sqrt()
-    }
-
-    pub(crate) fn var_sym(&self, j: usize) -> Sym {
-        let (values, name) = {
-            let st = self.state();
-            (st.vars[j].values.clone(), st.vars[j].name.clone())
-        };
-        self.leaf_sym(self.inner.kvar(j), values, &name)
-    }
-
-    pub(crate) fn root_sym(&self, i: usize) -> Sym {
-        let (values, name) = {
-            let st = self.state();
-            (st.roots[i].values.clone(), st.roots[i].name.clone())
-        };
-        self.leaf_sym(self.inner.root_var(i), values, &name)
-    }
-
-    /// The symbol of polynomial variable `idx` with its values.
-    fn leaf_sym(&self, idx: usize, values: Vec<Complex>, name: &str) -> Sym {
-        let val = Val {
-            num: Poly::var(&self.inner.ctx, idx),
-            den: Poly::from_i64(&self.inner.ctx, 1),
-            sh: Shadow::leaf(values),
-        };
-        Sym::from_val(self, val, Some(Node::symbol(name)))
-    }
-
     /// Sets where the following decisions come from (a definition or the claim).
     pub fn set_origin(&self, origin: Origin) {
         self.state().origin = origin;
@@ -433,7 +312,7 @@ impl Ring {
         let mut out: Vec<(String, String)> = st
             .vars
             .iter()
-            .map(|v| (v.name.clone(), super::sym::describe_kind(&v.kind)))
+            .map(|v| (v.name.clone(), describe_kind(&v.kind)))
             .collect();
         out.extend(st.roots.iter().map(|r| (r.name.clone(), r.note.clone())));
         out
@@ -476,32 +355,18 @@ impl Ring {
         }
     }
 
-    /// Declares that the symbol `v` (a field variable, such as an opaque `F(asin x, k)`)
-    /// has `sn v = s`, `cn v = c`, `dn v = d` at modulus `k`: a base argument `±v` of
-    /// that modulus then takes these values instead of new symbols.
-    pub fn prescribe_sncndn(
-        &self,
-        v: &Sym,
-        k: &Sym,
-        s: &Sym,
-        c: &Sym,
-        d: &Sym,
-        why: &str,
-    ) -> AlgResult<()> {
-        let var = v
-            .as_field_var()
-            .ok_or_else(|| AlgebraError::Internal("prescribed sn of a non-symbol".into()))?;
-        let what = v.render_short(40);
-        self.state().prescribed.push(Prescription {
-            var,
-            k: k.val.clone(),
-            s: s.val.clone(),
-            c: c.val.clone(),
-            d: d.val.clone(),
-            what,
-            why: why.to_string(),
-        });
-        Ok(())
+    /// Records a decision taken from the shadows (once), with the current origin.
+    pub(crate) fn record_assumption(&self, statement: String, sign: i32) {
+        let mut st = self.state();
+        let origin = st.origin.clone();
+        let a = Assumption {
+            statement,
+            sign,
+            origin,
+        };
+        if !st.assumptions.contains(&a) {
+            st.assumptions.push(a);
+        }
     }
 
     /// A symbol name not yet used in this ring: `base`, else `base` followed by a letter
@@ -517,29 +382,6 @@ impl Ring {
             .map(|j| format!("{base}x{j}"))
             .find(|n| !taken(n))
             .unwrap_or_default()
-    }
-
-    /// Remembers `values` (of the caller's `shape`) as the value of an implicitly
-    /// defined function at the arguments described by `key` (the function's name and
-    /// the normal forms of its arguments), so that evaluating the call returns them.
-    pub fn remember(&self, key: &str, shape: &str, values: &[Sym]) {
-        let vals = values
-            .iter()
-            .map(|v| (v.val.clone(), v.node.clone()))
-            .collect();
-        self.state()
-            .implicit_values
-            .insert(key.to_string(), (shape.to_string(), vals));
-    }
-
-    /// The shape and values remembered for `key`, if any.
-    pub fn recall(&self, key: &str) -> Option<(String, Vec<Sym>)> {
-        let (shape, vals) = self.state().implicit_values.get(key).cloned()?;
-        let syms = vals
-            .into_iter()
-            .map(|(v, n)| Sym::from_val(self, v, n))
-            .collect();
-        Some((shape, syms))
     }
 }
 

@@ -17,10 +17,13 @@
 
 use super::error::{AlgResult, AlgebraError};
 use super::flint::{factor_integer, Poly};
+use super::node::Node;
 use super::ring::Ring;
 use super::shadow::Shadow;
-use super::sym::{Sym, Val};
-use rug::{Complex, Integer};
+use super::square_classes::{Bits, Factor};
+use super::sym::Sym;
+use super::val::Val;
+use rug::Complex;
 
 /// Values a new root must take at the domain points (instead of the principal branch),
 /// with its name and description.
@@ -28,107 +31,6 @@ pub(crate) struct Prescribed<'a> {
     pub values: &'a [Complex],
     pub name: &'a str,
     pub note: &'a str,
-}
-
-/// A bit vector over GF(2).
-#[derive(Clone, Default, PartialEq, Eq, Debug)]
-pub(crate) struct Bits(Vec<u64>);
-
-impl Bits {
-    pub fn get(&self, i: usize) -> bool {
-        self.0.get(i / 64).is_some_and(|w| w >> (i % 64) & 1 == 1)
-    }
-    pub fn flip(&mut self, i: usize) {
-        if self.0.len() <= i / 64 {
-            self.0.resize(i / 64 + 1, 0);
-        }
-        self.0[i / 64] ^= 1 << (i % 64);
-    }
-    pub fn xor(&mut self, o: &Bits) {
-        if self.0.len() < o.0.len() {
-            self.0.resize(o.0.len(), 0);
-        }
-        for (a, b) in self.0.iter_mut().zip(&o.0) {
-            *a ^= b;
-        }
-    }
-    pub fn is_zero(&self) -> bool {
-        self.0.iter().all(|&w| w == 0)
-    }
-    pub fn ones(&self) -> Vec<usize> {
-        let mut out = Vec::new();
-        for (k, &w) in self.0.iter().enumerate() {
-            for b in 0..64 {
-                if w >> b & 1 == 1 {
-                    out.push(k * 64 + b);
-                }
-            }
-        }
-        out
-    }
-}
-
-/// A coordinate of the GF(2) vectors: −1, a prime, or an irreducible polynomial.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) enum Factor {
-    MinusOne,
-    Prime(Integer),
-    Poly(Poly),
-}
-
-#[derive(Clone, Debug)]
-struct Row {
-    v: Bits,
-    combo: Bits,
-    pivot: usize,
-}
-
-/// The factors met so far and the reduced echelon form of the roots' vectors.
-#[derive(Clone, Debug, Default)]
-pub(crate) struct FactorBasis {
-    factors: Vec<Factor>,
-    rows: Vec<Row>,
-}
-
-impl FactorBasis {
-    fn index_of(&mut self, f: Factor) -> usize {
-        if let Some(i) = self.factors.iter().position(|g| *g == f) {
-            return i;
-        }
-        self.factors.push(f);
-        self.factors.len() - 1
-    }
-
-    /// `(residual, combination)`: `t = residual + Σ_{roots in combination} vector`.
-    fn reduce(&self, t: &Bits) -> (Bits, Bits) {
-        let mut r = t.clone();
-        let mut combo = Bits::default();
-        for row in &self.rows {
-            if r.get(row.pivot) {
-                r.xor(&row.v);
-                combo.xor(&row.combo);
-            }
-        }
-        (r, combo)
-    }
-
-    /// Records root `root` with vector `v`; false if `v` depends on earlier roots.
-    fn add(&mut self, v: &Bits, root: usize) -> bool {
-        let (r, mut combo) = self.reduce(v);
-        if r.is_zero() {
-            return false;
-        }
-        combo.flip(root);
-        let pivot = r.ones()[0];
-        for row in &mut self.rows {
-            if row.v.get(pivot) {
-                row.v.xor(&r);
-                row.combo.xor(&combo);
-            }
-        }
-        self.rows.push(Row { v: r, combo, pivot });
-        true
-    }
 }
 
 /// The class of a polynomial modulo squares: its GF(2) vector (over the ring's basis).
@@ -523,10 +425,7 @@ impl Sym {
                     .map(|&s| Complex::with_val(ring.precision(), s))
                     .collect::<Vec<_>>(),
             );
-            let node = self
-                .node
-                .as_ref()
-                .map(|n| super::certificate::Node::sqrt(n, &cand, ring, 1));
+            let node = self.node.as_ref().map(|n| Node::sqrt(n, &cand, 1));
             return Ok(Sym::from_val(ring, cand, node));
         }
         let sigma = ring.decide_sign(&target, &cand.sh, &what)?;
@@ -540,7 +439,7 @@ impl Sym {
         let node = self
             .node
             .as_ref()
-            .map(|n| super::certificate::Node::sqrt(n, &result.val, ring, sigma));
+            .map(|n| Node::sqrt(n, &result.val, sigma));
         Ok(result.with_node(node))
     }
 
@@ -588,6 +487,12 @@ impl Sym {
 }
 
 impl Ring {
+    /// The imaginary unit, a root symbol with `i² = −1` (shared by the whole ring).
+    pub fn i(&self) -> AlgResult<Sym> {
+        let m1 = self.integer(-1);
+        m1.sqrt()
+    }
+
     /// Signs σₚ with `target = σₚ · cand` at each point.
     fn pointwise_signs(&self, target: &Shadow, cand: &Shadow, what: &str) -> AlgResult<Vec<i32>> {
         let prec = self.precision();

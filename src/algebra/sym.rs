@@ -8,27 +8,19 @@
 //! Over the field ℚ(x) and roots of pairwise independent radicands the form is unique,
 //! so a value is zero exactly when `N = 0`.
 
-use super::certificate::{Node, Op};
 use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
-use super::ring::{Inner, Ring, VarKind};
+use super::node::{Node, Op};
+use super::ring::{Inner, Ring, Stored};
 use super::shadow::Shadow;
-use rug::Complex;
+use super::val::Val;
+use rug::{Complex, Rational};
 use std::sync::Arc;
 
 /// The largest numerator plus denominator, in terms, that the prover works with; beyond
 /// it a proof stops with [`AlgebraError::TooLarge`] (such values come from iterations
 /// written out in a claim, such as Newton steps, not from the paper's identities).
 pub const MAX_TERMS: usize = 8_000;
-
-/// The exact part of a value with its shadow, without the ring handle (so the symbol
-/// table can store values without reference cycles).
-#[derive(Clone, Debug)]
-pub(crate) struct Val {
-    pub num: Poly,
-    pub den: Poly,
-    pub sh: Shadow,
-}
 
 /// An exact element of a [`Ring`]'s tower, with its numeric values at the domain points.
 ///
@@ -46,18 +38,6 @@ pub struct Sym {
 impl std::fmt::Debug for Sym {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "{}", self.render())
-    }
-}
-
-pub(crate) fn describe_kind(k: &VarKind) -> String {
-    match k {
-        VarKind::Indeterminate => "indeterminate".into(),
-        VarKind::Named(_) => "named quantity (free symbol)".into(),
-        VarKind::Sn { .. } => "sn of a base argument".into(),
-        VarKind::Zeta { .. } => "E(am u, k) - k'^2 u of a base argument".into(),
-        VarKind::QuarterK { .. } => "quarter period K(k)".into(),
-        VarKind::QuarterKp { .. } => "complementary quarter period K'(k)".into(),
-        VarKind::Opaque { .. } => "opaque symbol".into(),
     }
 }
 
@@ -309,6 +289,16 @@ impl Sym {
         }
     }
 
+    /// The value as the ring stores it (without the ring handle).
+    pub(crate) fn stored(&self) -> Stored {
+        (self.val.clone(), self.node.clone())
+    }
+
+    /// A stored value back on its ring.
+    pub(crate) fn restored(ring: &Ring, (val, node): Stored) -> Sym {
+        Sym::from_val(ring, val, node)
+    }
+
     /// The ring of this value.
     pub fn ring(&self) -> &Ring {
         &self.ring
@@ -489,6 +479,42 @@ impl Sym {
 }
 
 impl Ring {
+    /// The exact integer `n`.
+    pub fn integer(&self, n: i64) -> Sym {
+        self.rational(&Rational::from(n))
+    }
+
+    /// The exact rational `q`.
+    pub fn rational(&self, q: &Rational) -> Sym {
+        Sym::from_val(self, self.inner.const_val(q), Some(Node::constant(q)))
+    }
+
+    pub(crate) fn var_sym(&self, j: usize) -> Sym {
+        let (values, name) = {
+            let st = self.state();
+            (st.vars[j].values.clone(), st.vars[j].name.clone())
+        };
+        self.leaf_sym(self.inner.kvar(j), values, &name)
+    }
+
+    pub(crate) fn root_sym(&self, i: usize) -> Sym {
+        let (values, name) = {
+            let st = self.state();
+            (st.roots[i].values.clone(), st.roots[i].name.clone())
+        };
+        self.leaf_sym(self.inner.root_var(i), values, &name)
+    }
+
+    /// The symbol of polynomial variable `idx` with its values.
+    fn leaf_sym(&self, idx: usize, values: Vec<Complex>, name: &str) -> Sym {
+        let val = Val {
+            num: Poly::var(&self.inner.ctx, idx),
+            den: Poly::from_i64(&self.inner.ctx, 1),
+            sh: Shadow::leaf(values),
+        };
+        Sym::from_val(self, val, Some(Node::symbol(name)))
+    }
+
     /// A meaningless value (exact 0 with NaN shadows), returned after an error.
     pub(crate) fn nan(&self) -> Sym {
         let prec = self.precision();

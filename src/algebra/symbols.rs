@@ -1,0 +1,125 @@
+//! The claim's symbols on a ring: independent indeterminates, opaque symbols and
+//! named quantities, each a field variable with its values at the domain points; and
+//! the remembered values of implicitly defined functions.
+
+use super::error::{AlgResult, AlgebraError};
+use super::ring::{Ring, VarKind};
+use super::sym::Sym;
+use rug::{Complex, Float, Rational};
+
+/// Is `name` acceptable for a user symbol (letters and digits, starting with a letter)?
+fn valid_name(name: &str) -> bool {
+    let mut it = name.chars();
+    matches!(it.next(), Some(c) if c.is_ascii_alphabetic()) && it.all(|c| c.is_ascii_alphanumeric())
+}
+
+impl Ring {
+    /// An independent indeterminate with its values at the domain points.
+    pub fn indeterminate(&self, name: &str, values: &[Complex]) -> AlgResult<Sym> {
+        self.check_new_name(name)?;
+        self.check_values(name, values)?;
+        let prec = self.precision();
+        let v = values.iter().map(|z| Complex::with_val(prec, z)).collect();
+        let j = self
+            .inner
+            .add_var(name.to_string(), VarKind::Indeterminate, v)?;
+        Ok(self.var_sym(j))
+    }
+    /// An indeterminate with real values given as `f64`.
+    pub fn indeterminate_f64(&self, name: &str, values: &[f64]) -> AlgResult<Sym> {
+        let prec = self.precision();
+        let v: Vec<Complex> = values
+            .iter()
+            .map(|&x| Complex::with_val(prec, (x, 0)))
+            .collect();
+        self.indeterminate(name, &v)
+    }
+    /// An indeterminate with exact rational values (written `3/2`, `-7`, …).
+    pub fn indeterminate_rational(&self, name: &str, values: &[&str]) -> AlgResult<Sym> {
+        let prec = self.precision();
+        let mut v = Vec::with_capacity(values.len());
+        for s in values {
+            let q: Rational = s.parse().map_err(|_| {
+                AlgebraError::Domain(format!("malformed rational '{s}' for {name}"))
+            })?;
+            v.push(Complex::with_val(prec, (Float::with_val(prec, &q), 0)));
+        }
+        self.indeterminate(name, &v)
+    }
+    /// A symbol the prover cannot expand (such as `u0` given by an inverse function),
+    /// with its values; `constant` says whether its derivative with respect to every
+    /// indeterminate is 0 (otherwise a derivative through it is an error).
+    pub fn opaque(&self, name: &str, values: &[Complex], constant: bool) -> AlgResult<Sym> {
+        self.check_new_name(name)?;
+        self.check_values(name, values)?;
+        let prec = self.precision();
+        let v = values.iter().map(|z| Complex::with_val(prec, z)).collect();
+        let j = self
+            .inner
+            .add_var(name.to_string(), VarKind::Opaque { constant }, v)?;
+        Ok(self.var_sym(j))
+    }
+    /// A named quantity (`k`, `nu`, …): a free symbol standing for `definition` (with the
+    /// definition's values, and its derivative for the chain rule), or the definition
+    /// itself when the ring expands named quantities.  Proving with free symbols first
+    /// keeps expressions small; an identity proved so holds for every value of the
+    /// symbol, in particular for the definition.
+    pub fn named(&self, name: &str, definition: &Sym) -> AlgResult<Sym> {
+        if self.inner.opts.expand_named {
+            return Ok(definition.clone());
+        }
+        self.check_new_name(name)?;
+        if !definition.ring.same(self) {
+            return Err(AlgebraError::RingMismatch);
+        }
+        let values = definition.val.sh.v.clone();
+        let kind = VarKind::Named(Box::new(definition.val.clone()));
+        let j = self.inner.add_var(name.to_string(), kind, values)?;
+        Ok(self.var_sym(j))
+    }
+    fn check_new_name(&self, name: &str) -> AlgResult<()> {
+        if !valid_name(name) {
+            return Err(AlgebraError::Domain(format!(
+                "symbol name '{name}' must be letters and digits, starting with a letter"
+            )));
+        }
+        let st = self.state();
+        if st.vars.iter().any(|v| v.name == name) || st.roots.iter().any(|r| r.name == name) {
+            return Err(AlgebraError::Domain(format!(
+                "symbol '{name}' defined twice"
+            )));
+        }
+        Ok(())
+    }
+    fn check_values(&self, name: &str, values: &[Complex]) -> AlgResult<()> {
+        if values.len() != self.points() {
+            return Err(AlgebraError::Domain(format!(
+                "{name}: {} values for {} domain points",
+                values.len(),
+                self.points()
+            )));
+        }
+        if values
+            .iter()
+            .any(|z| !z.real().is_finite() || !z.imag().is_finite())
+        {
+            return Err(AlgebraError::Domain(format!("{name}: non-finite value")));
+        }
+        Ok(())
+    }
+    /// Remembers `values` (of the caller's `shape`) as the value of an implicitly
+    /// defined function at the arguments described by `key` (the function's name and
+    /// the normal forms of its arguments), so that evaluating the call returns them.
+    pub fn remember(&self, key: &str, shape: &str, values: &[Sym]) {
+        let vals = values.iter().map(Sym::stored).collect();
+        self.state()
+            .implicit_values
+            .insert(key.to_string(), (shape.to_string(), vals));
+    }
+    /// The shape and values remembered for `key`, if any.
+    pub fn recall(&self, key: &str) -> Option<(String, Vec<Sym>)> {
+        let (shape, vals) = self.state().implicit_values.get(key).cloned()?;
+        let syms = vals.into_iter().map(|s| Sym::restored(self, s)).collect();
+        Some((shape, syms))
+    }
+}
