@@ -146,10 +146,13 @@ class Cert:
 
     def base(self, rest):
         head, v = self.keyed(rest, ["k", "s", "c", "d", "arg", "z"])
-        b = {"k": self.frac(v["k"]), "s": self.symbol(v["s"]), "c": self.frac(v["c"]),
+        # s is the base's own symbol, or the prescribed value (such as sn = x for F(asin x, k))
+        named = re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", v["s"]) is not None
+        b = {"k": self.frac(v["k"]), "s": self.frac(v["s"]), "c": self.frac(v["c"]),
+             "s_name": v["s"] if named else None,
              "d": self.frac(v["d"]), "arg": self.frac(v["arg"]),
              "z": self.symbol(v["z"]) if "z" in v else None}
-        one, s = self.const(1), Frac(b["s"])
+        one, s = self.const(1), b["s"]
         k2 = self.mul(b["k"], b["k"])
         self.need(self.eq(self.mul(b["c"], b["c"]), self.add(one, self.mul(s, s), -1)), f"{head}: c**2 != 1 - s**2")
         self.need(self.eq(self.mul(b["d"], b["d"]), self.add(one, self.mul(k2, self.mul(s, s)), -1)),
@@ -205,7 +208,7 @@ class Cert:
             b = self.bases[bname]
             k = b["k"]
             k2 = self.mul(k, k)
-            unit = [Frac(b["s"]), b["c"], b["d"]]
+            unit = [b["s"], b["c"], b["d"]]
             if n < 0:
                 unit = [self.neg(unit[0]), unit[1], unit[2]]
             for _ in range(abs(n)):
@@ -272,8 +275,8 @@ class Cert:
         elif kind == "named":
             self.need(self.eq(val, self.dfrac(self.named[v], x)), f"d{v}/d{x} != derivative of its definition")
         elif kind in ("sn", "zeta"):
-            b = next(b for b in self.bases.values() if (b["s"].name == v if kind == "sn" else (b["z"] is not None and b["z"].name == v)))
-            k, s, c, d, u = b["k"], Frac(b["s"]), b["c"], b["d"], b["arg"]
+            b = next(b for b in self.bases.values() if (b["s_name"] == v if kind == "sn" else (b["z"] is not None and b["z"].name == v)))
+            k, s, c, d, u = b["k"], b["s"], b["c"], b["d"], b["arg"]
             du, dk = self.dfrac(u, x), self.dfrac(k, x)
             cd = self.mul(c, d)
             k2 = self.mul(k, k)

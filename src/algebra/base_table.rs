@@ -42,6 +42,13 @@ pub(crate) struct Base {
     pub z_var: Option<usize>,
 }
 
+impl Base {
+    /// Are sn, cn, dn of this base prescribed values (not symbols of its own)?
+    pub(crate) fn is_prescribed(&self) -> bool {
+        self.s_name.starts_with("sn(")
+    }
+}
+
 /// The elliptic data of one modulus.
 #[derive(Clone, Debug)]
 pub(crate) struct Table {

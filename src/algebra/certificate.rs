@@ -207,13 +207,18 @@ fn table_lines(
         let z = b
             .z_var
             .map_or(String::new(), |j| format!(" z={}", names[kvar(j)]));
+        // a prescribed sn is written as its value, a symbol by its name
+        let s = if b.is_prescribed() {
+            nf(&b.s)
+        } else {
+            b.s_name.clone()
+        };
         let _ = writeln!(
             out,
-            "base b_{}_{} k={} s={} c={} d={} arg={}{z}",
+            "base b_{}_{} k={} s={s} c={} d={} arg={}{z}",
             ti + 1,
             bi + 1,
             nf(&table.k),
-            b.s_name,
             nf(&b.c),
             nf(&b.d),
             nf(&b.arg)

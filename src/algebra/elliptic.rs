@@ -443,11 +443,6 @@ impl Ring {
         let Some((p, sign)) = found else {
             return Ok(false);
         };
-        if inner.opts.certificate {
-            return Err(AlgebraError::NotAlgebraic(
-                "a base argument with prescribed sn, cn, dn (in a certificate)".into(),
-            ));
-        }
         let s = if sign > 0 {
             p.s.clone()
         } else {

@@ -26,8 +26,9 @@ impl Sym {
                 .collect::<Vec<_>>()
                 .join(", ")
         );
-        if let Some(v) = ring.state().opaque_calls.get(&key) {
-            return Ok(Sym::from_val(&ring, v.clone(), None));
+        let known = ring.state().opaque_calls.get(&key).cloned();
+        if let Some(v) = known {
+            return Ok(Sym::restored(&ring, v));
         }
         let mut shadow = Vec::new();
         for p in 0..ring.points() {
@@ -39,9 +40,9 @@ impl Sym {
         }
         let n = ring.state().opaque_calls.len() + 1;
         let s = ring.opaque(&format!("{f}{n}"), &shadow, false)?;
-        ring.state().opaque_calls.insert(key, s.val.clone());
+        ring.state().opaque_calls.insert(key, s.stored());
         if let Some(j) = s.as_field_var() {
-            let vals = args.iter().map(|a| a.val.clone()).collect();
+            let vals = args.iter().map(|a| a.stored()).collect();
             ring.state().opaque_args.insert(j, (f.to_string(), vals));
         }
         ring.note(format!(
@@ -58,7 +59,7 @@ impl Sym {
         let (g, vals) = self.ring.state().opaque_args.get(&j).cloned()?;
         (g == f).then(|| {
             vals.into_iter()
-                .map(|v| Sym::from_val(&self.ring, v, None))
+                .map(|v| Sym::restored(&self.ring, v))
                 .collect()
         })
     }

@@ -31,9 +31,17 @@ impl Sym {
         let ring = &self.ring;
         let prec = ring.precision();
         let what = self.render_short(160);
+        // the carried error scales may be too pessimistic to decide: then the value is
+        // evaluated afresh from its normal form, with the error scale of its terms
+        let undecided = (0..ring.points()).any(|p| self.val.sh.real_sign(p, prec).is_none());
+        let sh = if undecided {
+            ring.reevaluated(&self.val)
+        } else {
+            self.val.sh.clone()
+        };
         let mut sign = 0;
         for p in 0..ring.points() {
-            let s = self.val.sh.real_sign(p, prec).ok_or_else(|| {
+            let s = sh.real_sign(p, prec).ok_or_else(|| {
                 AlgebraError::CannotDecide(format!(
                     "the sign of {what}: zero or not real at a domain point"
                 ))

@@ -9,7 +9,7 @@
 
 use super::elliptic::BaseHint;
 use super::error::{AlgResult, AlgebraError};
-use super::ring::{Assumption, Ring, RingOptions, VarKind};
+use super::ring::{Assumption, Ring, RingOptions, VarKind, MAX_TERMS};
 use super::sym::Sym;
 use std::time::Instant;
 
@@ -244,15 +244,24 @@ where
                 attempts,
             );
         }
-        let too_large = matches!(built, Err(AlgebraError::TooLarge(..)))
-            || matches!(ring.error(), Some(AlgebraError::TooLarge(..)));
-        if too_large && rebases < 3 {
+        let overflow = match (&built, ring.error()) {
+            (Err(AlgebraError::TooLarge(n, _)), _) => Some(*n),
+            (_, Some(AlgebraError::TooLarge(n, _))) => Some(n),
+            _ => None,
+        };
+        if let Some(size) = overflow {
             // the bases chosen as the arguments came may write a later argument with
             // large multiples; a basis of every argument seen may keep it small
             let hints = ring.rebase_hints();
-            if hints != opts.base_hints {
+            if rebases < 3 && hints != opts.base_hints {
                 rebases += 1;
                 opts.base_hints = hints;
+                continue;
+            }
+            // a value just beyond the bound gets one more attempt with twice the room
+            // (values that explode, such as written-out iterations, do not)
+            if opts.max_terms == MAX_TERMS && size < 2 * MAX_TERMS {
+                opts.max_terms = 2 * MAX_TERMS;
                 continue;
             }
         }

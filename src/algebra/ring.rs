@@ -34,10 +34,19 @@ pub struct RingOptions {
     pub certificate: bool,
     /// Replace named quantities by their definitions instead of free symbols.
     pub expand_named: bool,
+    /// The size bound of intermediate values, in terms (see [`MAX_TERMS`]).
+    pub max_terms: usize,
     /// Base arguments of the elliptic functions to start from (see
     /// [`crate::algebra::prove_identity`], which fills this in on a restart).
     pub base_hints: Vec<super::base_table::BaseHint>,
 }
+
+/// The largest numerator plus denominator, in terms, that the prover works with at
+/// first ([`RingOptions::max_terms`]); beyond it a proof stops with
+/// [`AlgebraError::TooLarge`], or restarts on other bases or, once, with twice the bound
+/// when the overflow is less than twice the bound (such values come from iterations
+/// written out in a claim, such as Newton steps, not from the paper's identities).
+pub const MAX_TERMS: usize = 8_000;
 
 impl Default for RingOptions {
     fn default() -> Self {
@@ -48,6 +57,7 @@ impl Default for RingOptions {
             max_vars: 16,
             certificate: false,
             expand_named: false,
+            max_terms: MAX_TERMS,
             base_hints: Vec::new(),
         }
     }
@@ -173,7 +183,7 @@ pub(crate) struct State {
     pub dcache: std::collections::HashMap<(usize, usize), Val>,
     pub derivation_lines: Vec<String>,
     /// Opaque function values already made: `f(args)` (rendered) → the symbol.
-    pub opaque_calls: std::collections::BTreeMap<String, Val>,
+    pub opaque_calls: std::collections::BTreeMap<String, Stored>,
     /// Values of implicitly defined functions at given arguments (see [`Ring::remember`]).
     pub implicit_values: std::collections::BTreeMap<String, ImplicitValue>,
     /// A symbol or root could not be added for lack of room (the build may have
@@ -182,7 +192,7 @@ pub(crate) struct State {
     /// Symbols whose sn, cn, dn at a modulus are known (see [`Ring::prescribe_sncndn`]).
     pub prescribed: Vec<Prescription>,
     /// The arguments of opaque calls, by the field variable of the call's symbol.
-    pub opaque_args: std::collections::BTreeMap<usize, (String, Vec<Val>)>,
+    pub opaque_args: std::collections::BTreeMap<usize, (String, Vec<Stored>)>,
     /// The change of variables of a parametrization, for derivatives.
     pub coordinates: Option<Coordinates>,
 }
@@ -526,6 +536,45 @@ impl Inner {
             }
         });
         out
+    }
+
+    /// Evaluates a polynomial at every point with its own error scale: the sum of the
+    /// terms' moduli times the number of roundings a term and the sum take (each leaf
+    /// value is taken as correct to the working precision).  Direct evaluation bounds
+    /// the error by the terms, where the error scales carried through a long
+    /// derivation may have grown far beyond them.
+    pub(crate) fn eval_poly_scaled(&self, p: &Poly, vals: &[Vec<Complex>]) -> Shadow {
+        let prec = self.opts.precision;
+        let npts = self.opts.points;
+        let mut out = vec![Complex::with_val(prec, 0); npts];
+        let mut size = vec![Float::with_val(64, 0); npts];
+        let mut roundings = 1u64;
+        p.for_each_term(|c, e| {
+            roundings += 2 + e.iter().sum::<u64>();
+            for (pt, acc) in out.iter_mut().enumerate() {
+                let mut t = Complex::with_val(prec, (Float::with_val(prec, c), 0));
+                for (idx, &k) in e.iter().enumerate() {
+                    for _ in 0..k {
+                        t *= &vals[idx][pt];
+                    }
+                }
+                size[pt] += Float::with_val(64, t.abs_ref());
+                *acc += t;
+            }
+        });
+        let extra = (roundings as f64).log2();
+        let lscale = size
+            .iter()
+            .map(|s| {
+                let (m, e) = s.to_f64_exp();
+                if m == 0.0 {
+                    0.0
+                } else {
+                    (m.abs().log2() + e as f64 + extra).max(0.0)
+                }
+            })
+            .collect();
+        Shadow::with_scale(out, lscale)
     }
 
     /// Relations of the roots that occur in `p` and of the roots those depend on.

@@ -271,6 +271,10 @@ impl Ring {
         adjoin: bool,
         special: Option<(&str, &str)>,
     ) -> AlgResult<Option<(Val, Option<usize>)>> {
+        if nd.leading_coefficient() > 0 && nd.sqrt().is_some() {
+            // a perfect square (of a polynomial) needs no factoring and no new root
+            return self.assemble(nd, &Bits::default()).map(|v| Some((v, None)));
+        }
         let class = self.class_of(nd)?;
         let mut fresh = None;
         if !self.state().basis.reduce(&class.t).0.is_zero() {
@@ -327,6 +331,15 @@ impl Ring {
         let vals = self.inner.var_values();
         let n = Shadow::leaf(self.inner.eval_poly(num, &vals));
         let d = Shadow::leaf(self.inner.eval_poly(den, &vals));
+        n.div(&d)
+    }
+
+    /// The shadow of `v` evaluated afresh from its normal form at the points' values,
+    /// with the error scale of its terms ([`Inner::eval_poly_scaled`]).
+    pub(crate) fn reevaluated(&self, v: &Val) -> Shadow {
+        let vals = self.inner.var_values();
+        let n = self.inner.eval_poly_scaled(&v.num, &vals);
+        let d = self.inner.eval_poly_scaled(&v.den, &vals);
         n.div(&d)
     }
 
@@ -428,7 +441,16 @@ impl Sym {
             let node = self.node.as_ref().map(|n| Node::sqrt(n, &cand, 1));
             return Ok(Sym::from_val(ring, cand, node));
         }
-        let sigma = ring.decide_sign(&target, &cand.sh, &what)?;
+        let sigma = match ring.decide_sign(&target, &cand.sh, &what) {
+            Ok(s) => s,
+            // the carried error scales may be too pessimistic: decide again from both
+            // values evaluated afresh from their normal forms
+            Err(_) if prescribed.is_none() => {
+                let target = ring.reevaluated(&self.val).sqrt();
+                ring.decide_sign(&target, &ring.reevaluated(&cand), &what)?
+            }
+            Err(e) => return Err(e),
+        };
         if sigma < 0 {
             cand = inner.v_neg(&cand);
         }

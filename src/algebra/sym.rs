@@ -17,11 +17,6 @@ use super::val::Val;
 use rug::{Complex, Rational};
 use std::sync::Arc;
 
-/// The largest numerator plus denominator, in terms, that the prover works with; beyond
-/// it a proof stops with [`AlgebraError::TooLarge`] (such values come from iterations
-/// written out in a claim, such as Newton steps, not from the paper's identities).
-pub const MAX_TERMS: usize = 8_000;
-
 /// An exact element of a [`Ring`]'s tower, with its numeric values at the domain points.
 ///
 /// Arithmetic goes through the standard operators (also on references); operations
@@ -60,8 +55,8 @@ impl Inner {
             return Err(AlgebraError::DivisionByZero);
         }
         let size = num.len() + den.len();
-        if size > MAX_TERMS {
-            return Err(AlgebraError::TooLarge(size, MAX_TERMS));
+        if size > self.opts.max_terms {
+            return Err(AlgebraError::TooLarge(size, self.opts.max_terms));
         }
         if num.is_zero() {
             return Ok((num, Poly::from_i64(&self.ctx, 1)));
@@ -115,8 +110,8 @@ impl Inner {
     /// denominator's leading coefficient positive, without a gcd.
     pub(crate) fn lowest_terms(&self, num: Poly, den: Poly) -> AlgResult<(Poly, Poly)> {
         let size = num.len() + den.len();
-        if size > MAX_TERMS {
-            return Err(AlgebraError::TooLarge(size, MAX_TERMS));
+        if size > self.opts.max_terms {
+            return Err(AlgebraError::TooLarge(size, self.opts.max_terms));
         }
         if num.is_zero() {
             return Ok((num, Poly::from_i64(&self.ctx, 1)));

@@ -79,5 +79,10 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     out.write_all(derivation(&claim.id, &claim.printed, &p).as_bytes())
         .and_then(|()| out.flush())
         .map_err(write_error("standard output"))?;
+    if let (Some(path), None, true) = (&args.certificate, &p.certificate, p.is_proved()) {
+        // proved, but a step recorded no derivation: say so rather than write nothing
+        eprintln!("eulertop: no certificate written to {path}: a step of this proof records no derivation");
+        return Ok(1);
+    }
     Ok(i32::from(!p.is_proved()))
 }

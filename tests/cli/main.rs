@@ -5,4 +5,5 @@ mod cli_claims;
 mod cli_hostile;
 mod jacobi;
 mod model_cli;
+mod prove_cli;
 mod report_figures;

@@ -143,7 +143,7 @@ pub(super) fn sides(
     let ring = ev.like().ring().clone();
     ring.note(format!(
         "ideal membership with the hint's multipliers: each component of lhs − rhs minus Σ qᵢ·Rᵢ is 0, where R = {} at the unknown value {} of {name}",
-        imp.equations(),
+        imp.stated_equations(),
         hint.value
     ));
     ring.assume(format!("{name}: {}", imp.branch()));
