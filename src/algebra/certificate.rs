@@ -229,7 +229,9 @@ fn table_lines(
             format!("[{}, {}, {}]", nf(s), nf(c), nf(d))
         })
     };
-    if table.kp.is_some() || table.half_kp.is_some() {
+    // a shift by a multiple of 4K needs no k' but still names K
+    let periods = [table.k_var, table.kp_var].iter().any(Option::is_some);
+    if table.kp.is_some() || table.half_kp.is_some() || periods {
         let kp = table.kp.as_ref().map_or("none".to_string(), nf);
         let name = |v: Option<usize>| v.map_or("none".to_string(), |j| names[kvar(j)].clone());
         let _ = writeln!(
