@@ -4,6 +4,6 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/ensure-deps.sh
-cargo build --release --quiet
+cargo build --release
 if [ "$#" -eq 0 ]; then set -- report; fi
 exec ./target/release/eulertop "$@"
