@@ -1,11 +1,9 @@
 //! The descending Landen (Gauss) chain of moduli and the evaluation of sn, cn, dn of a
 //! reduced argument by climbing it (DLMF 22.7.1–3, 22.10.4–6, 19.8.12): the
-//! multi-precision algorithm ([`Bottom::Sine`](super::Bottom::Sine)).
+//! multi-precision algorithm ([`Bottom::Sine`](super::bottom::Bottom::Sine)).
 
-use super::downcast::{as_float, into_r};
 use super::SpecialError;
 use crate::numbers::Real;
-use rug::Float;
 
 /// The chain `k = k₀ > k₁ > … > k_N` with `k_{n+1} = k_n²/(1+k_n')²`, descended until
 /// `k_N⁴ < ε/4`, kept as the arithmetic–geometric mean sequence `a₀ = 1`, `b₀ = k'`,
@@ -32,9 +30,6 @@ impl<R: Real> Chain<R> {
     /// `k_N⁴ < ε/4`, where DLMF 22.10.4–6 is exact to rounding.  `c_{n+1} = (a_n − b_n)/2`
     /// cancels, but only its absolute accuracy matters (it enters as `a_n + c_n s²`).
     pub(crate) fn new(k: &R, kp: &R) -> Result<Self, SpecialError> {
-        if let (Some(k), Some(kp)) = (as_float(k), as_float(kp)) {
-            return Chain::new_mpfr(k, kp).map(into_r);
-        }
         let one = k.one();
         // the stopping test c_N⁴ < (ε/4)·a_N⁴ needs no full precision: 64 bits (same
         // exponent range) suffice
@@ -72,10 +67,6 @@ impl<R: Real> Chain<R> {
     /// `cn ≥ √(k'/(1+k'))`, so at most `log2(1/k')` bits are lost; the caller adds that
     /// many guard bits.
     pub(crate) fn eval(&self, t: &R) -> (R, R, R) {
-        if let (Some(ch), Some(t)) = (as_float::<Self, Chain<Float>>(self), as_float(t)) {
-            let (s, c, d) = ch.eval_mpfr(t);
-            return (into_r(s), into_r(c), into_r(d));
-        }
         let one = t.one();
         let z = t.clone() * self.a_n.clone();
         let (sz, cz) = z.sin_cos();

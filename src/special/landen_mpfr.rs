@@ -1,8 +1,8 @@
 //! The Landen chain ([`Chain`]) for `rug::Float`: the same arithmetic as the generic
 //! build and climb, written with in-place MPFR operations, so that a level allocates
 //! nothing but the values it keeps (the generic code, through [`Real`](crate::numbers::Real),
-//! creates a new `Float` for every intermediate result).  Chosen at compile time by
-//! the type (`std::any::Any`), as the caches are.
+//! creates a new `Float` for every intermediate result).  Chosen statically by the
+//! chain strategy of `rug::Float` (`multi::Cached`).
 
 use super::landen::Chain;
 use super::SpecialError;

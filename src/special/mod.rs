@@ -88,16 +88,18 @@
 //! `K'(0)`), inconsistent input to [`jacobi_inverse`].
 
 mod agm;
-mod cache;
+mod bottom;
 mod complex;
 mod dd;
-mod downcast;
 mod ellint;
+mod fixed;
 mod glaisher;
 mod inverse;
 mod jacobi;
 mod landen;
 mod landen_mpfr;
+mod modulus;
+mod multi;
 mod reduce;
 #[cfg(test)]
 mod tests;
@@ -109,7 +111,6 @@ pub use ellint::ellipf;
 pub use glaisher::{jacobi, jacobi_complex, jacobi_m, JacobiFn};
 pub use inverse::jacobi_inverse;
 pub use jacobi::{am, sncndn, sncndn_m, sncndn_many};
-pub(crate) use jacobi::{Bottom, Modulus};
 
 use crate::numbers::Real;
 

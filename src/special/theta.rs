@@ -39,8 +39,8 @@
 //! `|u| ≤ 256 K`.  At imaginary argument the period in `y = πt/(2K')` is
 //! `πK/(2K') = −ln(q')/2`, also in double-double ([`Dd::ln`]).
 
+use super::bottom::Bottom;
 use super::dd::{two_prod, two_sum, with_value, Dd};
-use super::Bottom;
 use crate::numbers::Real;
 
 /// `π/2` as a double-double.
@@ -475,25 +475,6 @@ pub(crate) fn half_period_sign<R: Real>(j: i64, (s, c, d): (R, R, R)) -> (R, R, 
     } else {
         (-s, -c, d)
     }
-}
-
-/// [`Bottom::TanhSech`]: DLMF 22.10.7–9 for `κ'² = kp2` (exact at `κ = 1`, where
-/// `sn = tanh u`, `cn = dn = sech u`, DLMF 22.5.ii; the `κ'²` terms carry the first
-/// derivative in `κ` for `Dual` numbers and the leading correction for tiny `κ'`).
-pub(crate) fn tanh_sech<R: Real>(u: &R, kp2: &R) -> (R, R, R) {
-    let th = u.tanh();
-    let sech = u.cosh().recip();
-    if u.to_f64().abs() > 350.0 {
-        // sinh·cosh overflows; the κ'² terms (zero in value at κ = 1) are dropped
-        return (th, sech.clone(), sech);
-    }
-    let sh = u.sinh();
-    let quarter = kp2.mul_2si(-2);
-    // a·sech² = κ'²/4 (tanh − u sech²), a·tanh·sech = κ'²/4 (sinh − u sech) tanh
-    let s = th.clone() + quarter.clone() * (th.clone() - u.clone() * sech.sqr());
-    let c = sech.clone() - quarter.clone() * (sh.clone() - u.clone() * sech.clone()) * th.clone();
-    let d = sech.clone() + quarter * (sh + u.clone() * sech.clone()) * th;
-    (s, c, d)
 }
 
 #[cfg(test)]
