@@ -54,6 +54,12 @@ pub(crate) const SERIES_MAX_M: f64 = 0.81;
 /// quarter period known to 150 bits.
 const J_FAST: i64 = 256;
 
+/// Largest `ε⁴` for which the series takes the nome in `f64`: the scale's error is then
+/// below `2⁻⁶⁵` (measured below `E·2⁻⁴⁸` with `E = 2q⁴ ≤ 2⁻¹⁷`, test
+/// `f64_nome_scale_against_mpfr`), as the fast reduction needs (see
+/// [`Theta::with_bottom`]); above it (`κ ≳ 0.7`) `ε` is a double-double.
+const NOME_F64_MAX_E4: f64 = 1.0 / (1u64 << 18) as f64;
+
 /// Per-modulus data of the fixed-precision theta bottoms.
 #[derive(Clone, Debug)]
 pub(crate) struct Theta<R> {
@@ -223,13 +229,14 @@ impl<R: Real> Theta<R> {
         let neg = w.to_f64() < 0.0;
         let (y, y_lo) = if neg { (-w, -w_lo) } else { (w, w_lo) };
         let one = y.one();
-        let two = one.from_i64(2);
-        let h0 = y.mul_2si(1).exp_m1();
-        // e^{2y} − 1 at y + y_lo
-        let h = h0.clone() + (one.clone() + h0) * y.from_f64(2.0 * y_lo);
-        let g = (one.clone() + h.clone()).sqrt(); // e^y
+        // e = e^y − 1 at y + y_lo (one `expm1`, no square root on the way to sinh y),
+        // g = e^y, sinh y = e(1 + 1/g)/2, h = e^{2y} − 1 = e(e + 2)
+        let e0 = y.exp_m1();
+        let e = e0.clone() + (one.clone() + e0) * y.from_f64(y_lo);
+        let g = one.clone() + e.clone();
         let rg = g.recip();
-        let sh = h.clone() * rg.clone() * one.mul_2si(-1); // sinh y
+        let sh = e.clone() * (one.clone() + rg.clone()) * one.mul_2si(-1);
+        let h = e.clone() * (e + one.mul_2si(1));
         let x = -sh.sqr();
         let [s_, c_, d_, h_] = self.sums(&x);
         let den = one.clone() + c_.clone();
@@ -238,7 +245,7 @@ impl<R: Real> Theta<R> {
         let b_c = r_c.clone() * (one.clone() + d_.clone()) + (d_ - c_.clone());
         let b_d = r_d.clone() * (one.clone() + h_.clone()) + (h_ - c_);
         let (sn, cn, dn) = if j & 1 == 0 {
-            let rr = (h.clone() + two).recip();
+            let rr = (h.clone() + one.mul_2si(1)).recip();
             let th = h * rr.clone();
             let sech = g.mul_2si(1) * rr;
             let r = den.recip();
@@ -320,8 +327,8 @@ impl<R: Real> Nome<R> {
         let opt = t.add_r(&one);
         let den = t.sqr().add_r(&one).mul(&opt.sqr()).mul_2si(1);
         let eps_f = a.hi.clone() / den.hi.clone();
-        // the f64 nome is enough while E = 2q⁴ ≤ 2⁻²³ (its error then stays below 2⁻⁷⁰)
-        let precise = precise || eps_f.to_f64().powi(4) > 2f64.powi(-24);
+        // the f64 nome is enough while ε⁴ ≤ NOME_F64_MAX_E4 (the scale to 2⁻⁶⁵)
+        let precise = precise || eps_f.to_f64().powi(4) > NOME_F64_MAX_E4;
         let eps = if precise {
             a.div(&den).norm()
         } else {
@@ -482,6 +489,41 @@ mod tests {
     use super::*;
     use rug::float::Constant;
     use rug::Float;
+
+    /// The series scale `π/(2K) = AGM(1, κ')` from the nome in `f64` (where
+    /// [`Theta::with_bottom`] takes it, up to `κ ≈ 0.7`) against a 256-bit AGM, to the
+    /// `2⁻⁶⁴` the fast reduction assumes; moduli above that take the double-double nome.
+    #[test]
+    fn f64_nome_scale_against_mpfr() {
+        let p = 256;
+        let mut f64_nomes = 0;
+        for i in 1..=2000 {
+            let k = 0.9 * f64::from(i) / 2000.0;
+            let k2 = Dd::from(k).sqr();
+            let (s, e) = two_sum(1.0, -k2.v());
+            let mc = Dd {
+                hi: s,
+                lo: e - k2.lo,
+            }
+            .norm();
+            let th = Theta::with_bottom(&k2, &mc, false, false);
+            if th.precise {
+                assert!(k > 0.6, "k = {k} takes the double-double nome");
+                continue;
+            }
+            f64_nomes += 1;
+            let kf = Float::with_val(p, k);
+            let kp = Float::with_val(p, 1 - Float::with_val(p, &kf * &kf)).sqrt();
+            let want = Float::with_val(p, 1).agm(&kp);
+            let got = Float::with_val(p, th.scale.hi) + th.scale.lo;
+            let rel = (got - &want).abs().to_f64() / want.to_f64();
+            assert!(rel < 2f64.powi(-64), "k = {k}: scale error {rel:e}");
+        }
+        assert!(
+            f64_nomes > 1300,
+            "{f64_nomes} moduli of 2000 take the f64 nome"
+        );
+    }
 
     /// `scale` and `period` in double-double against MPFR (to 2⁻⁸⁴; the reduction needs
     /// 2⁻⁸⁰ for `|j| ≤ 256` and 20 bits of cancellation) (`π/(2K)`, `π/(2K')`,
