@@ -63,6 +63,9 @@ pub(crate) fn with_fma<T>(f: impl FnOnce() -> T) -> T {
 /// For `f64` this is exactly `v` (also for `v = −0`).
 #[inline(always)]
 pub(crate) fn with_value<R: Real>(x: &R, v: f64) -> R {
+    if R::PLAIN_F64 {
+        return x.from_f64(v);
+    }
     x.from_f64(v) - (x.from_f64(x.to_f64()) - x.clone())
 }
 
