@@ -5,6 +5,7 @@
 //! chain strategy of `rug::Float` (`multi::Cached`).
 
 use super::landen::Chain;
+use super::sincos::sin_cos_into;
 use super::SpecialError;
 use rug::{Assign, Float};
 
@@ -63,7 +64,7 @@ impl Chain<Float> {
         let p = t.prec();
         let mut z = Float::with_val(p, t * &self.a_n);
         let (mut s, mut c) = (Float::new(p), Float::new(p));
-        (&mut s, &mut c).assign(z.sin_cos_ref());
+        sin_cos_into(&z, &mut s, &mut c);
         // s = sin z − (k_N²/4)(z − sin z cos z) cos z
         let mut tmp = Float::with_val(p, &s * &c);
         z -= &tmp;
