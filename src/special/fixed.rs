@@ -56,13 +56,16 @@ pub(crate) fn sncndn_fixed<R: Real>(u: &R, spec: Spec<'_, R>) -> Result<(R, R, R
     )
 }
 
+/// An error with the index of the argument it is about.
+pub(crate) type AtIndex = (usize, SpecialError);
+
 /// [`sncndn_fixed`] for every `u` of `us` with one modulus, looked up once; an error
 /// comes with the index of its argument.
 #[inline(always)]
 pub(crate) fn sncndn_fixed_many<R: Real>(
     us: &[R],
     spec: Spec<'_, R>,
-) -> Result<Vec<(R, R, R)>, (usize, SpecialError)> {
+) -> Result<Vec<(R, R, R)>, AtIndex> {
     let mut out = Vec::with_capacity(us.len());
     if R::PLAIN_F64 {
         spec.with_f64(|sf| {

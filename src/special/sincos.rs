@@ -1,8 +1,9 @@
 //! `sin` and `cos` of a multi-precision argument, the one transcendental evaluation at
 //! the bottom of the Landen chain: from Arb (FLINT's ball arithmetic, `arb_sin_cos`)
-//! from [`ARB_MIN_PREC`] bits on, else from MPFR.  Measured on the reduced arguments of
-//! the chain, Arb takes about 5.6 µs at 1088 bits where `mpfr_sin_cos` takes 7.8 µs, and
-//! a whole evaluation of sn, cn, dn is 10–15 % faster from 100 to 4000 bits.  Arb
+//! from [`ARB_MIN_PREC`] bits on, else from MPFR.  Measured at 1088 bits, Arb's
+//! `sin_cos` takes 5.8 µs (through python-flint, call included) where `mpfr_sin_cos`
+//! takes 7.8 µs, and a whole evaluation of sn, cn, dn is 10–15 % faster from 100 to
+//! 4000 bits (`reports/performance.md`).  Arb
 //! returns balls that contain the exact values; their midpoints are rounded to the
 //! target precision, and a ball relatively wider than `2^(−prec)` (which does not happen
 //! for these arguments) falls back to MPFR, so the result is within one ulp.
