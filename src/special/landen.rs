@@ -11,8 +11,8 @@ use crate::numbers::Real;
 /// (DLMF 19.8.1–2), where `k_n = c_n/a_n` and `1 + k_n = a_{n−1}/a_n` (Gauss's
 /// transformation, DLMF 19.8.12), so a level costs one product and one square root.
 pub(crate) struct Chain<R> {
-    /// One entry per level n = 1..N: `(a_{n−1}, a_n, c_n)`.
-    pub(super) levels: Vec<[R; 3]>,
+    /// One entry per level n = 1..N: `(a_n, c_n)` (`a_0 = 1`).
+    pub(super) levels: Vec<[R; 2]>,
     /// `a_N = 1/Π(1 + k_n)`.
     pub(super) a_n: R,
     /// `k_N²/4`.
@@ -45,7 +45,7 @@ impl<R: Real> Chain<R> {
             let a1 = (a.clone() + b.clone()).mul_2si(-1);
             let c1 = (a.clone() - b.clone()).mul_2si(-1);
             b = (a.clone() * b).sqrt();
-            levels.push([a, a1.clone(), c1.clone()]);
+            levels.push([a1.clone(), c1.clone()]);
             (a, c) = (a1, c1);
         }
         let k2q = (c / a.clone()).sqr().mul_2si(-2);
@@ -72,8 +72,12 @@ impl<R: Real> Chain<R> {
         let (sz, cz) = z.sin_cos();
         let corr = (z - sz.clone() * cz.clone()) * self.k2q.clone();
         let mut s = sz - corr * cz;
-        for [a_prev, a_cur, c_cur] in self.levels.iter().rev() {
-            s = a_prev.clone() * s.clone() / (a_cur.clone() + c_cur.clone() * s.sqr());
+        for (n, [a_cur, c_cur]) in self.levels.iter().enumerate().rev() {
+            let a_prev = match n {
+                0 => one.clone(),
+                _ => self.levels[n - 1][0].clone(),
+            };
+            s = a_prev * s.clone() / (a_cur.clone() + c_cur.clone() * s.sqr());
         }
         let c = ((one.clone() - s.clone()) * (one + s.clone())).sqrt();
         let d = (self.kp2.clone() + self.k2.clone() * c.sqr()).sqrt();

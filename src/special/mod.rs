@@ -48,8 +48,8 @@
 //!   `sn(t/Π(1+k_n), k_N)` comes from `sin`/`cos` (Arb's `arb_sin_cos`, module
 //!   `sincos`, faster than MPFR's) with the first-order correction
 //!   DLMF 22.10.4–6, then only `sn` is carried up the chain (DLMF 22.7.1; one division
-//!   and three products per level) and `cn = √((1−sn)(1+sn))`, `dn = √(k'² + k²cn²)`
-//!   (DLMF 22.6.1) at the top; since `cn(t) ≥ √(k'/(1+k'))` for `|t| ≤ K/2` this loses at
+//!   and three products per level) and `cn = √((1−sn)(1+sn))` (DLMF 22.6.1) at the top,
+//!   `dn` from the top step (DLMF 22.7.3; for `rug::Float`, else `√(k'² + k²cn²)`); since `cn(t) ≥ √(k'/(1+k'))` for `|t| ≤ K/2` this loses at
 //!   most `log2(1/k')` bits, which are added to the working precision.  The quadrant
 //!   `j mod 4` is applied with the quarter-period shifts DLMF 22.4.3
 //!   (`sn(t+K) = cd t`, `cn(t+K) = −k' sd t`, `dn(t+K) = k' nd t`), which keep relative
