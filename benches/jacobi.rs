@@ -1,6 +1,7 @@
 //! Criterion benchmarks of sn+cn+dn (one call returns all three; also the slice call
 //! `sncndn_many`): f64, 1024- and 4096-bit MPFR, real argument, with one modulus for the
-//! batch or a new modulus on every call ("fresh k"), plus complex f64.
+//! batch (k = 0.8, and in f64 also k = 0.95, the imaginary-argument series) or a new
+//! modulus on every call ("fresh k"), plus complex f64.
 //! `cargo bench --bench jacobi`.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
@@ -33,6 +34,16 @@ fn bench(c: &mut Criterion) {
             let mut acc = 0.0;
             for u in &us {
                 let (s, c, d) = sncndn(black_box(u), black_box(&0.8)).unwrap();
+                acc += s + c + d;
+            }
+            acc
+        })
+    });
+    g.bench_function("f64 sncndn k=0.95 x1000", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for u in &us {
+                let (s, c, d) = sncndn(black_box(u), black_box(&0.95)).unwrap();
                 acc += s + c + d;
             }
             acc

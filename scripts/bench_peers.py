@@ -8,7 +8,8 @@ Needs: pip install mpmath python-flint scipy; GSL (apt libgsl-dev, installed by 
 script when missing) and gcc for scripts/bench_gsl.c.
 
 Batch (the same everywhere): u_i = -10 + 20 (i + 0.5)/n, and either one modulus
-k = 0.8 for the whole batch ("fixed") or a new modulus for every call
+k = 0.8 for the whole batch ("fixed"; for eulertop and GSL also k = 0.95, where
+eulertop takes the imaginary-argument series) or a new modulus for every call
 k_i = 0.05 + 0.94 frac(i phi), phi the golden ratio ("fresh"); peers that take the
 parameter get m = k^2.
   * eulertop   f64 and MPFR: examples/bench_batch.rs (in-process loop, one sncndn call
@@ -124,8 +125,8 @@ def gsl_harness():
     return exe if r.returncode == 0 else None
 
 
-def gsl(exe, mode):
-    out = subprocess.run([exe, str(N_F64), str(REPEATS), mode], check=True,
+def gsl(exe, mode, *k):
+    out = subprocess.run([exe, str(N_F64), str(REPEATS), mode, *k], check=True,
                          capture_output=True, text=True).stdout
     return tuple(float(x) for x in out.split())
 
@@ -146,6 +147,7 @@ def main():
     fl = lambda fresh: "True" if fresh else "False"
     jobs = [
         ("eulertop f64 fixed", lambda: rust(53, N_F64)),
+        ("eulertop f64 fixed 0.95", lambda: rust(53, N_F64, "k=0.95")),
         ("eulertop f64 fresh", lambda: rust(53, N_F64, "fresh")),
         ("eulertop f64 slice", lambda: rust(53, N_F64, "many")),
         ("scipy f64 fixed", lambda: py(PY_SCIPY.format(n=5 * N_F64, reps=REPEATS, fresh=False))),
@@ -154,6 +156,7 @@ def main():
     ]
     if exe:
         jobs += [("GSL f64 fixed", lambda: gsl(exe, "fixed")),
+                 ("GSL f64 fixed 0.95", lambda: gsl(exe, "fixed", "0.95")),
                  ("GSL f64 fresh", lambda: gsl(exe, "fresh"))]
     for bits in (1024, 4096):
         n = N_MP[bits]
@@ -178,8 +181,8 @@ def fmt(t):
 
 def write(r, v, load):
     cmd = {
-        "eulertop": "`target/release/examples/bench_batch BITS N REPEATS [fresh|many]`",
-        "GSL": "`target/bench_gsl N REPEATS fixed|fresh` (scripts/bench_gsl.c)",
+        "eulertop": "`target/release/examples/bench_batch BITS N REPEATS [fresh|many|k=K]`",
+        "GSL": "`target/bench_gsl N REPEATS fixed|fresh [K]` (scripts/bench_gsl.c)",
         "scipy": "`scipy.special.ellipj(u, m)` on the arrays",
         "flint": "`acb.modular_theta(u/(2K), τ)` and theta quotients",
         "mpmath": "`mpmath.ellipfun` for sn, cn, dn",
@@ -191,7 +194,8 @@ def write(r, v, load):
         "## Jacobi elliptic functions",
         "",
         "sn + cn + dn of a real argument, batch u_i = -10 + 20(i+1/2)/n, either one modulus",
-        "k = 0.8 for the batch (*fixed*) or a new modulus for every call,",
+        "k = 0.8 for the batch (*fixed*; also k = 0.95, where eulertop takes the",
+        "imaginary-argument series) or a new modulus for every call,",
         "k_i = 0.05 + 0.94·frac(i·φ) (*fresh*; peers taking the parameter get m = k²).",
         "Wall-clock time per evaluation, median (minimum) over %d rounds × %d batches; each" % (ROUNDS, REPEATS),
         "tool in its own process, the tools interleaved round by round.  Reproduce:",
@@ -203,9 +207,12 @@ def write(r, v, load):
         "|---|---|---|---|---|",
     ]
     order = [("eulertop f64 fixed", "eulertop", "f64", "fixed"),
+             ("eulertop f64 fixed 0.95", "eulertop", "f64", "fixed, k = 0.95"),
              ("eulertop f64 fresh", "eulertop", "f64", "fresh"),
              ("eulertop f64 slice", "eulertop", "f64", "fixed, `sncndn_many`"),
-             ("GSL f64 fixed", "GSL", "f64", "fixed"), ("GSL f64 fresh", "GSL", "f64", "fresh"),
+             ("GSL f64 fixed", "GSL", "f64", "fixed"),
+             ("GSL f64 fixed 0.95", "GSL", "f64", "fixed, k = 0.95"),
+             ("GSL f64 fresh", "GSL", "f64", "fresh"),
              ("scipy f64 fixed", "scipy", "f64", "fixed"), ("scipy f64 fresh", "scipy", "f64", "fresh"),
              ("eulertop 1024 fixed", "eulertop", "1024 bits", "fixed"),
              ("eulertop 1024 fresh", "eulertop", "1024 bits", "fresh"),

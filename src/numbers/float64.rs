@@ -51,6 +51,7 @@ impl Scalar for f64 {
 
 impl Real for f64 {
     const FIXED: bool = true;
+    const PLAIN_F64: bool = true;
     fn prec(&self) -> u32 {
         53
     }

@@ -155,6 +155,35 @@ pub trait Real: Scalar + PartialOrd {
     /// (am, F, the inverse, complex arguments) is refused with a clear error rather than
     /// iterated on symbols.  `false` for every numeric type.
     const BY_RULE: bool = false;
+    /// Is every value of this type a plain `f64` (`to_f64` loses nothing and
+    /// `x.from_f64(v)` is `v`)?  Then data that depends on a parameter only (e.g. the
+    /// per-modulus data of the Jacobi functions in [`crate::special`]) can be computed in
+    /// `f64` once and shared between calls.  `true` for `f64` only (`Dual<f64>` carries
+    /// derivative parts).
+    ///
+    /// ```
+    /// use eulertop::numbers::{Dual, Real};
+    /// assert!(<f64 as Real>::PLAIN_F64 && !<Dual<f64> as Real>::PLAIN_F64);
+    /// ```
+    const PLAIN_F64: bool = false;
+    /// The value as an MPFR number when the type is one (`rug::Float`), so that
+    /// algorithms can take in-place MPFR paths and share multi-precision data between
+    /// calls; `None` for every other type.
+    ///
+    /// ```
+    /// use eulertop::numbers::Real;
+    /// let x = rug::Float::with_val(128, 2);
+    /// assert_eq!(x.as_mpfr(), Some(&x));
+    /// assert!(2.0_f64.as_mpfr().is_none());
+    /// ```
+    fn as_mpfr(&self) -> Option<&rug::Float> {
+        None
+    }
+    /// An MPFR number as a value of this type: `Some` exactly for the types whose
+    /// [`Real::as_mpfr`] answers (the inverse of it).
+    fn from_mpfr(_x: rug::Float) -> Option<Self> {
+        None
+    }
     /// Why a value is meaningless, for number systems that record failures inside
     /// operators (the prover's symbolic values); `None` for the others.
     fn failure(&self) -> Option<String> {

@@ -94,6 +94,12 @@ macro_rules! unary {
 
 impl Real for Float {
     const FIXED: bool = false;
+    fn as_mpfr(&self) -> Option<&Float> {
+        Some(self)
+    }
+    fn from_mpfr(x: Float) -> Option<Self> {
+        Some(x)
+    }
     fn prec(&self) -> u32 {
         Float::prec(self)
     }

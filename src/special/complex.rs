@@ -1,7 +1,7 @@
 //! sn, cn, dn of a complex argument with a real modulus.
 
-use super::jacobi::{sncndn_imp, Spec};
-use super::Modulus;
+use super::jacobi::sncndn_imp;
+use super::modulus::{Modulus, Spec};
 use super::{check_finite, check_modulus_below_one, show, SpecialError, GUARD};
 use crate::numbers::{ComplexScalar, Real, Scalar};
 

@@ -63,6 +63,9 @@ pub(crate) fn with_fma<T>(f: impl FnOnce() -> T) -> T {
 /// For `f64` this is exactly `v` (also for `v = −0`).
 #[inline(always)]
 pub(crate) fn with_value<R: Real>(x: &R, v: f64) -> R {
+    if R::PLAIN_F64 {
+        return x.from_f64(v);
+    }
     x.from_f64(v) - (x.from_f64(x.to_f64()) - x.clone())
 }
 
@@ -152,14 +155,18 @@ impl<R: Real> Dd<R> {
         self.mul(self)
     }
 
-    /// `self / o`: one correction of the quotient of the leading parts.
+    /// `self / o`: one correction of the quotient of the leading parts (the correction
+    /// divided by `o` through `1/o`, formed alongside the quotient, so that the two
+    /// divisions overlap).
     #[inline(always)]
     pub(crate) fn div(&self, o: &Self) -> Self {
         let hi = self.hi.clone() / o.hi.clone();
-        let (q, b) = (hi.to_f64(), o.v());
+        let b = o.v();
+        let rb = 1.0 / b;
+        let q = hi.to_f64();
         let (p, e) = two_prod(q, b);
         let r = ((self.v() - p) - e) + (self.lo - q * o.lo);
-        Dd { hi, lo: r / b }
+        Dd { hi, lo: r * rb }
     }
 
     /// `√self` (`self > 0`): one Newton correction of the root of the leading part.

@@ -107,7 +107,7 @@ pub fn ellipf<R: Real>(phi: &R, k: &R) -> Result<R, SpecialError> {
     let half_pi = pw.pi().mul_2si(-1);
     let r = if q == 0 {
         pw.clone()
-    } else if pw.prec() < w {
+    } else if R::FIXED {
         let t = PI_TRIPLE;
         reduce_dd(&pw, &half_pi, q, [t[0] / 2.0, t[1] / 2.0, t[2] / 2.0])
     } else {

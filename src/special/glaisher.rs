@@ -2,8 +2,9 @@
 //! `pq = pr/qr` for `p, q ∈ {s, c, d, n}`, `p ≠ q`, with `sn, cn, dn` and `nn = 1`.
 
 use super::complex::sncndn_complex;
-use super::jacobi::{sncndn_imp, Spec};
-use super::{check_finite, check_modulus, show, Modulus, SpecialError};
+use super::jacobi::sncndn_imp;
+use super::modulus::{Modulus, Spec};
+use super::{check_finite, check_modulus, show, SpecialError};
 use crate::numbers::{ComplexScalar, Real, Scalar};
 
 /// One of the twelve Jacobi elliptic functions (DLMF 22.2.4–9): `sn cn dn cd dc ns nc

@@ -1,11 +1,9 @@
 //! The descending Landen (Gauss) chain of moduli and the evaluation of sn, cn, dn of a
 //! reduced argument by climbing it (DLMF 22.7.1–3, 22.10.4–6, 19.8.12): the
-//! multi-precision algorithm ([`Bottom::Sine`](super::Bottom::Sine)).
+//! multi-precision algorithm ([`Bottom::Sine`](super::bottom::Bottom::Sine)).
 
-use super::downcast::{as_float, into_r};
 use super::SpecialError;
 use crate::numbers::Real;
-use rug::Float;
 
 /// The chain `k = k₀ > k₁ > … > k_N` with `k_{n+1} = k_n²/(1+k_n')²`, descended until
 /// `k_N⁴ < ε/4`, kept as the arithmetic–geometric mean sequence `a₀ = 1`, `b₀ = k'`,
@@ -13,8 +11,8 @@ use rug::Float;
 /// (DLMF 19.8.1–2), where `k_n = c_n/a_n` and `1 + k_n = a_{n−1}/a_n` (Gauss's
 /// transformation, DLMF 19.8.12), so a level costs one product and one square root.
 pub(crate) struct Chain<R> {
-    /// One entry per level n = 1..N: `(a_{n−1}, a_n, c_n)`.
-    pub(super) levels: Vec<[R; 3]>,
+    /// One entry per level n = 1..N: `(a_n, c_n)` (`a_0 = 1`).
+    pub(super) levels: Vec<[R; 2]>,
     /// `a_N = 1/Π(1 + k_n)`.
     pub(super) a_n: R,
     /// `k_N²/4`.
@@ -32,9 +30,6 @@ impl<R: Real> Chain<R> {
     /// `k_N⁴ < ε/4`, where DLMF 22.10.4–6 is exact to rounding.  `c_{n+1} = (a_n − b_n)/2`
     /// cancels, but only its absolute accuracy matters (it enters as `a_n + c_n s²`).
     pub(crate) fn new(k: &R, kp: &R) -> Result<Self, SpecialError> {
-        if let (Some(k), Some(kp)) = (as_float(k), as_float(kp)) {
-            return Chain::new_mpfr(k, kp).map(into_r);
-        }
         let one = k.one();
         // the stopping test c_N⁴ < (ε/4)·a_N⁴ needs no full precision: 64 bits (same
         // exponent range) suffice
@@ -50,7 +45,7 @@ impl<R: Real> Chain<R> {
             let a1 = (a.clone() + b.clone()).mul_2si(-1);
             let c1 = (a.clone() - b.clone()).mul_2si(-1);
             b = (a.clone() * b).sqrt();
-            levels.push([a, a1.clone(), c1.clone()]);
+            levels.push([a1.clone(), c1.clone()]);
             (a, c) = (a1, c1);
         }
         let k2q = (c / a.clone()).sqr().mul_2si(-2);
@@ -72,17 +67,17 @@ impl<R: Real> Chain<R> {
     /// `cn ≥ √(k'/(1+k'))`, so at most `log2(1/k')` bits are lost; the caller adds that
     /// many guard bits.
     pub(crate) fn eval(&self, t: &R) -> (R, R, R) {
-        if let (Some(ch), Some(t)) = (as_float::<Self, Chain<Float>>(self), as_float(t)) {
-            let (s, c, d) = ch.eval_mpfr(t);
-            return (into_r(s), into_r(c), into_r(d));
-        }
         let one = t.one();
         let z = t.clone() * self.a_n.clone();
         let (sz, cz) = z.sin_cos();
         let corr = (z - sz.clone() * cz.clone()) * self.k2q.clone();
         let mut s = sz - corr * cz;
-        for [a_prev, a_cur, c_cur] in self.levels.iter().rev() {
-            s = a_prev.clone() * s.clone() / (a_cur.clone() + c_cur.clone() * s.sqr());
+        for (n, [a_cur, c_cur]) in self.levels.iter().enumerate().rev() {
+            let a_prev = match n {
+                0 => one.clone(),
+                _ => self.levels[n - 1][0].clone(),
+            };
+            s = a_prev * s.clone() / (a_cur.clone() + c_cur.clone() * s.sqr());
         }
         let c = ((one.clone() - s.clone()) * (one + s.clone())).sqrt();
         let d = (self.kp2.clone() + self.k2.clone() * c.sqr()).sqrt();

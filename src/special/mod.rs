@@ -43,12 +43,13 @@
 //!   10 steps at 4096 bits), kept as the AGM sequence `aₙ, bₙ, cₙ` (DLMF 19.8.1–2) with
 //!   `kₙ = cₙ/aₙ`, `1 + kₙ = aₙ₋₁/aₙ`: one product and one square root per level.  The
 //!   quarter period follows as `K = (π/2)·Π(1+k_n)·(1+k_N²/4) = π(1 + k_N²/4)/(2a_N)`.
-//! * **sn, cn, dn of a real argument, multi-precision** (module `jacobi`): the argument
+//! * **sn, cn, dn of a real argument, multi-precision** (module `multi`): the argument
 //!   is reduced to `u = jK + t`, `|t| ≤ K/2`; at the bottom of the chain
-//!   `sn(t/Π(1+k_n), k_N)` comes from `sin`/`cos` with the first-order correction
+//!   `sn(t/Π(1+k_n), k_N)` comes from `sin`/`cos` (Arb's `arb_sin_cos`, module
+//!   `sincos`, faster than MPFR's) with the first-order correction
 //!   DLMF 22.10.4–6, then only `sn` is carried up the chain (DLMF 22.7.1; one division
-//!   and three products per level) and `cn = √((1−sn)(1+sn))`, `dn = √(k'² + k²cn²)`
-//!   (DLMF 22.6.1) at the top; since `cn(t) ≥ √(k'/(1+k'))` for `|t| ≤ K/2` this loses at
+//!   and three products per level) and `cn = √((1−sn)(1+sn))` (DLMF 22.6.1) at the top,
+//!   `dn` from the top step (DLMF 22.7.3; for `rug::Float`, else `√(k'² + k²cn²)`); since `cn(t) ≥ √(k'/(1+k'))` for `|t| ≤ K/2` this loses at
 //!   most `log2(1/k')` bits, which are added to the working precision.  The quadrant
 //!   `j mod 4` is applied with the quarter-period shifts DLMF 22.4.3
 //!   (`sn(t+K) = cd t`, `cn(t+K) = −k' sd t`, `dn(t+K) = k' nd t`), which keep relative
@@ -88,17 +89,20 @@
 //! `K'(0)`), inconsistent input to [`jacobi_inverse`].
 
 mod agm;
-mod cache;
+mod bottom;
 mod complex;
 mod dd;
-mod downcast;
 mod ellint;
+mod fixed;
 mod glaisher;
 mod inverse;
 mod jacobi;
 mod landen;
 mod landen_mpfr;
+mod modulus;
+mod multi;
 mod reduce;
+mod sincos;
 #[cfg(test)]
 mod tests;
 mod theta;
@@ -109,7 +113,6 @@ pub use ellint::ellipf;
 pub use glaisher::{jacobi, jacobi_complex, jacobi_m, JacobiFn};
 pub use inverse::jacobi_inverse;
 pub use jacobi::{am, sncndn, sncndn_m, sncndn_many};
-pub(crate) use jacobi::{Bottom, Modulus};
 
 use crate::numbers::Real;
 

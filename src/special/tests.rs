@@ -3,10 +3,13 @@
 //! `t-theta.c`): each bottom is an exact formula for every modulus, so where two of them
 //! apply they must agree to rounding.
 
+use super::bottom::tanh_sech;
+use super::bottom::Bottom;
 use super::dd::Dd;
-use super::jacobi::{reduced, sncndn_theta};
-use super::theta::{tanh_sech, Theta};
-use super::{Bottom, Modulus};
+use super::fixed::sncndn_theta;
+use super::modulus::Modulus;
+use super::multi::reduced;
+use super::theta::Theta;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rug::Float;

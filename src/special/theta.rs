@@ -39,8 +39,8 @@
 //! `|u| ≤ 256 K`.  At imaginary argument the period in `y = πt/(2K')` is
 //! `πK/(2K') = −ln(q')/2`, also in double-double ([`Dd::ln`]).
 
+use super::bottom::Bottom;
 use super::dd::{two_prod, two_sum, with_value, Dd};
-use super::Bottom;
 use crate::numbers::Real;
 
 /// `π/2` as a double-double.
@@ -53,6 +53,12 @@ pub(crate) const SERIES_MAX_M: f64 = 0.81;
 /// reduced argument cancels by more than 20 bits) the caller reduces with the
 /// quarter period known to 150 bits.
 const J_FAST: i64 = 256;
+
+/// Largest `ε⁴` for which the series takes the nome in `f64`: the scale's error is then
+/// below `2⁻⁶⁵` (measured below `E·2⁻⁴⁸` with `E = 2q⁴ ≤ 2⁻¹⁷`, test
+/// `f64_nome_scale_against_mpfr`), as the fast reduction needs (see
+/// [`Theta::with_bottom`]); above it (`κ ≳ 0.7`) `ε` is a double-double.
+const NOME_F64_MAX_E4: f64 = 1.0 / (1u64 << 18) as f64;
 
 /// Per-modulus data of the fixed-precision theta bottoms.
 #[derive(Clone, Debug)]
@@ -80,13 +86,15 @@ pub(crate) struct Theta<R> {
 /// `t + (x − t⁴)/(4t³)` with `x − t⁴` formed exactly.
 #[inline(always)]
 fn quarter_root<R: Real>(x: &Dd<R>) -> Dd<R> {
+    // 1/(4t³) = t/(4t⁴) ≈ t/(4x): the division overlaps the square roots
+    let inv4x = 0.25 / x.v();
     let t = x.hi.sqrt().sqrt();
     let tv = t.to_f64();
     let t2 = Dd::from(t.clone()).sqr();
     let t4 = t2.sqr();
     let resid = (x.v() - t4.v()) + (x.lo - t4.lo);
     Dd {
-        lo: resid / (4.0 * tv * tv * tv),
+        lo: resid * (tv * inv4x),
         hi: t,
     }
 }
@@ -223,13 +231,14 @@ impl<R: Real> Theta<R> {
         let neg = w.to_f64() < 0.0;
         let (y, y_lo) = if neg { (-w, -w_lo) } else { (w, w_lo) };
         let one = y.one();
-        let two = one.from_i64(2);
-        let h0 = y.mul_2si(1).exp_m1();
-        // e^{2y} − 1 at y + y_lo
-        let h = h0.clone() + (one.clone() + h0) * y.from_f64(2.0 * y_lo);
-        let g = (one.clone() + h.clone()).sqrt(); // e^y
+        // e = e^y − 1 at y + y_lo (one `expm1`, no square root on the way to sinh y),
+        // g = e^y, sinh y = e(1 + 1/g)/2, h = e^{2y} − 1 = e(e + 2)
+        let e0 = y.exp_m1();
+        let e = e0.clone() + (one.clone() + e0) * y.from_f64(y_lo);
+        let g = one.clone() + e.clone();
         let rg = g.recip();
-        let sh = h.clone() * rg.clone() * one.mul_2si(-1); // sinh y
+        let sh = e.clone() * (one.clone() + rg.clone()) * one.mul_2si(-1);
+        let h = e.clone() * (e + one.mul_2si(1));
         let x = -sh.sqr();
         let [s_, c_, d_, h_] = self.sums(&x);
         let den = one.clone() + c_.clone();
@@ -238,7 +247,7 @@ impl<R: Real> Theta<R> {
         let b_c = r_c.clone() * (one.clone() + d_.clone()) + (d_ - c_.clone());
         let b_d = r_d.clone() * (one.clone() + h_.clone()) + (h_ - c_);
         let (sn, cn, dn) = if j & 1 == 0 {
-            let rr = (h.clone() + two).recip();
+            let rr = (h.clone() + one.mul_2si(1)).recip();
             let th = h * rr.clone();
             let sech = g.mul_2si(1) * rr;
             let r = den.recip();
@@ -320,8 +329,8 @@ impl<R: Real> Nome<R> {
         let opt = t.add_r(&one);
         let den = t.sqr().add_r(&one).mul(&opt.sqr()).mul_2si(1);
         let eps_f = a.hi.clone() / den.hi.clone();
-        // the f64 nome is enough while E = 2q⁴ ≤ 2⁻²³ (its error then stays below 2⁻⁷⁰)
-        let precise = precise || eps_f.to_f64().powi(4) > 2f64.powi(-24);
+        // the f64 nome is enough while ε⁴ ≤ NOME_F64_MAX_E4 (the scale to 2⁻⁶⁵)
+        let precise = precise || eps_f.to_f64().powi(4) > NOME_F64_MAX_E4;
         let eps = if precise {
             a.div(&den).norm()
         } else {
@@ -330,17 +339,14 @@ impl<R: Real> Nome<R> {
         let e = eps.hi.clone();
         let e4 = e.sqr().sqr();
         let c = |n: i64| one.from_i64(n);
-        let tail12 = e4.sqr()
+        // Estrin's scheme in ε⁴ (a shorter dependency chain than Horner's)
+        let e8 = e4.sqr();
+        let tail12 = e8.clone()
             * e4.clone()
-            * (c(150)
-                + e4.clone()
-                    * (c(1707)
-                        + e4.clone()
-                            * (c(20910)
-                                + e4.clone()
-                                    * (c(268_616)
-                                        + e4.clone()
-                                            * (c(3_567_400) + e4.clone() * c(48_555_069))))));
+            * ((c(150) + e4.clone() * c(1707))
+                + e8.clone()
+                    * ((c(20910) + e4.clone() * c(268_616))
+                        + e8.clone() * (c(3_567_400) + e4.clone() * c(48_555_069))));
         let w_tail = e4.sqr() * c(15) + tail12.clone();
         let w = e4.clone().mul_2si(1) + w_tail.clone();
         let q = e.clone() + e * w.clone();
@@ -388,10 +394,15 @@ impl<R: Real> Nome<R> {
             };
             half_opt.add(&neg.mul(&cprime))
         } else {
+            // (1 − c')² = (1 + E)⁻² = 1 − δ, δ = E(2 − 3E + 4E² − 5E³) + O(E⁵) with
+            // E ≤ 2⁻¹⁷ (NOME_F64_MAX_E4): no division after the nome
             let q4 = e4.clone() * (one.clone() + e4.mul_2si(3) + g2);
             let big_e = (q4 + q16.clone()).mul_2si(1);
-            let cprime = big_e.clone() / (one + big_e);
-            half_opt.add_r(&-(half_opt.hi.clone() * cprime))
+            let c = |n: i64| one.from_i64(n);
+            let delta = big_e.clone()
+                * (c(2) + big_e.clone() * (c(-3) + big_e.clone() * (c(4) - big_e.clone() * c(5))));
+            let s0 = half_opt.sqr();
+            return s0.add_r(&-(s0.hi.clone() * delta)).norm();
         };
         wdd.sqr().norm()
     }
@@ -477,30 +488,46 @@ pub(crate) fn half_period_sign<R: Real>(j: i64, (s, c, d): (R, R, R)) -> (R, R, 
     }
 }
 
-/// [`Bottom::TanhSech`]: DLMF 22.10.7–9 for `κ'² = kp2` (exact at `κ = 1`, where
-/// `sn = tanh u`, `cn = dn = sech u`, DLMF 22.5.ii; the `κ'²` terms carry the first
-/// derivative in `κ` for `Dual` numbers and the leading correction for tiny `κ'`).
-pub(crate) fn tanh_sech<R: Real>(u: &R, kp2: &R) -> (R, R, R) {
-    let th = u.tanh();
-    let sech = u.cosh().recip();
-    if u.to_f64().abs() > 350.0 {
-        // sinh·cosh overflows; the κ'² terms (zero in value at κ = 1) are dropped
-        return (th, sech.clone(), sech);
-    }
-    let sh = u.sinh();
-    let quarter = kp2.mul_2si(-2);
-    // a·sech² = κ'²/4 (tanh − u sech²), a·tanh·sech = κ'²/4 (sinh − u sech) tanh
-    let s = th.clone() + quarter.clone() * (th.clone() - u.clone() * sech.sqr());
-    let c = sech.clone() - quarter.clone() * (sh.clone() - u.clone() * sech.clone()) * th.clone();
-    let d = sech.clone() + quarter * (sh + u.clone() * sech.clone()) * th;
-    (s, c, d)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use rug::float::Constant;
     use rug::Float;
+
+    /// The series scale `π/(2K) = AGM(1, κ')` from the nome in `f64` (where
+    /// [`Theta::with_bottom`] takes it, up to `κ ≈ 0.7`) against a 256-bit AGM, to the
+    /// `2⁻⁶⁴` the fast reduction assumes; moduli above that take the double-double nome.
+    #[test]
+    fn f64_nome_scale_against_mpfr() {
+        let p = 256;
+        let mut f64_nomes = 0;
+        for i in 1..=2000 {
+            let k = 0.9 * f64::from(i) / 2000.0;
+            let k2 = Dd::from(k).sqr();
+            let (s, e) = two_sum(1.0, -k2.v());
+            let mc = Dd {
+                hi: s,
+                lo: e - k2.lo,
+            }
+            .norm();
+            let th = Theta::with_bottom(&k2, &mc, false, false);
+            if th.precise {
+                assert!(k > 0.6, "k = {k} takes the double-double nome");
+                continue;
+            }
+            f64_nomes += 1;
+            let kf = Float::with_val(p, k);
+            let kp = Float::with_val(p, 1 - Float::with_val(p, &kf * &kf)).sqrt();
+            let want = Float::with_val(p, 1).agm(&kp);
+            let got = Float::with_val(p, th.scale.hi) + th.scale.lo;
+            let rel = (got - &want).abs().to_f64() / want.to_f64();
+            assert!(rel < 2f64.powi(-64), "k = {k}: scale error {rel:e}");
+        }
+        assert!(
+            f64_nomes > 1300,
+            "{f64_nomes} moduli of 2000 take the f64 nome"
+        );
+    }
 
     /// `scale` and `period` in double-double against MPFR (to 2⁻⁸⁴; the reduction needs
     /// 2⁻⁸⁰ for `|j| ≤ 256` and 20 bits of cancellation) (`π/(2K)`, `π/(2K')`,
