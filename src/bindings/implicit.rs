@@ -23,7 +23,7 @@ use crate::claims::implicit::{Implicit, Parametrized};
 use crate::claims::registry::GenericFunction;
 use crate::claims::value::Value;
 use crate::linalg::{Mat3, Vec3};
-use crate::model::discretization::{residual, Gamma};
+use crate::model::discretization::{residual, residual_cleared, Gamma};
 use crate::model::elliptic_coords::sncndn_params;
 use crate::model::params::EllipticParams;
 use crate::model::phase::{master12_equation, mv_master_equation};
@@ -300,6 +300,21 @@ impl Implicit for ModelFn {
                 Ok(r.0.to_vec())
             }
         }
+    }
+
+    fn stated_residual(
+        &self,
+        args: &[Value<Sym>],
+        value: &Value<Sym>,
+    ) -> Result<(Vec<Sym>, Option<Sym>), String> {
+        let Some(gamma) = gamma_of(*self) else {
+            return Ok((self.residual(args, value)?, None));
+        };
+        // (impl spec) times the denominator of γ: no division by ⟨S, S⟩ or ⟨S, ΩS⟩
+        let i = inertia(args, 2)?;
+        let (m, h) = (v3(&args[0])?, args[1].as_real()?);
+        let (r, d) = residual_cleared(&i, gamma, &m, &value.as_vec3()?, &h).map_err(err)?;
+        Ok((r.0.to_vec(), Some(d)))
     }
 
     fn equations(&self) -> String {

@@ -58,6 +58,16 @@ pub trait Implicit: Send + Sync {
     fn parametrize(&self, args: &[Value<Sym>]) -> Result<Parametrized, String>;
     /// The components of the defining equations at `args` with the stated `value`.
     fn residual(&self, args: &[Value<Sym>], value: &Value<Sym>) -> Result<Vec<Sym>, String>;
+    /// [`Implicit::residual`] for a stated value, possibly multiplied through by a
+    /// factor to spare divisions: the components and the factor, which the prover shows
+    /// to be nonzero on the domain (`None`: no factor).
+    fn stated_residual(
+        &self,
+        args: &[Value<Sym>],
+        value: &Value<Sym>,
+    ) -> Result<(Vec<Sym>, Option<Sym>), String> {
+        Ok((self.residual(args, value)?, None))
+    }
     /// The defining equations, as the paper labels them.
     fn equations(&self) -> String;
     /// The equations that [`Implicit::residual`] substitutes a stated value into, with

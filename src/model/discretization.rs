@@ -71,15 +71,28 @@ impl Gamma {
         mhat: &Vec3<R>,
         h: &R,
     ) -> Result<R, ModelError> {
+        let (num, den) = self.fraction(inertia, m, mhat, h)?;
+        Ok(num / den)
+    }
+
+    /// γ as printed, as a numerator and a denominator: `(4M², ⟨S, S⟩)`,
+    /// `(4E, ⟨S, ΩS⟩)`, `(2, 1 + √(1 − h²|ΩS|²/4))` with `S = M + M̂`, and `(1, 1)` for γ₀.
+    pub fn fraction<R: Real>(
+        &self,
+        inertia: &Inertia<R>,
+        m: &Vec3<R>,
+        mhat: &Vec3<R>,
+        h: &R,
+    ) -> Result<(R, R), ModelError> {
         let one = h.one();
         let s = m.clone() + mhat.clone();
         let four = one.from_i64(4);
-        match self {
-            Gamma::G0 => Ok(one),
-            Gamma::G1 => Ok(four * m.norm2() / s.norm2()),
-            Gamma::G2 => Ok(four * inertia.energy(m) / s.dot(&inertia.omega(&s))),
-            Gamma::Vm => Ok(one.from_i64(2) / (one + vm_root(inertia, &s, h)?)),
-        }
+        Ok(match self {
+            Gamma::G0 => (one.clone(), one),
+            Gamma::G1 => (four * m.norm2(), s.norm2()),
+            Gamma::G2 => (four * inertia.energy(m), s.dot(&inertia.omega(&s))),
+            Gamma::Vm => (one.from_i64(2), one + vm_root(inertia, &s, h)?),
+        })
     }
 
     /// γ and its gradient with respect to `M̂` (γ alone is [`Gamma::eval`], which the
@@ -141,6 +154,23 @@ pub fn residual<R: Real>(
     let f = inertia.field_et(&s);
     let coef = h.clone() * g / h.from_i64(4);
     Ok(mhat.clone() - m.clone() - f.scale(&coef))
+}
+
+/// The residual of (impl spec 1–3) times the denominator `d` of γ = n/d
+/// ([`Gamma::fraction`]): `d·(M̂ − M) − ¼h·n·f(M+M̂)`, with `d`.  It vanishes where
+/// [`residual`] does, wherever `d ≠ 0`, and needs no division.
+pub fn residual_cleared<R: Real>(
+    inertia: &Inertia<R>,
+    gamma: Gamma,
+    m: &Vec3<R>,
+    mhat: &Vec3<R>,
+    h: &R,
+) -> Result<(Vec3<R>, R), ModelError> {
+    let (n, d) = gamma.fraction(inertia, m, mhat, h)?;
+    let s = m.clone() + mhat.clone();
+    let f = inertia.field_et(&s);
+    let coef = h.clone() * n / h.from_i64(4);
+    Ok(((mhat.clone() - m.clone()).scale(&d) - f.scale(&coef), d))
 }
 
 /// Residual and its analytic Jacobian with respect to `M̂`.

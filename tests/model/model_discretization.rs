@@ -3,7 +3,7 @@
 //! on the branch (omega as), the root set S and its split.
 
 use eulertop::linalg::{Mat3, Vec3};
-use eulertop::model::discretization::{residual, step_report};
+use eulertop::model::discretization::{residual, residual_cleared, step_report};
 use eulertop::model::veselov_moser::{
     j_diag, lambda_poly, lambda_roots, omega_matrix, split_roots, vm_step,
 };
@@ -172,4 +172,24 @@ fn large_h_fails_cleanly() {
         }
     }
     assert!(step_report(&i, Gamma::Vm, &m, &50.0, NewtonOptions::default()).is_err());
+}
+
+/// The cleared residual is the residual times the denominator of γ, and γ is its
+/// fraction, for every map, at points that solve nothing (an identity of the formulas).
+#[test]
+fn the_cleared_residual_is_the_residual_times_the_denominator_of_gamma() {
+    let i = Inertia::new(3.0_f64, 2.0, 1.0).unwrap();
+    let m = Vec3::new(0.3, -1.1, 0.7);
+    let mhat = Vec3::new(0.35, -1.0, 0.72);
+    let h = 0.05;
+    for g in [Gamma::G0, Gamma::G1, Gamma::G2, Gamma::Vm] {
+        let (n, d) = g.fraction(&i, &m, &mhat, &h).unwrap();
+        assert!((g.eval(&i, &m, &mhat, &h).unwrap() - n / d).abs() < 1e-15);
+        let r = residual(&i, g, &m, &mhat, &h).unwrap();
+        let (rc, d2) = residual_cleared(&i, g, &m, &mhat, &h).unwrap();
+        assert_eq!(d, d2);
+        for j in 0..3 {
+            assert!((rc.0[j] - d * r.0[j]).abs() < 1e-14, "{g:?} component {j}");
+        }
+    }
 }

@@ -694,8 +694,17 @@ fn stated_value(
         return Ok(None);
     }
     let value = eval(ev, other).map_err(AlgebraError::Domain)?;
-    let comps = imp.residual(&vals, &value).map_err(fail)?;
+    let (comps, factor) = imp.stated_residual(&vals, &value).map_err(fail)?;
     let ring = ev.like().ring().clone();
+    if let Some(d) = factor {
+        // the equations were multiplied by d: they hold where d ≠ 0, decided on the domain
+        if d.sign()? == 0 {
+            return Err(fail("the equations' factor vanishes".into()));
+        }
+        ring.note(format!(
+            "the equations of {name} are multiplied through by the denominator of γ, which is nonzero on the domain"
+        ));
+    }
     ring.note(format!(
         "the claim states the value of {name}: the other side is substituted into {}, and every component vanishes",
         imp.stated_equations()
