@@ -206,6 +206,34 @@ fn needs_room<T>(ring: &Ring, built: &AlgResult<T>, wanted: bool) -> bool {
     typed || as_text
 }
 
+/// The size of the value that exceeded the bound, if the attempt stopped there.
+fn overflow<T>(ring: &Ring, built: &AlgResult<T>) -> Option<usize> {
+    match (built, ring.error()) {
+        (Err(AlgebraError::TooLarge(n, _)), _) => Some(*n),
+        (_, Some(AlgebraError::TooLarge(n, _))) => Some(n),
+        _ => None,
+    }
+}
+
+/// After an overflow of `size` terms: whether to try again, with `opts` changed.  The
+/// bases chosen as the arguments came may write a later argument with large multiples,
+/// so a basis of every argument seen comes first (at most three rebases); then a value
+/// just beyond the bound gets one more attempt with twice the room (values that
+/// explode, such as written-out iterations, do not).
+fn more_room(ring: &Ring, opts: &mut RingOptions, rebases: &mut usize, size: usize) -> bool {
+    let hints = ring.rebase_hints();
+    if *rebases < 3 && hints != opts.base_hints {
+        *rebases += 1;
+        opts.base_hints = hints;
+        return true;
+    }
+    if opts.max_terms == MAX_TERMS && size < 2 * MAX_TERMS {
+        opts.max_terms = 2 * MAX_TERMS;
+        return true;
+    }
+    false
+}
+
 /// [`prove_identity`] for several components (a vector or matrix identity): proved
 /// when every component's normal form is 0.
 pub fn prove_components<F>(opts: RingOptions, title: &str, build: F) -> Proof
@@ -244,24 +272,8 @@ where
                 attempts,
             );
         }
-        let overflow = match (&built, ring.error()) {
-            (Err(AlgebraError::TooLarge(n, _)), _) => Some(*n),
-            (_, Some(AlgebraError::TooLarge(n, _))) => Some(n),
-            _ => None,
-        };
-        if let Some(size) = overflow {
-            // the bases chosen as the arguments came may write a later argument with
-            // large multiples; a basis of every argument seen may keep it small
-            let hints = ring.rebase_hints();
-            if rebases < 3 && hints != opts.base_hints {
-                rebases += 1;
-                opts.base_hints = hints;
-                continue;
-            }
-            // a value just beyond the bound gets one more attempt with twice the room
-            // (values that explode, such as written-out iterations, do not)
-            if opts.max_terms == MAX_TERMS && size < 2 * MAX_TERMS {
-                opts.max_terms = 2 * MAX_TERMS;
+        if let Some(size) = overflow(&ring, &built) {
+            if more_room(&ring, &mut opts, &mut rebases, size) {
                 continue;
             }
         }
