@@ -16,13 +16,15 @@ fn valid_name(name: &str) -> bool {
 impl Ring {
     /// An independent indeterminate with its values at the domain points.
     pub fn indeterminate(&self, name: &str, values: &[Complex]) -> AlgResult<Sym> {
+        self.new_var(name, values, VarKind::Indeterminate)
+    }
+    /// A new field variable of the given kind, after the checks of its name and values.
+    fn new_var(&self, name: &str, values: &[Complex], kind: VarKind) -> AlgResult<Sym> {
         self.check_new_name(name)?;
         self.check_values(name, values)?;
         let prec = self.precision();
         let v = values.iter().map(|z| Complex::with_val(prec, z)).collect();
-        let j = self
-            .inner
-            .add_var(name.to_string(), VarKind::Indeterminate, v)?;
+        let j = self.inner.add_var(name.to_string(), kind, v)?;
         Ok(self.var_sym(j))
     }
     /// An indeterminate with real values given as `f64`.
@@ -50,14 +52,7 @@ impl Ring {
     /// with its values; `constant` says whether its derivative with respect to every
     /// indeterminate is 0 (otherwise a derivative through it is an error).
     pub fn opaque(&self, name: &str, values: &[Complex], constant: bool) -> AlgResult<Sym> {
-        self.check_new_name(name)?;
-        self.check_values(name, values)?;
-        let prec = self.precision();
-        let v = values.iter().map(|z| Complex::with_val(prec, z)).collect();
-        let j = self
-            .inner
-            .add_var(name.to_string(), VarKind::Opaque { constant }, v)?;
-        Ok(self.var_sym(j))
+        self.new_var(name, values, VarKind::Opaque { constant })
     }
     /// A named quantity (`k`, `nu`, …): a free symbol standing for `definition` (with the
     /// definition's values, and its derivative for the chain rule), or the definition
