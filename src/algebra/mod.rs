@@ -106,6 +106,7 @@ mod derive;
 pub mod elliptic;
 mod error;
 pub mod flint;
+mod gcd_memo;
 mod lattice;
 mod node;
 mod opaque;

@@ -11,6 +11,7 @@
 
 use super::error::{AlgResult, AlgebraError};
 use super::flint::{Ctx, Poly};
+use super::gcd_memo::GcdMemo;
 use super::node::Node;
 use super::shadow::Shadow;
 use super::square_classes::FactorBasis;
@@ -201,6 +202,8 @@ pub(crate) struct Inner {
     pub ctx: Arc<Ctx>,
     pub opts: RingOptions,
     pub state: Mutex<State>,
+    /// Remembered gcds of the ring's polynomials.
+    pub gcds: GcdMemo,
 }
 
 /// A tower of fields ℚ(x₁…xₙ)(r₁)…(rₘ), rᵢ² = aᵢ, with numeric shadows at domain
@@ -257,6 +260,7 @@ impl Ring {
                 ctx,
                 opts,
                 state: Mutex::new(state),
+                gcds: GcdMemo::default(),
             }),
         }
     }

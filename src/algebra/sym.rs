@@ -64,7 +64,7 @@ impl Inner {
         let (mut n, mut d) = if den.is_one() {
             (num, den)
         } else {
-            let g = num.gcd(&den)?;
+            let g = self.gcds.gcd(&num, &den)?;
             if g.is_one() {
                 (num, den)
             } else {
@@ -92,7 +92,7 @@ impl Inner {
         }
         // Henrici: with g = gcd(D₁, D₂), the sum N/(D₁·D₂/g) can only cancel
         // factors of g, because N₁/D₁ and N₂/D₂ are in lowest terms.
-        let g = a.den.gcd(&b.den)?;
+        let g = self.gcds.gcd(&a.den, &b.den)?;
         let ad = exact(&a.den, &g)?;
         let bd = exact(&b.den, &g)?;
         let n = combine(a.num.mul(&bd), b.num.mul(&ad));
@@ -100,7 +100,11 @@ impl Inner {
         let (num, den) = if g.is_one() {
             self.lowest_terms(n, d)?
         } else {
-            let common = if n.is_zero() { g } else { n.gcd(&g)? };
+            let common = if n.is_zero() {
+                g
+            } else {
+                self.gcds.gcd(&n, &g)?
+            };
             self.lowest_terms(exact(&n, &common)?, exact(&d, &common)?)?
         };
         Ok(Val { num, den, sh })
@@ -122,11 +126,23 @@ impl Inner {
         Ok((num, den))
     }
 
+    /// `(a/g, b/g)` for `g = gcd(a, b)`.
+    fn cancel(&self, a: &Poly, b: &Poly) -> AlgResult<(Poly, Poly)> {
+        if b.is_one() || a.is_zero() {
+            return Ok((a.clone(), b.clone()));
+        }
+        let g = self.gcds.gcd(a, b)?;
+        if g.is_one() {
+            return Ok((a.clone(), b.clone()));
+        }
+        Ok((exact(a, &g)?, exact(b, &g)?))
+    }
+
     pub(crate) fn v_mul(&self, a: &Val, b: &Val) -> AlgResult<Val> {
         let sh = a.sh.mul(&b.sh);
         // cancel crosswise before multiplying
-        let (an, bd) = cancel(&a.num, &b.den)?;
-        let (bn, ad) = cancel(&b.num, &a.den)?;
+        let (an, bd) = self.cancel(&a.num, &b.den)?;
+        let (bn, ad) = self.cancel(&b.num, &a.den)?;
         let prod = an.mul(&bn);
         let reduced = self.reduce(prod.clone());
         let changed = reduced != prod;
@@ -256,18 +272,6 @@ impl Inner {
 fn exact(a: &Poly, b: &Poly) -> AlgResult<Poly> {
     a.divides(b)?
         .ok_or_else(|| AlgebraError::Internal("gcd does not divide".into()))
-}
-
-/// `(a/g, b/g)` for `g = gcd(a, b)`.
-fn cancel(a: &Poly, b: &Poly) -> AlgResult<(Poly, Poly)> {
-    if b.is_one() || a.is_zero() {
-        return Ok((a.clone(), b.clone()));
-    }
-    let g = a.gcd(b)?;
-    if g.is_one() {
-        return Ok((a.clone(), b.clone()));
-    }
-    Ok((exact(a, &g)?, exact(b, &g)?))
 }
 
 impl Sym {
