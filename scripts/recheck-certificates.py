@@ -5,6 +5,8 @@ Usage: scripts/recheck-certificates.py PATH...   (files, or directories of *.cer
 
 A certificate (written by the algebra layer, src/algebra/certificate.rs) declares the
 symbols, the root relations r**2 = a, the elliptic base arguments and the derivation DAG.
+A root with radicand 1 is a sign symbol: arithmetic modulo r**2 - 1 is arithmetic for
+r = 1 and r = -1 at once, so a claim checked modulo it holds for both signs.
 This script:
   * checks every base (c**2 = 1 - s**2, d**2 = 1 - k**2 s**2) and the quarter-period
     data (kp**2 = 1 - k**2 and the half-period values of DLMF 22.5.1 squared);

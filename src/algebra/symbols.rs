@@ -48,6 +48,53 @@ impl Ring {
         }
         self.indeterminate(name, &v)
     }
+    /// A sign symbol `σ` with the relation `σ² = 1` and its values (each ±1) at the
+    /// domain points.  The ring is then the product of its two specialisations σ = 1
+    /// and σ = −1: a value is invertible only where both specialisations are (the
+    /// norm `p₀² − p₁²` of `p₀ + p₁σ` is their product, and a zero norm is reported as
+    /// a zero divisor), so a normal form 0 proves an identity for both signs at once.
+    ///
+    /// ```
+    /// use eulertop::algebra::{Ring, RingOptions};
+    /// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
+    /// let s = ring.sign_symbol_f64("s", &[1.0, -1.0]).unwrap();
+    /// let x = ring.indeterminate_f64("x", &[0.5, 2.0]).unwrap();
+    /// // (s·x)² = x² for either sign
+    /// let lhs = (s.clone() * x.clone()) * (s.clone() * x.clone());
+    /// assert!(ring.prove(&lhs, &(x.clone() * x.clone())).is_proved());
+    /// // but s·x = x only for s = 1
+    /// assert!(!ring.prove(&(s.clone() * x.clone()), &x).is_proved());
+    /// // and 1 + s has no inverse
+    /// assert!(ring.integer(1).try_div(&(ring.integer(1) + s)).is_err());
+    /// ```
+    pub fn sign_symbol(&self, name: &str, values: &[Complex]) -> AlgResult<Sym> {
+        self.check_new_name(name)?;
+        self.check_values(name, values)?;
+        let prec = self.precision();
+        let mut v = Vec::with_capacity(values.len());
+        for z in values {
+            let unit = z.imag().is_zero() && (*z.real() == 1 || *z.real() == -1);
+            if !unit {
+                return Err(AlgebraError::Domain(format!(
+                    "{name}: a sign symbol takes the values 1 and -1 only"
+                )));
+            }
+            v.push(Complex::with_val(prec, z));
+        }
+        let one = super::flint::Poly::from_i64(&self.inner.ctx, 1);
+        let note = format!("a sign ({name}² = 1: both {name} = 1 and {name} = -1)");
+        let i = self.inner.add_root(name.to_string(), one, v, note)?;
+        Ok(self.root_sym(i))
+    }
+    /// A sign symbol with values given as `f64` (see [`Ring::sign_symbol`]).
+    pub fn sign_symbol_f64(&self, name: &str, values: &[f64]) -> AlgResult<Sym> {
+        let prec = self.precision();
+        let v: Vec<Complex> = values
+            .iter()
+            .map(|&x| Complex::with_val(prec, (x, 0)))
+            .collect();
+        self.sign_symbol(name, &v)
+    }
     /// A symbol the prover cannot expand (such as `u0` given by an inverse function),
     /// with its values; `constant` says whether its derivative with respect to every
     /// indeterminate is 0 (otherwise a derivative through it is an error).

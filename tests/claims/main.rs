@@ -6,4 +6,5 @@ mod coverage;
 mod fuzz_claims;
 mod implicit_proofs;
 mod proof_hints;
+mod sign_cases;
 mod verdict_rules;

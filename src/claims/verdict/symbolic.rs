@@ -71,6 +71,9 @@ enum Role {
     Free,
     /// Finitely many values, enumerated as cases.
     Case,
+    /// A case variable with the values ±1, bound to a sign symbol (σ² = 1) so that one
+    /// proof covers every sign case.
+    Sign,
     /// Evaluated from the earlier variables.
     Computed,
 }
@@ -597,6 +600,9 @@ fn bind_one(
             };
             Value::Vec3(Vec3::new(c(0)?, c(1)?, c(2)?))
         }
+        (Role::Sign, Some(Value::Real(_))) => {
+            Value::Real(ring.sign_symbol(name, &shadows(points, name, None))?)
+        }
         (Role::Case, Some(v)) => v.map(&mut |x: &f64| {
             let q = rug::Rational::from_f64(*x).unwrap_or_default();
             ring.rational(&q)
@@ -783,6 +789,10 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
         Ok(_) => return ProofInfo::none("no case of the domain has enough points"),
         Err(m) => return ProofInfo::none(m),
     };
+    if let Some(mut joint) = prove_signs_jointly(ctx, &roles, &cases, (lhs, rhs), certificate) {
+        joint.ms = t0.elapsed().as_secs_f64() * 1e3;
+        return joint;
+    }
     let mut info = ProofInfo::none("");
     info.reason = None;
     info.method = ProofMethod::Symbolic;
@@ -798,6 +808,60 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
     }
     info.ms = t0.elapsed().as_secs_f64() * 1e3;
     info
+}
+
+/// One proof for every sign case at once, where the case variables take the values ±1
+/// only: they become sign symbols (σ² = 1), and the points of all cases serve as the
+/// domain points.  `None` when this does not apply or does not prove the claim (the
+/// cases are then enumerated).
+fn prove_signs_jointly(
+    ctx: Ctx<'_>,
+    roles: &[(String, Role, &PExpr)],
+    cases: &Cases,
+    sides: (&PExpr, &PExpr),
+    certificate: bool,
+) -> Option<ProofInfo> {
+    let points: Vec<Point> = cases.values().flatten().cloned().collect();
+    let is_sign = |name: &str| {
+        points.iter().all(|p| match p.get(name) {
+            Some(Value::Real(x)) => *x == 1.0 || *x == -1.0,
+            _ => false,
+        })
+    };
+    let signs: Vec<&str> = roles
+        .iter()
+        .filter(|(_, r, _)| *r == Role::Case)
+        .map(|(n, _, _)| n.as_str())
+        .collect();
+    if cases.len() < 2 || !signs.iter().all(|n| is_sign(n)) {
+        return None;
+    }
+    let joint: Vec<(String, Role, &PExpr)> = roles
+        .iter()
+        .map(|(n, r, p)| {
+            let r = if *r == Role::Case {
+                Role::Sign
+            } else {
+                r.clone()
+            };
+            (n.clone(), r, *p)
+        })
+        .collect();
+    let p = prove_case(ctx, &joint, &points, sides, certificate, Vec::new());
+    if !matches!(p.outcome, Outcome::Proved) {
+        return None;
+    }
+    let mut info = ProofInfo::none("");
+    info.reason = None;
+    info.method = ProofMethod::Symbolic;
+    merge(&mut info, &[], p);
+    info.notes.push(format!(
+        "{} {} sign symbols: one normal form covers all {} sign cases",
+        signs.join(", "),
+        if signs.len() == 1 { "is a" } else { "are" },
+        cases.len()
+    ));
+    Some(info)
 }
 
 /// Adds one case's proof to the record; a case that is not proved ends the proof.

@@ -1,0 +1,104 @@
+//! Sign cases proved at once: case variables drawn by `sign()` become sign symbols
+//! (σ² = 1), so one normal form covers every case.  An identity that holds for one
+//! sign only is never proved, and where the joint route cannot decide (a square root
+//! that vanishes in one case), the cases are enumerated.
+
+use eulertop::bindings::euler_top::registry;
+use eulertop::claims::catalogue::{load_sources, read_sources, Body, Catalogue};
+use eulertop::claims::verdict::context::Ctx;
+use eulertop::claims::verdict::symbolic::prove;
+use eulertop::claims::verdict::ProofInfo;
+
+fn control(id: &str, lhs: &str, rhs: &str) -> String {
+    format!(
+        r#"
+[[claim]]
+id = "{id}"
+environment = "Section 2"
+role = "control"
+labels = []
+location = "control: sign cases"
+printed = 'x'
+kind = "identity"
+expect = "holds"
+domain = "inertia"
+vars = [["s", "sign()"], ["t", "sign()"], ["x", "uniform(1, 2)"]]
+lhs = "{lhs}"
+rhs = "{rhs}"
+"#
+    )
+}
+
+const CONTROLS: [(&str, &str, &str); 5] = [
+    ("t.sign.square", "s*s*t*t*x", "x"),
+    ("t.sign.both-vanish", "(1 + s)*x*s", "(1 + s)*x"),
+    ("t.sign.one-sign-only", "s*x", "x"),
+    ("t.sign.product-only", "s*t*x", "x"),
+    (
+        "t.sign.vanishing-root",
+        "sqrt((1 + s)^2*x)",
+        "(1 + s)*sqrt(x)",
+    ),
+];
+
+fn catalogue() -> Catalogue {
+    let dir = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/identities"));
+    let mut sources = read_sources(dir).expect("catalogue files");
+    let text: String = CONTROLS
+        .iter()
+        .map(|(id, l, r)| control(id, l, r))
+        .collect();
+    sources.push(("controls.toml".into(), text));
+    load_sources(&sources, registry().expect("registry")).expect("catalogue")
+}
+
+fn attempt(cat: &Catalogue, id: &str) -> ProofInfo {
+    let claim = cat.claims.iter().find(|c| c.id == id).expect("claim");
+    let Body::Identity { lhs, rhs } = &claim.body else {
+        panic!("{id} is not an identity")
+    };
+    prove(Ctx { cat, claim }, lhs, rhs, false)
+}
+
+fn joint(p: &ProofInfo) -> bool {
+    p.notes.iter().any(|n| n.contains("sign symbols"))
+}
+
+#[test]
+fn identities_true_for_every_sign_are_proved_once_for_all_cases() {
+    let cat = catalogue();
+    for id in ["t.sign.square", "t.sign.both-vanish"] {
+        let p = attempt(&cat, id);
+        assert!(p.is_proved(), "{id}: {:?}", p.reason);
+        assert!(joint(&p), "{id}: not proved jointly: {:?}", p.notes);
+        assert!(p.cases.is_empty(), "{id}: {:?}", p.cases);
+        assert!(
+            p.relations.iter().any(|r| r == "s**2 = 1"),
+            "{:?}",
+            p.relations
+        );
+    }
+}
+
+#[test]
+fn identities_true_for_some_signs_only_are_not_proved() {
+    let cat = catalogue();
+    for id in ["t.sign.one-sign-only", "t.sign.product-only"] {
+        let p = attempt(&cat, id);
+        assert!(!p.is_proved(), "{id} was proved");
+        assert!(
+            p.reason.as_deref().unwrap_or("").contains("case"),
+            "{id}: the failing case is not named: {:?}",
+            p.reason
+        );
+    }
+}
+
+#[test]
+fn cases_are_enumerated_where_the_joint_route_cannot_decide() {
+    let cat = catalogue();
+    let p = attempt(&cat, "t.sign.vanishing-root");
+    assert!(p.is_proved(), "{:?}", p.reason);
+    assert!(!joint(&p));
+    assert_eq!(p.cases.len(), 4, "{:?}", p.cases);
+}
