@@ -9,6 +9,10 @@
 //! one its exact evidence.  One more trial checks that every environment of the paper has
 //! claims.
 
+/// The allocator of the `eulertop` binary, so that the timings are the product's.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 use eulertop::claims::catalogue::{load_dir, Catalogue, Claim};
 use eulertop::claims::structure::{place, Environment, Role, ENVIRONMENTS};
 use eulertop::claims::verdict::{run_claim, ClaimResult, Options, Verdict};
