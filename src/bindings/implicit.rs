@@ -23,7 +23,7 @@ use crate::claims::implicit::{Implicit, Parametrized};
 use crate::claims::registry::GenericFunction;
 use crate::claims::value::Value;
 use crate::linalg::{Mat3, Vec3};
-use crate::model::discretization::{residual, residual_cleared, Gamma};
+use crate::model::discretization::{residual, residual_cleared, residual_vm_squared, Gamma};
 use crate::model::elliptic_coords::sncndn_params;
 use crate::model::params::EllipticParams;
 use crate::model::phase::{master12_equation, mv_master_equation};
@@ -307,6 +307,9 @@ impl Implicit for ModelFn {
         args: &[Value<Sym>],
         value: &Value<Sym>,
     ) -> Result<(Vec<Sym>, Option<Sym>), String> {
+        if *self == ModelFn::StepVm {
+            return stated_vm(args, value).map(|e| (e, None));
+        }
         let Some(gamma) = gamma_of(*self) else {
             return Ok((self.residual(args, value)?, None));
         };
@@ -321,6 +324,13 @@ impl Implicit for ModelFn {
         self.implicit_equations().to_string()
     }
 
+    fn stated_equations(&self) -> String {
+        match self {
+            ModelFn::StepVm => "(impl spec) with γ_VM, which is the VM map by Theorem 2 (claim sec8.thm2.gammaMV), with the root of (gammaMV) eliminated: D × f = 0 and h(P² + ‖ΩS‖²L²) − 4PL = 0 for D = M̂ − M, S = M + M̂, f = f(S), P = ⟨D, f⟩ and L = ‖D‖², where P ≠ 0, L > 0 and hP − 2L > 0 on the domain".into(),
+            _ => self.equations(),
+        }
+    }
+
     fn branch(&self) -> String {
         match self {
             ModelFn::StepVm | ModelFn::VmOmega => {
@@ -332,4 +342,20 @@ impl Implicit for ModelFn {
             _ => "the solution M̂ of (impl spec) with M̂ → M as h → 0 (Proposition 1), as the Newton solver selects it".into(),
         }
     }
+}
+
+/// The equations of a stated value `M̂` of `step_vm(M, h, A, B, C)`: by Theorem 2 the VM
+/// map is (impl spec) with γ_VM, whose square root [`residual_vm_squared`] eliminates;
+/// its conditions are decided on the domain (and recorded as assumptions).
+fn stated_vm(args: &[Value<Sym>], value: &Value<Sym>) -> Result<Vec<Sym>, String> {
+    let i = inertia(args, 2)?;
+    let (m, h) = (v3(&args[0])?, args[1].as_real()?);
+    let (eqs, [p, l, branch]) = residual_vm_squared(&i, &m, &value.as_vec3()?, &h);
+    let decided = |x: &Sym, what: &str| x.sign().map_err(|e| format!("{what}: {e}"));
+    decided(&p, "P = ⟨D, f(S)⟩")?;
+    decided(&l, "L = ‖D‖²")?;
+    if decided(&branch, "the root of (gammaMV)")? < 0 {
+        return Err("the stated value gives the negative root of (gammaMV), not γ_VM".into());
+    }
+    Ok(eqs.to_vec())
 }

@@ -173,6 +173,50 @@ pub fn residual_cleared<R: Real>(
     Ok(((mhat.clone() - m.clone()).scale(&d) - f.scale(&coef), d))
 }
 
+/// (impl spec) with γ = γ_VM (gammaMV) for a given pair `(M, M̂)`, free of the square
+/// root of (gammaMV).
+///
+/// With `S = M + M̂`, `D = M̂ − M`, `f = f(S)` the (ET) field, `P = ⟨D, f⟩` and
+/// `L = ‖D‖²`: where `P ≠ 0`, `D = ¼hγf` holds for some γ iff `D × f = 0`, and then
+/// `D = cf` with `c = P/‖f‖² = L/P`, so `γ = 4L/(hP)`.  That γ is γ_VM = 2/(1 + w),
+/// `w = √(1 − ¼h²‖ΩS‖²)`, iff `w = (hP − 2L)/(2L)` is positive and
+/// `w² = 1 − ¼h²‖ΩS‖²`, which multiplied by `4L²/h` is
+/// `h(P² + ‖ΩS‖²L²) − 4PL = 0` (affine in h).  Only inner products enter the last
+/// equation and the conditions, so sign flips of components leave them unchanged, and
+/// their degree in `M, M̂` (6) is the lowest this elimination allows.
+///
+/// Returns the four equations `[D × f, h(P² + ‖ΩS‖²L²) − 4PL]` and the conditions
+/// `[P, L, hP − 2L]`: (impl spec) with γ_VM holds iff the equations vanish, `P ≠ 0`,
+/// `L > 0` and `hP − 2L > 0`.
+///
+/// ```
+/// use eulertop::linalg::Vec3;
+/// use eulertop::model::discretization::{residual_vm_squared, step, Gamma};
+/// use eulertop::model::Inertia;
+/// let i = Inertia::new(3.0, 2.0, 1.0).unwrap();
+/// let (m, h) = (Vec3::new(0.3, -0.7, 1.1), 0.3);
+/// let mh = step(&i, Gamma::Vm, &m, &h).unwrap();
+/// let (eqs, [_, _, branch]) = residual_vm_squared(&i, &m, &mh, &h);
+/// assert!(eqs.iter().all(|e| e.abs() < 1e-15) && branch > 0.0);
+/// ```
+pub fn residual_vm_squared<R: Real>(
+    inertia: &Inertia<R>,
+    m: &Vec3<R>,
+    mhat: &Vec3<R>,
+    h: &R,
+) -> ([R; 4], [R; 3]) {
+    let s = m.clone() + mhat.clone();
+    let d = mhat.clone() - m.clone();
+    let f = inertia.field_et(&s);
+    let p = d.dot(&f);
+    let l = d.norm2();
+    let o2 = inertia.omega(&s).norm2();
+    let [c1, c2, c3] = d.cross(&f).0;
+    let quad = h.clone() * (p.sqr() + o2 * l.sqr()) - h.from_i64(4) * p.clone() * l.clone();
+    let branch = h.clone() * p.clone() - l.clone() * h.from_i64(2);
+    ([c1, c2, c3, quad], [p, l, branch])
+}
+
 /// Residual and its analytic Jacobian with respect to `M̂`.
 pub fn residual_jacobian<R: Real>(
     inertia: &Inertia<R>,
@@ -394,5 +438,27 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The square-free form of (impl spec) with γ_VM vanishes, with the conditions'
+    /// signs, exactly at a solution of (impl spec) with γ_VM; a perturbed M̂, or the
+    /// solution of another γ, fails it.
+    #[test]
+    fn the_square_free_vm_equations_hold_at_the_vm_step_only() {
+        let i = Inertia::new(3.0, 2.0, 1.0).unwrap();
+        let m = Vec3::new(0.3, -0.7, 1.1);
+        let h = 0.3;
+        let x = step(&i, Gamma::Vm, &m, &h).unwrap();
+        let (eqs, [q, n, branch]) = residual_vm_squared(&i, &m, &x, &h);
+        for e in eqs {
+            assert!(e.abs() < 1e-15, "{e}");
+        }
+        assert!(q.abs() > 1e-6 && n > 1e-6 && branch > 1e-6);
+        let y = x.clone() + Vec3::new(1e-6, 0.0, 0.0);
+        let (eqs, _) = residual_vm_squared(&i, &m, &y, &h);
+        assert!(eqs.iter().any(|e| e.abs() > 1e-9));
+        let z = step(&i, Gamma::G1, &m, &h).unwrap();
+        let (eqs, _) = residual_vm_squared(&i, &m, &z, &h);
+        assert!(eqs.iter().any(|e| e.abs() > 1e-9));
     }
 }

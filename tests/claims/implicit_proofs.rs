@@ -287,6 +287,34 @@ expect = "refuted"
 vars = [["u", "uniform(-2, 2)"], ["v", "uniform(-2, 2)"]]
 lhs = "tanh(u + v)"
 rhs = "(tanh(u) + tanh(v)) / (1 - tanh(u) * tanh(v))"
+
+[[claim]]
+id = "t.vm.stated.explicit-euler"
+environment = "Theorem 2"
+role = "control"
+labels = []
+location = "control: the explicit Euler step stated as the VM step"
+printed = 'x'
+kind = "identity"
+expect = "refuted"
+domain = "top"
+vars = [["h", "uniform(0.01, 0.1)"]]
+lhs = "step_vm(M, h, A, B, C)"
+rhs = "M + h * ETrhs(M, A, B, C)"
+
+[[claim]]
+id = "t.vm.stated.scaled"
+environment = "Theorem 3"
+role = "control"
+labels = []
+location = "control: the VM step stated as the phase shift by 2 delta_VM, scaled by 1 + 1e-30"
+printed = 'x'
+kind = "identity"
+expect = "holds"
+domain = "ell_up"
+vars = [["h", "uniform(0.01, 0.1)"]]
+lhs = "step_vm(ellM(A, B, C, Msq, E, phi, sa, sc), h, A, B, C)"
+rhs = "ellM(A, B, C, Msq, E, phi + 2 * delta_vm(A, B, C, Msq, E, h), sa, sc) * (1 + 1e-30)"
 "#;
 
 fn catalogue() -> Catalogue {
@@ -326,6 +354,8 @@ fn the_printed_map_is_proved_and_its_wrong_variants_are_not() {
         "t.amplitude.cn-sign",
         "t.amplitude.other-modulus",
         "t.hyperbolic.wrong",
+        "t.vm.stated.explicit-euler",
+        "t.vm.stated.scaled",
     ] {
         let (ok, why) = proved(&cat, id);
         assert!(!ok, "{id} was proved");
