@@ -58,6 +58,40 @@ impl Sym {
         Ok(sign)
     }
 
+    /// Decides that a value whose normal form is not 0 is nonzero on the domain: it must
+    /// be clearly nonzero at every domain point, and the decision is recorded as an
+    /// assumption (`x - 1 ≠ 0`).  A normal form that is not 0 alone proves nothing: an
+    /// indeterminate drawn from the integers 1..3 is 1 at some points.
+    ///
+    /// ```
+    /// use eulertop::algebra::{Ring, RingOptions};
+    /// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
+    /// let a = ring.indeterminate_f64("a", &[2.0, 3.0]).unwrap();
+    /// assert!(a.nonzero_on_domain().is_ok());
+    /// assert!((a - ring.integer(3)).nonzero_on_domain().is_err()); // a = 3 at a point
+    /// ```
+    pub fn nonzero_on_domain(&self) -> AlgResult<()> {
+        if let Some(q) = self.as_rational() {
+            return if q == 0 {
+                Err(AlgebraError::CannotDecide("a value is exactly 0".into()))
+            } else {
+                Ok(())
+            };
+        }
+        let ring = &self.ring;
+        let prec = ring.precision();
+        let sh = ring.reevaluated(&self.val);
+        if let Some(p) = (0..ring.points()).find(|&p| sh.is_small(p, prec)) {
+            return Err(AlgebraError::CannotDecide(format!(
+                "whether {} is 0: it vanishes at domain point {}",
+                self.render_short(160),
+                p + 1
+            )));
+        }
+        ring.record_assumption(format!("{} ≠ 0", self.render_short(160)), 0);
+        Ok(())
+    }
+
     /// Compares two real values on the domain (see [`Sym::sign`]).
     pub fn compare(&self, o: &Sym) -> AlgResult<Ordering> {
         let d = self.try_sub(o)?;

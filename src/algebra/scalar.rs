@@ -124,6 +124,15 @@ impl Scalar for Sym {
     fn is_zero(&self) -> bool {
         self.is_exact_zero()
     }
+    fn test_zero(&self) -> bool {
+        if self.is_exact_zero() {
+            return true;
+        }
+        if let Err(e) = self.nonzero_on_domain() {
+            self.ring.poison(e);
+        }
+        false
+    }
     fn magnitude(&self) -> f64 {
         self.val
             .sh

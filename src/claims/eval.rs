@@ -574,7 +574,7 @@ pub fn binary<T: Num>(op: BinOp, x: &Value<T>, y: &Value<T>) -> Result<Value<T>,
         BinOp::Eq | BinOp::Ne => {
             let eq = match (x, y) {
                 (Value::Bool(a), Value::Bool(b)) => a == b,
-                _ => x.sub(y)?.components().iter().all(|c| c.is_zero()),
+                _ => x.sub(y)?.components().iter().all(|c| c.test_zero()),
             };
             Ok(Value::Bool(eq == (op == BinOp::Eq)))
         }

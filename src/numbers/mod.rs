@@ -93,6 +93,12 @@ pub trait Scalar:
     fn precision(&self) -> Option<u32>;
     /// Is this exactly zero?
     fn is_zero(&self) -> bool;
+    /// Is this zero, for `==` and `!=` in an expression language?  A number answers
+    /// [`Scalar::is_zero`]; a symbolic value whose normal form is not 0 decides on the
+    /// points of its domain that it is nonzero (and records that), or cannot decide.
+    fn test_zero(&self) -> bool {
+        self.is_zero()
+    }
     /// The absolute value (modulus), rounded to `f64`.  Used for residual scaling.
     fn magnitude(&self) -> f64;
     /// The value rounded to `f64` (for complex scalars: the real part).

@@ -3,6 +3,7 @@
 
 mod claims_engine;
 mod coverage;
+mod decided_branches;
 mod fuzz_claims;
 mod implicit_proofs;
 mod proof_hints;

@@ -11,9 +11,11 @@
 //!
 //! **Decisions.**  Comparisons, `abs`, the sign of a square root and the choice of a
 //! regime are decided at domain points of the claim (the prover's shadows) and recorded
-//! as assumptions.  A claim whose own formulas compare, take `abs`, `sign`, `min`, `max`
-//! or branch with `if` states a condition, which a normal form cannot prove: it is not
-//! attempted.
+//! as assumptions.  So is the condition of an `if` that selects between two formulas
+//! (the regime of (M-M 1): `if up then … else …`).  A claim whose own formulas take
+//! `abs`, `sign`, `min`, `max`, or an indicator `if c then 1 else 0` (a branch that is a
+//! number) states a condition, which a normal form cannot prove: it is not attempted.
+//! A comparison yields a truth value, which only an `if` can use.
 //!
 //! ```
 //! use eulertop::bindings::euler_top::registry;
@@ -45,7 +47,7 @@ use super::result::Evidence;
 use crate::algebra::{
     prove_components, AlgResult, AlgebraError, BaseHint, Outcome, Proof, Ring, RingOptions, Sym,
 };
-use crate::claims::ast::{BinOp, Expr, ExprKind};
+use crate::claims::ast::{Expr, ExprKind};
 use crate::claims::builtins::Primitive;
 use crate::claims::catalogue::{Hint, PExpr};
 use crate::claims::eval::Evaluator;
@@ -78,21 +80,49 @@ enum Role {
     Computed,
 }
 
-fn role_of(p: &PExpr) -> Role {
-    let (mut finite, mut continuous) = (false, false);
+/// The most values of `randint(a, b)` enumerated as cases; a wider range is an
+/// indeterminate (an identity in an indeterminate holds at every integer).
+const MAX_RANDINT_CASES: i64 = 8;
+
+/// How many values a finite primitive call can take: `None` for a continuous one.
+fn finite_values(name: &str, args: &[Expr]) -> Option<usize> {
+    match Primitive::from_name(name)? {
+        Primitive::Sign => Some(2),
+        Primitive::Choice => Some(args.len()),
+        Primitive::Randint => {
+            let int = |e: &Expr| match &e.kind {
+                ExprKind::Num(t) => t.parse::<i64>().ok(),
+                _ => None,
+            };
+            let (a, b) = (int(args.first()?)?, int(args.get(1)?)?);
+            let n = b.checked_sub(a)?.checked_add(1)?;
+            (1..=MAX_RANDINT_CASES).contains(&n).then_some(n as usize)
+        }
+        Primitive::Uniform | Primitive::Normal => None,
+    }
+}
+
+/// The role of a sampled variable, and for a case variable an upper bound on the number
+/// of its values (the product over its finite primitive calls).
+fn role_of(p: &PExpr) -> (Role, usize) {
+    let (mut values, mut finite, mut continuous) = (1usize, false, false);
     p.expr.walk(&mut |e| {
-        if let ExprKind::Call(name, _) = &e.kind {
-            match Primitive::from_name(name) {
-                Some(Primitive::Sign | Primitive::Choice) => finite = true,
-                Some(_) => continuous = true,
-                None => {}
+        if let ExprKind::Call(name, args) = &e.kind {
+            if Primitive::from_name(name).is_some() {
+                match finite_values(name, args) {
+                    Some(n) => {
+                        finite = true;
+                        values = values.saturating_mul(n);
+                    }
+                    None => continuous = true,
+                }
             }
         }
     });
     match (continuous, finite) {
-        (true, _) => Role::Free,
-        (false, true) => Role::Case,
-        _ => Role::Computed,
+        (true, _) => (Role::Free, 1),
+        (false, true) => (Role::Case, values),
+        _ => (Role::Computed, 1),
     }
 }
 
@@ -102,8 +132,7 @@ fn states_condition(ctx: Ctx<'_>, sides: &[&PExpr]) -> Option<String> {
     let mut look = |e: &Expr| {
         e.walk(&mut |x| {
             let what = match &x.kind {
-                ExprKind::If(..) => Some("if".to_string()),
-                ExprKind::Binary(op, ..) if is_comparison(*op) => Some(op.symbol().to_string()),
+                ExprKind::If(_, a, b) if is_literal(a) || is_literal(b) => Some("if".to_string()),
                 ExprKind::Call(n, _)
                     if ["abs", "sign", "min", "max", "floor"].contains(&n.as_str()) =>
                 {
@@ -152,24 +181,31 @@ fn not_analytic(ctx: Ctx<'_>, vars: &[(String, &PExpr)], sides: &[&PExpr]) -> Op
     found.map(|n| format!("'{n}' of a complex variable is not analytic: an indeterminate does not stand for every complex value"))
 }
 
-fn is_comparison(op: BinOp) -> bool {
-    matches!(
-        op,
-        BinOp::Lt | BinOp::Gt | BinOp::Le | BinOp::Ge | BinOp::Eq | BinOp::Ne
-    )
+/// A numeric literal, possibly negated: the branch of an indicator `if c then 1 else 0`.
+fn is_literal(e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Num(_) => true,
+        ExprKind::Unary(_, x) => is_literal(x),
+        _ => false,
+    }
 }
 
 /// The points of each case, keyed by the case values.
 type Cases = BTreeMap<Vec<String>, Vec<Point>>;
 
 /// Draws points until every case has [`POINTS`] of them (or the draws run out).
-fn case_points(ctx: Ctx<'_>, roles: &[(String, Role)]) -> Result<Cases, String> {
+/// Every case must be drawn: a case that is never drawn would never be proved.
+fn case_points(ctx: Ctx<'_>, roles: &[(String, (Role, usize))]) -> Result<Cases, String> {
     let mut sampler = ctx.sampler(Stream::Proof).map_err(|c| c.to_string())?;
     let case_vars: Vec<&String> = roles
         .iter()
-        .filter(|(_, r)| *r == Role::Case)
+        .filter(|(_, (r, _))| *r == Role::Case)
         .map(|(n, _)| n)
         .collect();
+    let expected = roles
+        .iter()
+        .filter(|(_, (r, _))| *r == Role::Case)
+        .fold(1usize, |a, (_, (_, n))| a.saturating_mul(*n));
     let mut cases = Cases::new();
     for _ in 0..MAX_DRAWS {
         let p = sampler.draw()?;
@@ -187,11 +223,22 @@ fn case_points(ctx: Ctx<'_>, roles: &[(String, Role)]) -> Result<Cases, String> 
             group.push(p);
         }
         let full = cases.values().all(|g| g.len() >= POINTS);
-        if full && (case_vars.is_empty() || cases.len() >= 1 << case_vars.len().min(6)) {
+        if full && cases.len() >= expected {
             break;
         }
     }
     cases.retain(|_, g| g.len() >= POINTS);
+    if cases.len() < expected {
+        return Err(format!(
+            "{} of the {expected} cases of {} have {POINTS} domain points in {MAX_DRAWS} draws",
+            cases.len(),
+            case_vars
+                .iter()
+                .map(|n| n.as_str())
+                .collect::<Vec<_>>()
+                .join(", ")
+        ));
+    }
     Ok(cases)
 }
 
@@ -775,14 +822,16 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
     if let Some(why) = not_analytic(ctx, sampler.variables(), &[lhs, rhs]) {
         return ProofInfo::none(why);
     }
+    let plain: Vec<(String, (Role, usize))> = sampler
+        .variables()
+        .iter()
+        .map(|(n, p)| (n.clone(), role_of(p)))
+        .collect();
     let roles: Vec<(String, Role, &PExpr)> = sampler
         .variables()
         .iter()
-        .map(|(n, p)| (n.clone(), role_of(p), *p))
-        .collect();
-    let plain: Vec<(String, Role)> = roles
-        .iter()
-        .map(|(n, r, _)| (n.clone(), r.clone()))
+        .zip(&plain)
+        .map(|((n, p), (_, (r, _)))| (n.clone(), r.clone(), *p))
         .collect();
     let cases = match case_points(ctx, &plain) {
         Ok(c) if !c.is_empty() => c,

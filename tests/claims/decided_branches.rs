@@ -1,0 +1,142 @@
+//! Branches decided on the domain: the condition of an `if` that selects between two
+//! formulas is decided at the domain points and recorded as an assumption; an equality
+//! with a nonzero normal form is decided only where it is nonzero at every point; a
+//! variable drawn by `randint` over a few integers is enumerated case by case; and an
+//! indicator `if c then 1 else 0` still states a condition that no normal form proves.
+
+use eulertop::bindings::euler_top::registry;
+use eulertop::claims::catalogue::{load_sources, Body, Catalogue};
+use eulertop::claims::verdict::context::Ctx;
+use eulertop::claims::verdict::symbolic::prove;
+use eulertop::claims::verdict::ProofInfo;
+
+fn control(id: &str, vars: &str, lhs: &str, rhs: &str) -> String {
+    format!(
+        r#"
+[[claim]]
+id = "{id}"
+environment = "Section 2"
+role = "statement"
+labels = []
+location = "control: decided branches"
+printed = 'x'
+kind = "identity"
+expect = "holds"
+vars = [{vars}]
+lhs = "{lhs}"
+rhs = "{rhs}"
+"#
+    )
+}
+
+const X: &str = r#"["x", "uniform(1, 2)"], ["y", "uniform(3, 4)"]"#;
+const AX: &str = r#"["x", "uniform(1, 2)"], ["ax", "randint(1, 3)"]"#;
+const AXN: &str = r#"["x", "uniform(1, 2)"], ["ax", "uniform(1, 3)"]"#;
+
+fn controls() -> Vec<(&'static str, &'static str, &'static str, &'static str)> {
+    vec![
+        // the regime y > x holds on the whole domain: the true branch is proved
+        (
+            "t.if.regime",
+            X,
+            "if y > x then (x + y)^2 else x",
+            "x^2 + 2*x*y + y^2",
+        ),
+        // the regime decides the wrong branch: a remainder, never proved
+        (
+            "t.if.wrong-branch",
+            X,
+            "if y < x then (x + y)^2 else x",
+            "(x + y)^2",
+        ),
+        // an indicator is a condition, not attempted
+        ("t.if.indicator", X, "if y > x then 1 else 0", "1"),
+        // every one of the three axes is proved, not the last one only
+        (
+            "t.if.all-axes",
+            AX,
+            "if ax == 1 then x else if ax == 2 then 2*x else 3*x",
+            "ax*x",
+        ),
+        // true for ax = 3 only: the cases ax = 1, 2 leave a remainder
+        (
+            "t.if.one-axis",
+            AX,
+            "if ax == 1 then x else if ax == 2 then 2*x else 3*x",
+            "3*x",
+        ),
+        // a continuous ax is never equal to 1: decided, with an assumption
+        (
+            "t.if.generic-unequal",
+            AXN,
+            "if ax == 1 then 2*x else x",
+            "x",
+        ),
+    ]
+}
+
+fn catalogue() -> Catalogue {
+    let text: String = controls()
+        .iter()
+        .map(|(id, v, l, r)| control(id, v, l, r))
+        .collect();
+    load_sources(
+        &[("controls.toml".into(), text)],
+        registry().expect("registry"),
+    )
+    .expect("catalogue")
+}
+
+fn attempt(cat: &Catalogue, id: &str) -> ProofInfo {
+    let claim = cat.claims.iter().find(|c| c.id == id).expect("claim");
+    let Body::Identity { lhs, rhs } = &claim.body else {
+        panic!("{id} is not an identity")
+    };
+    prove(Ctx { cat, claim }, lhs, rhs, false)
+}
+
+#[test]
+fn a_regime_decided_on_the_domain_selects_the_branch_and_is_an_assumption() {
+    let cat = catalogue();
+    let p = attempt(&cat, "t.if.regime");
+    assert!(p.is_proved(), "{:?}", p.reason);
+    assert!(
+        p.assumptions
+            .iter()
+            .any(|a| a.contains("> 0") || a.contains("< 0")),
+        "{:?}",
+        p.assumptions
+    );
+    assert!(!attempt(&cat, "t.if.wrong-branch").is_proved());
+}
+
+#[test]
+fn an_indicator_if_states_a_condition_and_is_not_attempted() {
+    let cat = catalogue();
+    let p = attempt(&cat, "t.if.indicator");
+    assert!(!p.is_proved());
+    let why = p.reason.unwrap_or_default();
+    assert!(why.contains("states a condition"), "{why}");
+}
+
+#[test]
+fn a_few_integers_are_cases_and_every_case_is_proved() {
+    let cat = catalogue();
+    let p = attempt(&cat, "t.if.all-axes");
+    assert!(p.is_proved(), "{:?}", p.reason);
+    assert_eq!(p.cases.len(), 3, "{:?}", p.cases);
+    let q = attempt(&cat, "t.if.one-axis");
+    assert!(!q.is_proved(), "true for one axis only, yet proved");
+}
+
+#[test]
+fn an_equality_with_a_nonzero_normal_form_is_decided_on_the_domain() {
+    let cat = catalogue();
+    let p = attempt(&cat, "t.if.generic-unequal");
+    assert!(p.is_proved(), "{:?}", p.reason);
+    assert!(
+        p.assumptions.iter().any(|a| a.contains('≠')),
+        "{:?}",
+        p.assumptions
+    );
+}
