@@ -132,6 +132,21 @@ impl Sym {
                 x.render_short(60)
             )));
         };
+        // x is also a parameter and no other coordinate depends on it: the Jacobian is
+        // the identity in x's row and column, so the derivative at fixed other
+        // coordinates is the one at fixed other parameters
+        if c.params.iter().any(same) {
+            let mut alone = true;
+            for (j, xj) in c.coords.iter().enumerate() {
+                if j != i && !xj.derivative_plain(x)?.is_exact_zero() {
+                    alone = false;
+                    break;
+                }
+            }
+            if alone {
+                return self.derivative_plain(x);
+            }
+        }
         let inv = match c.inverse {
             Some(inv) => inv,
             None => {

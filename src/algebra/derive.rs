@@ -127,12 +127,7 @@ impl Ring {
             VarKind::Indeterminate => Ok(self.inner.const_val(&Rational::from(i64::from(j == jx)))),
             VarKind::Named(def) => self.val_derivative(&def, jx),
             VarKind::Opaque { constant: true } => Ok(zero),
-            VarKind::Opaque { constant: false } => {
-                let name = self.state().vars[j].name.clone();
-                Err(AlgebraError::Derivative(format!(
-                    "the derivative of {name} is unknown"
-                )))
-            }
+            VarKind::Opaque { constant: false } => self.opaque_derivative(j, jx),
             VarKind::QuarterK { table } | VarKind::QuarterKp { table } => {
                 let k = self.state().tables[table].k.clone();
                 if self.val_derivative(&k, jx)?.num.is_zero() {
@@ -146,6 +141,48 @@ impl Ring {
             VarKind::Sn { table, base } => self.sn_derivative(table, base, jx, false),
             VarKind::Zeta { table, base } => self.sn_derivative(table, base, jx, true),
         }
+    }
+
+    /// `v'` of an opaque symbol: known when its sn, cn, dn are prescribed at a modulus
+    /// that does not depend on `x` (then `s' = c·d·v'`, DLMF 22.13.1).
+    fn opaque_derivative(&self, j: usize, jx: usize) -> AlgResult<Val> {
+        let name = self.state().vars[j].name.clone();
+        let p = self.state().prescribed.iter().find(|p| p.var == j).cloned();
+        let unknown = |why: &str| {
+            AlgebraError::Derivative(format!("the derivative of {name} is unknown{why}"))
+        };
+        let Some(p) = p else {
+            // a parameter of declared coordinates (a phase step δ) is independent of the
+            // other parameters
+            if self.is_coordinate_parameter(j)? {
+                return Ok(self.inner.const_val(&Rational::new()));
+            }
+            return Err(unknown(""));
+        };
+        if !self.val_derivative(&p.k, jx)?.num.is_zero() {
+            return Err(unknown(": its modulus varies"));
+        }
+        let ds = self.val_derivative(&p.s, jx)?;
+        let cd = self.inner.v_mul(&p.c, &p.d)?;
+        if cd.num.is_zero() {
+            return Err(unknown(": cn dn vanishes"));
+        }
+        self.inner.v_div(&ds, &cd)
+    }
+
+    /// Is field variable `j` one of the parameters of the declared coordinates?
+    fn is_coordinate_parameter(&self, j: usize) -> AlgResult<bool> {
+        let params: Vec<Val> = match &self.state().coordinates {
+            Some(c) => c.params.iter().map(|(v, _)| v.clone()).collect(),
+            None => return Ok(false),
+        };
+        let v = self.var_sym(j).val;
+        for p in params {
+            if self.inner.v_add(&p, &v, true)?.num.is_zero() {
+                return Ok(true);
+            }
+        }
+        Ok(false)
     }
 
     /// `s'` (or `Z'` when `zeta`) of base `base` of table `table`.

@@ -227,6 +227,7 @@ impl Ring {
     /// adding a base when `vec` is outside their span.
     fn coordinates(&self, t: usize, vec: &[Rational]) -> AlgResult<Vec<i64>> {
         self.activate_hints(t)?;
+        self.prescribed_directions_first(t, vec)?;
         let bases: Vec<Vec<Rational>> = self.state().tables[t]
             .bases
             .iter()
@@ -257,6 +258,125 @@ impl Ring {
                     .ok_or_else(|| AlgebraError::Domain("argument multiple too large".into()))
             })
             .collect()
+    }
+
+    /// `val` with every symbol that has an equivalent argument (see
+    /// [`Ring::seen_argument_with`]) replaced by it: valid inside sn, cn, dn, which have
+    /// the period 4K.
+    fn with_equivalents(&self, t: usize, val: &Val) -> AlgResult<Val> {
+        let eqs: Vec<(usize, Val)> = self
+            .state()
+            .prescribed
+            .iter()
+            .filter_map(|p| p.equiv.clone().map(|e| (p.var, e)))
+            .collect();
+        if eqs.is_empty() {
+            return Ok(val.clone());
+        }
+        let inner = &self.inner;
+        let split = self.split(t, val)?;
+        let mut out = val.clone();
+        for (var, e) in eqs {
+            let vs = self.var_sym(var).val;
+            for (i, q) in split.vec.iter().enumerate() {
+                if *q != 0 && inner.v_add(&self.dir_val(t, i), &vs, true)?.num.is_zero() {
+                    let shift = inner.v_mul(&inner.const_val(q), &inner.v_add(&e, &vs, true)?)?;
+                    out = inner.v_add(&out, &shift, false)?;
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// An argument already seen at modulus `k` whose sn, cn, dn are `s`, `c`, `d` (or
+    /// that argument plus 2K, where sn and cn change sign), if there is one.
+    pub(crate) fn seen_argument_with(
+        &self,
+        k: &Sym,
+        s: &Sym,
+        c: &Sym,
+        d: &Sym,
+    ) -> AlgResult<Option<Sym>> {
+        let t = self.table_of(k)?;
+        let mut seen: Vec<Vec<Rational>> = Vec::new();
+        for v in self.state().tables[t].seen.iter().rev() {
+            if !v.iter().all(|q| *q == 0) && !seen.contains(v) {
+                seen.push(v.clone());
+            }
+            if seen.len() >= 32 {
+                break;
+            }
+        }
+        let inner = &self.inner;
+        for vec in seen {
+            let mut arg = inner.const_val(&Rational::new());
+            for (i, q) in vec.iter().enumerate() {
+                if *q != 0 {
+                    let term = inner.v_mul(&inner.const_val(q), &self.dir_val(t, i))?;
+                    arg = inner.v_add(&arg, &term, false)?;
+                }
+            }
+            let u = Sym::from_val(self, arg, None);
+            let (su, cu, du) = u.sncndn(k)?;
+            if !d.try_sub(&du)?.is_exact_zero() {
+                continue;
+            }
+            if s.try_sub(&su)?.is_exact_zero() && c.try_sub(&cu)?.is_exact_zero() {
+                return Ok(Some(u));
+            }
+            if s.try_add(&su)?.is_exact_zero() && c.try_add(&cu)?.is_exact_zero() {
+                let two_k = self.quarter_period(k)?.try_mul(&self.integer(2))?;
+                return Ok(Some(u.try_add(&two_k)?));
+            }
+        }
+        Ok(None)
+    }
+
+    /// Records that the prescribed symbol `v` equals `u` modulo 4K.
+    pub(crate) fn set_equivalent(&self, v: &Sym, u: &Sym) {
+        if let Some(var) = v.as_field_var() {
+            for p in self.state().prescribed.iter_mut().filter(|p| p.var == var) {
+                p.equiv = Some(u.val.clone());
+            }
+        }
+    }
+
+    /// Makes every direction of `vec` that is a symbol with prescribed sn, cn, dn a base
+    /// by itself (so that `sn(v − w)` is expanded from the values of `v` and `w`, not
+    /// given a symbol of its own).
+    fn prescribed_directions_first(&self, t: usize, vec: &[Rational]) -> AlgResult<()> {
+        let prescribed: Vec<usize> = self.state().prescribed.iter().map(|p| p.var).collect();
+        if prescribed.is_empty() {
+            return Ok(());
+        }
+        for (i, q) in vec.iter().enumerate() {
+            if *q == 0 {
+                continue;
+            }
+            let d = self.dir_val(t, i);
+            let mut is_prescribed = false;
+            for &j in &prescribed {
+                is_prescribed |= self
+                    .inner
+                    .v_add(&d, &self.var_sym(j).val, true)?
+                    .num
+                    .is_zero();
+            }
+            if !is_prescribed {
+                continue;
+            }
+            let mut unit = vec![Rational::new(); i + 1];
+            unit[i] = Rational::from(1);
+            let bases: Vec<Vec<Rational>> = self.state().tables[t]
+                .bases
+                .iter()
+                .map(|b| b.vec.clone())
+                .collect();
+            if solve(&bases, &unit).is_none() {
+                self.new_base(t, unit)?;
+            }
+        }
+        Ok(())
     }
 
     /// The refined bases for a restart: per table, a basis of the lattice of every
@@ -421,6 +541,7 @@ impl Ring {
             d: d.val.clone(),
             what,
             why: why.to_string(),
+            equiv: None,
         });
         Ok(())
     }
@@ -560,7 +681,8 @@ impl Sym {
             return Err(AlgebraError::RingMismatch);
         }
         let t = ring.table_of(k)?;
-        let split = ring.split(t, &self.val)?;
+        let arg = ring.with_equivalents(t, &self.val)?;
+        let split = ring.split(t, &arg)?;
         {
             let mut st = ring.state();
             let v = split.vec.clone();

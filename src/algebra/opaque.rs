@@ -93,4 +93,66 @@ impl Sym {
         }
         Ok(v)
     }
+
+    /// The inverse of the Jacobi functions by rule: `φ` with `sn φ = s`, `cn φ = c`,
+    /// `dn φ = d` at modulus `k` is an opaque symbol whose sn, cn, dn are prescribed as
+    /// these values, so that the elliptic expansions of `sn(φ ± …)` use them and its
+    /// derivative is `s'/(c d)`.  The values must satisfy `s² + c² = 1` and
+    /// `d² + k² s² = 1` identically, and `d > 0` on the domain (dn of a real argument
+    /// with `k < 1`); otherwise the rule does not apply.  Any `φ + 4nK` has the same
+    /// values, so an identity proved with the symbol holds for the argument the
+    /// numerical inverse selects (in (−2K, 2K]).
+    pub(crate) fn jacobi_inverse_rule(s: &Sym, c: &Sym, d: &Sym, k: &Sym) -> AlgResult<Sym> {
+        let ring = &s.ring;
+        let one = ring.integer(1);
+        let r1 = s.try_mul(s)?.try_add(&c.try_mul(c)?)?.try_sub(&one)?;
+        let r2 = d
+            .try_mul(d)?
+            .try_add(&k.try_mul(k)?.try_mul(s)?.try_mul(s)?)?
+            .try_sub(&one)?;
+        if !r1.is_exact_zero() || !r2.is_exact_zero() {
+            return Err(AlgebraError::NotAlgebraic(
+                "the inverse of sn, cn, dn: the values are not identically sn, cn, dn of one argument".into(),
+            ));
+        }
+        if d.sign()? <= 0 {
+            return Err(AlgebraError::NotAlgebraic(
+                "the inverse of sn, cn, dn: dn is not positive on the domain".into(),
+            ));
+        }
+        let v = Sym::opaque_call("phiinv", &[s, c, d, k], |z| {
+            let real = |c: &Complex| c.real().clone();
+            let u = crate::special::jacobi_inverse(
+                &real(&z[0]),
+                &real(&z[1]),
+                &real(&z[2]),
+                &real(&z[3]),
+            )
+            .ok()?;
+            Some(Complex::with_val(u.prec(), (u, 0)))
+        })?;
+        let var = v
+            .as_field_var()
+            .ok_or_else(|| AlgebraError::Internal("an opaque value that is not a symbol".into()))?;
+        if !ring.state().prescribed.iter().any(|p| p.var == var) {
+            let equivalent = ring.seen_argument_with(k, s, c, d)?;
+            ring.prescribe_sncndn(
+                &v,
+                k,
+                s,
+                c,
+                d,
+                "the inverse of sn, cn, dn has the given values as its sn, cn, dn (DLMF 22.15.11-12); they satisfy sn^2 + cn^2 = 1 and dn^2 + k^2 sn^2 = 1 identically, and dn > 0",
+            )?;
+            if let Some(u) = equivalent {
+                ring.set_equivalent(&v, &u);
+                ring.note(format!(
+                    "{} has the sn, cn, dn of {}: inside sn, cn, dn (period 4K) it is replaced by that argument",
+                    v.render_short(40),
+                    u.render_short(80)
+                ));
+            }
+        }
+        Ok(v)
+    }
 }

@@ -149,6 +149,9 @@ pub(crate) struct Prescription {
     pub what: String,
     /// Why the values hold.
     pub why: String,
+    /// An argument with the same sn, cn, dn (so equal to the symbol modulo 4K), which
+    /// replaces the symbol inside sn, cn, dn.
+    pub equiv: Option<Val>,
 }
 
 /// A value as the ring stores it: without the ring handle (see [`Val`]), with its

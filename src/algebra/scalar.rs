@@ -233,6 +233,9 @@ impl Real for Sym {
     fn ellipf_by_rule(phi: &Self, k: &Self) -> Result<Self, String> {
         Sym::ellipf_rule(phi, k).map_err(|e| e.to_string())
     }
+    fn jacobi_inverse_by_rule(sn: &Self, cn: &Self, dn: &Self, k: &Self) -> Result<Self, String> {
+        Sym::jacobi_inverse_rule(sn, cn, dn, k).map_err(|e| e.to_string())
+    }
     fn sinh(&self) -> Self {
         // sinh u = sn(u, 1)/cn(u, 1) (DLMF 22.5.ii: sn = tanh, cn = dn = sech at k = 1)
         self.hyperbolic(|s, c| s.try_div(c))

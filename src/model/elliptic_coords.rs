@@ -153,12 +153,12 @@ pub fn m_to_phi<R: Real>(inertia: &Inertia<R>, m: &Vec3<R>) -> Result<EllCoords<
             ((m2c / b) / (m1 / a)).asinh()
         }
         _ => {
-            let (x, y) = match params.regime {
-                Regime::Upper => (m1, m2c),
-                _ => (m3, m2c),
+            // upper: M = (a cn, b sn, c dn); lower: M = (a dn, b sn, c cn)
+            let (x, y, z, amp, amp_z) = match params.regime {
+                Regime::Upper => (m1, m2c, m3, a, c),
+                _ => (m3, m2c, m1, c, a),
             };
-            let amp = if params.regime == Regime::Upper { a } else { c };
-            if amp.is_zero() || b.is_zero() {
+            if amp.is_zero() || b.is_zero() || amp_z.is_zero() {
                 return Err(undefined());
             }
             let (x, y) = (x / amp, y / b);
@@ -166,9 +166,11 @@ pub fn m_to_phi<R: Real>(inertia: &Inertia<R>, m: &Vec3<R>) -> Result<EllCoords<
             if r.is_zero() || !r.is_finite() {
                 return Err(undefined());
             }
-            let (cn, sn) = (x / r.clone(), y / r);
+            let (cn, sn) = (x / r.clone(), y / r.clone());
             let k = params.k();
-            let dn = (sn.one() - params.k2.clone() * sn.sqr()).sqrt();
+            // dn from its own coordinate, so that an exact evaluation has it as a rational
+            // function of M (the inverse checks dn² + k² sn² = 1)
+            let dn = z / amp_z;
             jacobi_inverse(&sn, &cn, &dn, &k)?
         }
     };

@@ -209,6 +209,16 @@ pub trait Real: Scalar + PartialOrd {
     fn ellipf_by_rule(_phi: &Self, _k: &Self) -> Result<Self, String> {
         Err("F has no rule for this type".into())
     }
+    /// The argument `u` with `(sn, cn, dn)(u, k) = (sn, cn, dn)` by the type's own rule
+    /// (only called when [`Real::BY_RULE`]).
+    fn jacobi_inverse_by_rule(
+        _sn: &Self,
+        _cn: &Self,
+        _dn: &Self,
+        _k: &Self,
+    ) -> Result<Self, String> {
+        Err("the inverse of sn, cn, dn has no rule for this type".into())
+    }
     /// Precision in bits (53 for `f64`).
     fn prec(&self) -> u32;
     /// The same value rounded to `bits` of precision (identity for `f64`).

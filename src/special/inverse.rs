@@ -24,7 +24,9 @@ use crate::numbers::Real;
 /// assert!(jacobi_inverse(&0.6_f64, &0.6, &0.9, &0.8).is_err()); // sn² + cn² ≠ 1
 /// ```
 pub fn jacobi_inverse<R: Real>(sn: &R, cn: &R, dn: &R, k: &R) -> Result<R, SpecialError> {
-    super::refuse_by_rule::<R>("the inverse of sn, cn, dn")?;
+    if R::BY_RULE {
+        return R::jacobi_inverse_by_rule(sn, cn, dn, k).map_err(SpecialError::Rule);
+    }
     check_modulus_below_one(k)?;
     check_finite(sn, "sn")?;
     check_finite(cn, "cn")?;

@@ -294,8 +294,13 @@ fn asymptotic_slopes() {
 #[test]
 fn independence_existence_negation() {
     let dom = "vars = [[\"k\", \"uniform(0.1, 0.9)\"], [\"u\", \"uniform(-2, 2)\"]]\n";
-    let r = verdict_of(&claim(&format!("kind = \"independence\"\nexpect = \"holds\"\n{dom}expr = \"sn(u, k)^2 + cn(u, k)^2\"\nwrt = \"u\"")), &LADDER);
-    assert_eq!(r.verdict, Verdict::Holds, "{}", r.reason);
+    // sn² + cn² = 1: its derivative in u has the normal form 0, so it is proved
+    let r = verdict_of(&claim(&format!("kind = \"independence\"\nexpect = \"proved\"\n{dom}expr = \"sn(u, k)^2 + cn(u, k)^2\"\nwrt = \"u\"")), &LADDER);
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+    assert!(r.as_expected);
+    // sn² depends on u: never proved
+    let r = verdict_of(&claim(&format!("kind = \"independence\"\nexpect = \"refuted\"\n{dom}expr = \"sn(u, k)^2\"\nwrt = \"u\"")), &LADDER);
+    assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
     let r = verdict_of(
         &claim(&format!(
             "kind = \"independence\"\nexpect = \"refuted\"\n{dom}expr = \"dn(u, k)\"\nwrt = \"u\""

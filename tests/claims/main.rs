@@ -6,6 +6,7 @@ mod coverage;
 mod decided_branches;
 mod fuzz_claims;
 mod implicit_proofs;
+mod lemmas;
 mod proof_hints;
 mod sign_cases;
 mod verdict_rules;

@@ -176,4 +176,30 @@ pub struct Catalogue {
     pub registry: Registry,
     /// Sections: (file, number, title).
     pub sections: Vec<(String, String, String)>,
+    /// Whether the lemmas that proofs rest on are proved (filled as they are checked).
+    pub lemma_memo: LemmaMemo,
+}
+
+/// Memo of lemma checks: claim id → `Ok` (proved symbolically) or why not.  Shared by the
+/// clones of a catalogue, which have the same claims.
+#[derive(Clone, Default)]
+pub struct LemmaMemo(pub std::sync::Arc<std::sync::Mutex<BTreeMap<String, Result<(), String>>>>);
+
+impl std::fmt::Debug for LemmaMemo {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("LemmaMemo")
+    }
+}
+
+impl LemmaMemo {
+    /// The memoised result for `id`, if any.
+    pub fn get(&self, id: &str) -> Option<Result<(), String>> {
+        self.0.lock().ok()?.get(id).cloned()
+    }
+    /// Records the result for `id`.
+    pub fn put(&self, id: &str, r: Result<(), String>) {
+        if let Ok(mut m) = self.0.lock() {
+            m.insert(id.to_string(), r);
+        }
+    }
 }

@@ -16,7 +16,7 @@ mod raw;
 pub mod source;
 pub mod structure;
 
-pub use claim::{Body, Catalogue, Claim, Domain, ExactSpec, Hint, PExpr};
+pub use claim::{Body, Catalogue, Claim, Domain, ExactSpec, Hint, LemmaMemo, PExpr};
 pub use source::{LoadError, Located, Origin, SourceFile};
 
 use crate::claims::ast::Binding;
@@ -143,6 +143,7 @@ pub fn load_sources(
         domains: a.domains,
         registry,
         sections: a.sections,
+        lemma_memo: LemmaMemo::default(),
     };
     check::check(&cat, &a.defs)?;
     structure::check(&cat)?;

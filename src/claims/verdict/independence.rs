@@ -1,5 +1,8 @@
 //! `independence`: expr does not change when the sampled variable `wrt` is redrawn.
 //! Residual of a sample: max over the redraws of |expr(wrt') − expr(wrt)| / scale.
+//!
+//! Proof: the symbolic normal form of `d(expr, wrt)` is 0 (then expr is constant in
+//! `wrt` on every interval of the domain on which it is defined).
 
 use super::context::{at_rung, collect, eval, render, AtRung, Ctx, Sides};
 use super::ladder;
@@ -107,4 +110,51 @@ pub fn run(
         Ok(samples) => Ok(ladder::finish(ctx.claim, bits, &samples, failures)),
         Err(cause) => Err(Failure::with_failures(cause, failures)),
     }
+}
+
+/// Proves the claim when the numerical verdict holds and `d(expr, wrt)` has the
+/// symbolic normal form 0.
+pub fn judge_symbolically(ctx: Ctx<'_>, expr: &PExpr, wrt: &str, ev: &mut Evidence) {
+    use super::symbolic::prove;
+    use super::Verdict;
+    use crate::claims::ast::{Expr, ExprKind};
+    if ev.verdict != Verdict::Holds {
+        ev.proof = Some(super::ProofInfo::none(format!(
+            "not attempted: the numerical verdict is {}",
+            ev.verdict.name()
+        )));
+        return;
+    }
+    let span = expr.expr.span;
+    let derivative = PExpr {
+        expr: Expr {
+            kind: ExprKind::Deriv {
+                body: Box::new(expr.expr.clone()),
+                var: wrt.to_string(),
+                component: None,
+            },
+            span,
+        },
+        text: format!("d({}, {wrt})", expr.text.trim()),
+        origin: expr.origin.clone(),
+    };
+    let zero = PExpr {
+        expr: Expr {
+            kind: ExprKind::Num("0".into()),
+            span,
+        },
+        text: "0".into(),
+        origin: expr.origin.clone(),
+    };
+    let info = prove(ctx, &derivative, &zero, false);
+    if info.is_proved() {
+        ev.verdict = Verdict::Proved;
+        ev.reason = format!(
+            "the symbolic normal form of d(expr, {wrt}) is 0 ({} symbols, {} relations, {} assumptions): expr is constant in {wrt} on each interval of the domain; independent numerically",
+            info.symbols.len(),
+            info.relations.len(),
+            info.assumptions.len()
+        );
+    }
+    ev.proof = Some(info);
 }

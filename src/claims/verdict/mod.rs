@@ -19,6 +19,7 @@ pub mod hinted;
 pub mod identity;
 pub mod independence;
 pub mod ladder;
+mod lemmas;
 pub mod negation;
 pub mod proof_info;
 pub mod result;
@@ -152,7 +153,11 @@ fn judge(ctx: Ctx<'_>, opts: &Options) -> Result<Evidence, Failure> {
             Ok(ev)
         }
         Body::Independence { expr, wrt, redraws } => {
-            independence::run(ctx, expr, wrt, *redraws, bits)
+            let mut ev = independence::run(ctx, expr, wrt, *redraws, bits)?;
+            if opts.exact {
+                independence::judge_symbolically(ctx, expr, wrt, &mut ev);
+            }
+            Ok(ev)
         }
         Body::Asymptotic {
             expr,

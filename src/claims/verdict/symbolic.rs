@@ -319,7 +319,7 @@ fn bind_variables<'c>(
     ring: &Ring,
     roles: &[(String, Role, &PExpr)],
     points: &[Point],
-    plans: &[Plan<'c>],
+    (plans, lemmas): (&[Plan<'c>], &[super::lemmas::Lemma<'_>]),
     hint: Option<&Hint>,
 ) -> AlgResult<Bound<'c>> {
     let mut ev = Evaluator::new(&ctx.cat.registry, ring.integer(0));
@@ -345,6 +345,7 @@ fn bind_variables<'c>(
         recompute(&mut ev, roles)?;
         declare_coordinates(&ev, ring, roles, &replaced, params)?;
     }
+    super::lemmas::apply(&ev, lemmas)?;
     let unknown = match hint {
         Some(h) => Some(super::hinted::unknown(ctx, ring, h, points)?),
         None => None,
@@ -792,13 +793,15 @@ fn prove_case(
             .filter(|b| hint.is_none_or(|h| h.value != b.name))
             .map(|b| &b.body),
     );
+    let lemmas = super::lemmas::lemmas(ctx);
+    exprs.extend(lemmas.iter().map(|l| &l.rhs.expr));
     let plans = plans(ctx, roles, &exprs);
     prove_components(opts, &ctx.claim.id, |ring| {
         let Bound {
             ev,
             checks,
             unknown,
-        } = bind_variables(ctx, ring, roles, points, &plans, hint)?;
+        } = bind_variables(ctx, ring, roles, points, (&plans, &lemmas), hint)?;
         let mut pairs = match (hint, &unknown) {
             (Some(h), Some(v)) => super::hinted::sides(ctx, &ev, h, v, sides_of)?,
             _ => sides(&ev, sides_of.0, sides_of.1)?,
@@ -840,7 +843,7 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
     };
     if let Some(mut joint) = prove_signs_jointly(ctx, &roles, &cases, (lhs, rhs), certificate) {
         joint.ms = t0.elapsed().as_secs_f64() * 1e3;
-        return joint;
+        return with_lemmas(ctx, joint);
     }
     let mut info = ProofInfo::none("");
     info.reason = None;
@@ -856,7 +859,22 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
         }
     }
     info.ms = t0.elapsed().as_secs_f64() * 1e3;
-    info
+    with_lemmas(ctx, info)
+}
+
+/// A proof that rests on lemmas stands only when they are proved.
+fn with_lemmas(ctx: Ctx<'_>, info: ProofInfo) -> ProofInfo {
+    let lemmas = super::lemmas::lemmas(ctx);
+    if !info.is_proved() || lemmas.is_empty() {
+        return info;
+    }
+    match super::lemmas::check(ctx, &lemmas) {
+        Ok(()) => info,
+        Err(why) => ProofInfo {
+            ms: info.ms,
+            ..ProofInfo::none(why)
+        },
+    }
 }
 
 /// One proof for every sign case at once, where the case variables take the values ±1

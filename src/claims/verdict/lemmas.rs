@@ -1,0 +1,149 @@
+//! Lemmas: a proved identity that states the value of an implicit call supplies that
+//! value to the proofs of the claims that use it.
+//!
+//! An identity `f(args) = rhs` whose left side calls an implicit function `f` (a step of
+//! a map) and which a claim lists in `uses` is a *lemma* of that claim when it expects
+//! `proved`, samples the same domain, adds no variables the claim does not sample with
+//! the same definition, and has no `let`s of its own.  Its variables are then the
+//! claim's variables, so at every point of the claim's domain it states
+//! `f(args) = rhs`.  The prover evaluates `args` and `rhs` at the claim's symbols and
+//! remembers `rhs` as the value of the call (where `rhs` calls a phase step, the step's
+//! parametrization is planned as for the claim's own calls).  A proof that uses a lemma
+//! is accepted only when the lemma itself is proved symbolically: [`check`] proves it
+//! (once per catalogue) and the claim is not proved otherwise.
+
+use super::context::{eval, Ctx};
+use super::symbolic::prove;
+use crate::algebra::{AlgResult, AlgebraError, Sym};
+use crate::claims::ast::{Expr, ExprKind};
+use crate::claims::catalogue::{Body, Claim, PExpr};
+use crate::claims::eval::Evaluator;
+use crate::claims::implicit::{recall, remember};
+use crate::claims::kind::Verdict;
+
+/// A lemma of a claim: `name(args) = rhs`.
+pub(super) struct Lemma<'c> {
+    /// The lemma's claim.
+    pub claim: &'c Claim,
+    /// The implicit function.
+    pub name: &'c str,
+    /// Its arguments as written in the lemma.
+    pub args: &'c [Expr],
+    /// The value the lemma states.
+    pub rhs: &'c PExpr,
+}
+
+/// The lemmas of the claim, in the order of its `uses`.
+pub(super) fn lemmas<'c>(ctx: Ctx<'c>) -> Vec<Lemma<'c>> {
+    let claim = ctx.claim;
+    let domain = |c: &Claim| c.domain.as_ref().map(|d| d.value.clone());
+    let sampled_alike = |c: &Claim| {
+        c.vars.iter().all(|(n, p)| {
+            claim
+                .vars
+                .iter()
+                .any(|(m, q)| m == n && q.text.trim() == p.text.trim())
+        })
+    };
+    claim
+        .uses
+        .iter()
+        .filter_map(|u| ctx.cat.claims.iter().find(|c| c.id == u.value))
+        .filter(|c| c.expect == Some(Verdict::Proved) && c.lets.is_empty())
+        .filter(|c| domain(c) == domain(claim) && c.wheres.is_empty() && sampled_alike(c))
+        .filter_map(|c| {
+            let Body::Identity { lhs, rhs } = &c.body else {
+                return None;
+            };
+            let ExprKind::Call(name, args) = &lhs.expr.kind else {
+                return None;
+            };
+            ctx.cat.registry.ext(name)?.f.implicit()?;
+            calls(claim, name).then_some(())?;
+            Some(Lemma {
+                claim: c,
+                name,
+                args,
+                rhs,
+            })
+        })
+        .collect()
+}
+
+/// Remembers the value each lemma states, at the claim's symbols.
+pub(super) fn apply(ev: &Evaluator<'_, Sym>, lemmas: &[Lemma<'_>]) -> AlgResult<()> {
+    for l in lemmas {
+        let fail = |m: String| AlgebraError::Domain(format!("lemma {}: {m}", l.claim.id));
+        let args = l
+            .args
+            .iter()
+            .map(|a| ev.eval(a).map_err(|e| fail(e.message)))
+            .collect::<AlgResult<Vec<_>>>()?;
+        if recall(l.name, &args).is_some() {
+            continue;
+        }
+        let value = eval(ev, l.rhs).map_err(fail)?;
+        remember(l.name, &args, &value).map_err(fail)?;
+        let ring = ev.like().ring().clone();
+        ring.assume(format!(
+            "{}(…) = {}: by {}, proved separately (on the branch its proof assumes)",
+            l.name,
+            l.rhs.text.trim(),
+            l.claim.id
+        ));
+    }
+    Ok(())
+}
+
+/// Checks that every lemma is proved symbolically (memoised per catalogue).
+pub(super) fn check(ctx: Ctx<'_>, lemmas: &[Lemma<'_>]) -> Result<(), String> {
+    for l in lemmas {
+        let memo = &ctx.cat.lemma_memo;
+        let r = match memo.get(&l.claim.id) {
+            Some(r) => r,
+            None => {
+                let Body::Identity { lhs, rhs } = &l.claim.body else {
+                    continue;
+                };
+                let sub = Ctx {
+                    cat: ctx.cat,
+                    claim: l.claim,
+                };
+                let p = prove(sub, lhs, rhs, false);
+                let r = if p.is_proved() {
+                    Ok(())
+                } else {
+                    Err(p.reason.unwrap_or_default())
+                };
+                memo.put(&l.claim.id, r.clone());
+                r
+            }
+        };
+        r.map_err(|why| format!("rests on {}, which is not proved: {why}", l.claim.id))?;
+    }
+    Ok(())
+}
+
+/// Do the claim's own formulas call `name`?
+fn calls(claim: &Claim, name: &str) -> bool {
+    let mut found = false;
+    let mut look = |e: &Expr| {
+        e.walk(&mut |x| {
+            if let ExprKind::Call(n, _) = &x.kind {
+                found |= n == name;
+            }
+        })
+    };
+    match &claim.body {
+        Body::Identity { lhs, rhs } => {
+            look(&lhs.expr);
+            look(&rhs.expr);
+        }
+        Body::Independence { expr, .. } => look(&expr.expr),
+        _ => {}
+    }
+    for b in &claim.lets {
+        look(&b.body);
+    }
+    found
+}

@@ -1,0 +1,141 @@
+//! Lemmas and the inverse of sn, cn, dn in proofs: a proved identity that states a step's
+//! value supplies it to the claims that use it, a wrong lemma proves nothing, and the
+//! phase of `ell_coords` is a symbol whose sn, cn, dn are known.
+
+use eulertop::bindings::euler_top::registry;
+use eulertop::claims::catalogue::{load_sources, read_sources, Body, Catalogue};
+use eulertop::claims::verdict::context::Ctx;
+use eulertop::claims::verdict::symbolic::prove;
+use eulertop::claims::verdict::ProofInfo;
+
+fn control(id: &str, uses: &str, lhs: &str, rhs: &str) -> String {
+    format!(
+        r#"
+[[claim]]
+id = "{id}"
+environment = "Proposition 6"
+role = "control"
+uses = [{uses}]
+labels = []
+location = "control: lemmas"
+printed = 'x'
+kind = "identity"
+expect = "proved"
+domain = "ell_up"
+vars = [["h", "uniform(0.01, 0.1)"]]
+let = '''
+X = ellM(A, B, C, Msq, E, phi, sa, sc)
+kk = kE(A, B, C, Msq, E)
+'''
+lhs = "{lhs}"
+rhs = "{rhs}"
+"#
+    )
+}
+
+const SHIFT: &str =
+    "sn(ell_coords(step_gamma1(X, h, A, B, C), A, B, C)[3] - ell_coords(X, A, B, C)[3], kk)";
+
+fn controls() -> String {
+    let wrong_lemma = r#"
+[[claim]]
+id = "t.lemma.wrong"
+environment = "Proposition 6"
+role = "control"
+uses = []
+labels = []
+location = "control: a wrong step value"
+printed = 'x'
+kind = "identity"
+expect = "proved"
+domain = "ell_up"
+vars = [["h", "uniform(0.01, 0.1)"]]
+lhs = "step_gamma1(ellM(A, B, C, Msq, E, phi, sa, sc), h, A, B, C)"
+rhs = "ellM(A, B, C, Msq, E, phi + 2 * delta2(A, B, C, Msq, E, h), sa, sc)"
+"#;
+    [
+        control(
+            "t.lemma.shift",
+            r#""sec7.master12.step.up""#,
+            &format!("d({SHIFT}, phi)"),
+            "0",
+        ),
+        control(
+            "t.lemma.shift-value",
+            r#""sec7.master12.step.up""#,
+            SHIFT,
+            "sn(2 * delta1(A, B, C, Msq, E, h), kk)",
+        ),
+        control(
+            "t.lemma.sum-depends",
+            r#""sec7.master12.step.up""#,
+            "d(sn(ell_coords(step_gamma1(X, h, A, B, C), A, B, C)[3] + ell_coords(X, A, B, C)[3], kk), phi)",
+            "0",
+        ),
+        control(
+            "t.lemma.through-wrong",
+            r#""t.lemma.wrong""#,
+            &format!("d({SHIFT}, phi)"),
+            "0",
+        ),
+        control("t.inverse.phase", "", "d(ell_coords(X, A, B, C)[3], phi)", "1"),
+        control("t.inverse.wrong", "", "d(ell_coords(X, A, B, C)[3], phi)", "2"),
+        wrong_lemma.to_string(),
+    ]
+    .concat()
+}
+
+fn catalogue() -> Catalogue {
+    let dir = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/identities"));
+    let mut sources = read_sources(dir).expect("catalogue files");
+    sources.push(("zz-controls.toml".into(), controls()));
+    load_sources(&sources, registry().expect("registry")).expect("catalogue")
+}
+
+fn attempt(cat: &Catalogue, id: &str) -> ProofInfo {
+    let claim = cat.claims.iter().find(|c| c.id == id).expect("claim");
+    let Body::Identity { lhs, rhs } = &claim.body else {
+        panic!("{id} is not an identity")
+    };
+    prove(Ctx { cat, claim }, lhs, rhs, false)
+}
+
+#[test]
+fn a_proved_step_value_makes_the_phase_shift_of_gamma1_independent_of_phi() {
+    let cat = catalogue();
+    for id in ["t.lemma.shift", "t.lemma.shift-value"] {
+        let p = attempt(&cat, id);
+        assert!(p.is_proved(), "{id}: {:?}", p.reason);
+        assert!(
+            p.assumptions
+                .iter()
+                .any(|a| a.contains("by sec7.master12.step.up")),
+            "{id}: {:?}",
+            p.assumptions
+        );
+    }
+}
+
+#[test]
+fn a_quantity_that_depends_on_phi_is_not_proved_independent() {
+    let cat = catalogue();
+    assert!(!attempt(&cat, "t.lemma.sum-depends").is_proved());
+}
+
+#[test]
+fn a_claim_resting_on_a_wrong_lemma_is_not_proved() {
+    let cat = catalogue();
+    assert!(!attempt(&cat, "t.lemma.wrong").is_proved());
+    let p = attempt(&cat, "t.lemma.through-wrong");
+    assert!(!p.is_proved(), "proved through a wrong lemma");
+    let why = p.reason.unwrap_or_default();
+    assert!(why.contains("rests on t.lemma.wrong"), "{why}");
+}
+
+#[test]
+fn the_phase_of_the_elliptic_coordinates_has_derivative_one() {
+    let cat = catalogue();
+    let p = attempt(&cat, "t.inverse.phase");
+    assert!(p.is_proved(), "{:?}", p.reason);
+    assert!(!attempt(&cat, "t.inverse.wrong").is_proved());
+}
