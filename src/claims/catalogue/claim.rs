@@ -180,10 +180,26 @@ pub struct Catalogue {
     pub lemma_memo: LemmaMemo,
 }
 
-/// Memo of lemma checks: claim id → `Ok` (proved symbolically) or why not.  Shared by the
-/// clones of a catalogue, which have the same claims.
+/// Memo of symbolic proofs: key → the proof record (of the verdict layer's type), so
+/// that a lemma, or a statement the paper makes twice, is proved once per catalogue
+/// whichever claim asks first.  Shared by the clones of a catalogue, which have the same
+/// claims.
 #[derive(Clone, Default)]
-pub struct LemmaMemo(pub std::sync::Arc<std::sync::Mutex<BTreeMap<String, Result<(), String>>>>);
+pub struct LemmaMemo(
+    pub std::sync::Arc<std::sync::Mutex<BTreeMap<String, std::sync::Arc<MemoSlot>>>>,
+);
+
+/// A memoised proof record.
+pub type LemmaRecord = std::sync::Arc<dyn std::any::Any + Send + Sync>;
+
+/// One entry of a [`LemmaMemo`]: whether its computation has started, and its record.
+#[derive(Default)]
+pub struct MemoSlot {
+    /// Set by the one caller that computes the record.
+    pub started: std::sync::atomic::AtomicBool,
+    /// The record, once computed.
+    pub value: std::sync::OnceLock<LemmaRecord>,
+}
 
 impl std::fmt::Debug for LemmaMemo {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -192,14 +208,11 @@ impl std::fmt::Debug for LemmaMemo {
 }
 
 impl LemmaMemo {
-    /// The memoised result for `id`, if any.
-    pub fn get(&self, id: &str) -> Option<Result<(), String>> {
-        self.0.lock().ok()?.get(id).cloned()
-    }
-    /// Records the result for `id`.
-    pub fn put(&self, id: &str, r: Result<(), String>) {
-        if let Ok(mut m) = self.0.lock() {
-            m.insert(id.to_string(), r);
+    /// The slot of `key` (created empty).
+    pub fn slot(&self, key: &str) -> std::sync::Arc<MemoSlot> {
+        match self.0.lock() {
+            Ok(mut m) => m.entry(key.to_string()).or_default().clone(),
+            Err(_) => std::sync::Arc::new(MemoSlot::default()),
         }
     }
 }

@@ -146,7 +146,10 @@ pub fn judge_symbolically(ctx: Ctx<'_>, expr: &PExpr, wrt: &str, ev: &mut Eviden
         text: "0".into(),
         origin: expr.origin.clone(),
     };
-    let info = prove(ctx, &derivative, &zero, false);
+    // the same expression on the same domain (a statement the paper makes twice) is
+    // proved once per catalogue
+    let key = super::lemmas::content_key(ctx, &[&derivative]);
+    let info = super::lemmas::memoised(ctx, &key, || prove(ctx, &derivative, &zero, false));
     if info.is_proved() {
         ev.verdict = Verdict::Proved;
         ev.reason = format!(

@@ -20,6 +20,7 @@ use crate::claims::catalogue::{Body, Claim, PExpr};
 use crate::claims::eval::Evaluator;
 use crate::claims::implicit::{recall, remember};
 use crate::claims::kind::Verdict;
+use crate::claims::verdict::ProofInfo;
 
 /// A lemma of a claim: `name(args) = rhs`.
 pub(super) struct Lemma<'c> {
@@ -98,30 +99,102 @@ pub(super) fn apply(ev: &Evaluator<'_, Sym>, lemmas: &[Lemma<'_>]) -> AlgResult<
 /// Checks that every lemma is proved symbolically (memoised per catalogue).
 pub(super) fn check(ctx: Ctx<'_>, lemmas: &[Lemma<'_>]) -> Result<(), String> {
     for l in lemmas {
-        let memo = &ctx.cat.lemma_memo;
-        let r = match memo.get(&l.claim.id) {
-            Some(r) => r,
-            None => {
-                let Body::Identity { lhs, rhs } = &l.claim.body else {
-                    continue;
-                };
-                let sub = Ctx {
-                    cat: ctx.cat,
-                    claim: l.claim,
-                };
-                let p = prove(sub, lhs, rhs, false);
-                let r = if p.is_proved() {
-                    Ok(())
-                } else {
-                    Err(p.reason.unwrap_or_default())
-                };
-                memo.put(&l.claim.id, r.clone());
-                r
-            }
+        let Body::Identity { lhs, rhs } = &l.claim.body else {
+            continue;
         };
-        r.map_err(|why| format!("rests on {}, which is not proved: {why}", l.claim.id))?;
+        let sub = Ctx {
+            cat: ctx.cat,
+            claim: l.claim,
+        };
+        let p = proof_of(sub, lhs, rhs);
+        if !p.is_proved() {
+            return Err(format!(
+                "rests on {}, which is not proved: {}",
+                l.claim.id,
+                p.reason.clone().unwrap_or_default()
+            ));
+        }
     }
     Ok(())
+}
+
+/// The symbolic proof of an identity that serves as a lemma, memoised per catalogue.
+pub(super) fn proof_of(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr) -> ProofInfo {
+    memoised(ctx, &ctx.claim.id, || prove(ctx, lhs, rhs, false))
+}
+
+/// A proof memoised per catalogue under `key`.  The first caller computes it; a caller
+/// that finds it under way runs other pending work of the thread pool until it is
+/// there (a panic in the computation is recorded as a failed proof).
+pub(super) fn memoised(ctx: Ctx<'_>, key: &str, run: impl FnOnce() -> ProofInfo) -> ProofInfo {
+    use std::sync::atomic::Ordering;
+    let slot = ctx.cat.lemma_memo.slot(key);
+    let read = |r: &crate::claims::catalogue::claim::LemmaRecord| {
+        r.downcast_ref::<ProofInfo>()
+            .cloned()
+            .unwrap_or_else(|| ProofInfo::none("a memoised proof of another type"))
+    };
+    if !slot.started.swap(true, Ordering::AcqRel) {
+        let p = std::panic::catch_unwind(std::panic::AssertUnwindSafe(run))
+            .unwrap_or_else(|_| ProofInfo::none("the proof panicked"));
+        let _ = slot.value.set(std::sync::Arc::new(p.clone()));
+        return p;
+    }
+    loop {
+        if let Some(r) = slot.value.get() {
+            return read(r);
+        }
+        if !matches!(rayon::yield_now(), Some(rayon::Yield::Executed)) {
+            std::thread::sleep(std::time::Duration::from_millis(1));
+        }
+    }
+}
+
+/// What a proof of `sides` for the claim depends on: its domain, variables, constraints,
+/// `let`s, lemmas and the sides, as written (two claims that agree in all of these have
+/// the same proof).
+pub(super) fn content_key(ctx: Ctx<'_>, sides: &[&PExpr]) -> String {
+    let claim = ctx.claim;
+    let lemma_ids: Vec<String> = lemmas(ctx).iter().map(|l| l.claim.id.clone()).collect();
+    let texts = |v: &[PExpr]| {
+        v.iter()
+            .map(|p| p.text.trim().to_string())
+            .collect::<Vec<_>>()
+    };
+    format!(
+        "content|{:?}|{:?}|{:?}|{:?}|{:?}|{:?}",
+        claim.domain.as_ref().map(|d| &d.value),
+        claim
+            .vars
+            .iter()
+            .map(|(n, p)| (n, p.text.trim()))
+            .collect::<Vec<_>>(),
+        texts(&claim.wheres),
+        claim
+            .lets
+            .iter()
+            .map(crate::claims::latex::binding_to_latex)
+            .collect::<Vec<_>>(),
+        lemma_ids,
+        sides.iter().map(|p| p.text.trim()).collect::<Vec<_>>()
+    )
+}
+
+/// Is the claim a lemma of some claim (an identity stating an implicit call's value)?
+pub(super) fn is_lemma(ctx: Ctx<'_>) -> bool {
+    let Body::Identity { lhs, .. } = &ctx.claim.body else {
+        return false;
+    };
+    let ExprKind::Call(name, _) = &lhs.expr.kind else {
+        return false;
+    };
+    ctx.claim.lets.is_empty()
+        && ctx
+            .cat
+            .registry
+            .ext(name)
+            .and_then(|r| r.f.implicit())
+            .is_some()
 }
 
 /// Do the claim's own formulas call `name`?

@@ -19,7 +19,7 @@ pub mod hinted;
 pub mod identity;
 pub mod independence;
 pub mod ladder;
-mod lemmas;
+pub(crate) mod lemmas;
 pub mod negation;
 pub mod proof_info;
 pub mod result;
@@ -68,20 +68,63 @@ pub fn verify(
     select: &(dyn Fn(&Claim) -> bool + Sync),
     done: &(dyn Fn(&ClaimResult) + Sync),
 ) -> Vec<ClaimResult> {
-    let chosen: Vec<&Claim> = cat.claims.iter().filter(|c| select(c)).collect();
+    let mut chosen: Vec<(usize, &Claim)> = cat
+        .claims
+        .iter()
+        .filter(|c| select(c))
+        .enumerate()
+        .collect();
+    // the likely slowest first, so that no core idles at the end; results keep the
+    // catalogue's order
+    chosen.sort_by_key(|(i, c)| (std::cmp::Reverse(expected_cost(cat, c)), *i));
     // Opt-in per-claim timings on standard error (never part of the results).
     let timing = std::env::var_os("EULERTOP_TIMING").is_some();
-    chosen
+    let mut results: Vec<(usize, ClaimResult)> = chosen
         .par_iter()
-        .map(|c| {
+        .with_max_len(1)
+        .map(|(i, c)| {
             let r = run_claim(cat, c, opts);
             if timing {
                 eprintln!("timing {:8.1} ms  {}", r.elapsed_ms, c.id);
             }
             done(&r);
-            r
+            (*i, r)
         })
-        .collect()
+        .collect();
+    results.sort_by_key(|(i, _)| *i);
+    results.into_iter().map(|(_, r)| r).collect()
+}
+
+/// A rough rank of a claim's cost, for scheduling only: independence proofs through
+/// implicit maps, then identities with implicit calls, then the rest.
+fn expected_cost(cat: &Catalogue, claim: &Claim) -> u8 {
+    let mut implicit = false;
+    let mut look = |e: &crate::claims::ast::Expr| {
+        e.walk(&mut |x| {
+            if let crate::claims::ast::ExprKind::Call(n, _) = &x.kind {
+                implicit |= cat
+                    .registry
+                    .ext(n)
+                    .is_some_and(|r| r.f.implicit().is_some());
+            }
+        })
+    };
+    match &claim.body {
+        Body::Identity { lhs, rhs } => {
+            look(&lhs.expr);
+            look(&rhs.expr);
+        }
+        Body::Independence { expr, .. } => look(&expr.expr),
+        _ => {}
+    }
+    for b in &claim.lets {
+        look(&b.body);
+    }
+    match (&claim.body, implicit) {
+        (Body::Independence { .. }, true) => 2,
+        (Body::Identity { .. }, true) => 1,
+        _ => 0,
+    }
 }
 
 /// Verifies one claim.  A panic in another layer (a bug there) does not take the run
