@@ -125,6 +125,9 @@ impl Ring {
     /// The certificate of `lhs = rhs` (see the module doc), or `None` when the ring does
     /// not record derivations.
     pub fn certificate(&self, pairs: &[(Sym, Sym)], title: &str) -> Option<String> {
+        if !self.state().uncertified.is_empty() {
+            return None;
+        }
         let mut nodes = Vec::new();
         for (l, r) in pairs {
             nodes.push((l.node.clone()?, r.node.clone()?));

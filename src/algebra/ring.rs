@@ -178,6 +178,8 @@ pub(crate) struct State {
     pub basis: FactorBasis,
     pub tables: Vec<super::base_table::Table>,
     pub assumptions: Vec<Assumption>,
+    /// Steps the certificate format does not record (a proof with one has no certificate).
+    pub uncertified: Vec<String>,
     pub notes: Vec<String>,
     pub error: Option<AlgebraError>,
     pub origin: Origin,
@@ -243,6 +245,7 @@ impl Ring {
             basis: FactorBasis::default(),
             tables: Vec::new(),
             assumptions: Vec::new(),
+            uncertified: Vec::new(),
             notes: Vec::new(),
             error: None,
             origin: Origin::Claim,
@@ -369,6 +372,15 @@ impl Ring {
                 sign: 0,
                 origin,
             });
+        }
+    }
+
+    /// Records a step that the certificate format does not record: the proof then has no
+    /// certificate (rather than one a recheck would reject).
+    pub fn mark_uncertified(&self, why: &str) {
+        let mut st = self.state();
+        if !st.uncertified.iter().any(|w| w == why) {
+            st.uncertified.push(why.to_string());
         }
     }
 

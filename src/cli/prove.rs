@@ -1,4 +1,5 @@
-//! `eulertop prove ID`: the symbolic proof of one identity, as a derivation a reader can
+//! `eulertop prove ID`: the symbolic proof of one identity (or of `d(expr, wrt) = 0` for
+//! an independence claim), as a derivation a reader can
 //! follow — the variables and how they enter, the symbols and their relations, the
 //! addition-theorem instances, the decisions taken from the domain, and the final normal
 //! form — with `--certificate FILE` a script of polynomial equalities that SymPy rechecks
@@ -7,6 +8,7 @@
 use super::{stdout, write_error, CliError};
 use crate::claims::catalogue::Body;
 use crate::claims::verdict::context::Ctx;
+use crate::claims::verdict::independence::derivative_sides;
 use crate::claims::verdict::symbolic::{prove, ProofInfo};
 use clap::Parser;
 use std::io::Write;
@@ -14,7 +16,7 @@ use std::io::Write;
 /// Arguments of `eulertop prove`.
 #[derive(Parser, Debug)]
 pub struct Args {
-    /// The claim id (an identity).
+    /// The claim id (an identity, or an independence claim: d(expr, wrt) = 0).
     pub id: String,
     /// Catalogue directory.
     #[arg(long, default_value = "identities")]
@@ -59,17 +61,22 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         .iter()
         .find(|c| c.id == args.id)
         .ok_or_else(|| CliError(format!("no claim with id '{}'", args.id)))?;
-    let Body::Identity { lhs, rhs } = &claim.body else {
-        return Err(CliError(format!(
-            "claim '{}' is a {}, and only identities are proved symbolically",
-            claim.id,
-            claim.kind.name()
-        )));
+    let (lhs, rhs) = match &claim.body {
+        Body::Identity { lhs, rhs } => (lhs.clone(), rhs.clone()),
+        // independence: d(expr, wrt) = 0
+        Body::Independence { expr, wrt, .. } => derivative_sides(expr, wrt),
+        _ => {
+            return Err(CliError(format!(
+                "claim '{}' is a {}, and only identities and independence claims are proved symbolically",
+                claim.id,
+                claim.kind.name()
+            )))
+        }
     };
     let p = prove(
         Ctx { cat: &cat, claim },
-        lhs,
-        rhs,
+        &lhs,
+        &rhs,
         args.certificate.is_some(),
     );
     if let (Some(path), Some(cert)) = (&args.certificate, &p.certificate) {
@@ -81,7 +88,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         .map_err(write_error("standard output"))?;
     if let (Some(path), None, true) = (&args.certificate, &p.certificate, p.is_proved()) {
         // proved, but a step recorded no derivation: say so rather than write nothing
-        eprintln!("eulertop: no certificate written to {path}: a step of this proof records no derivation");
+        eprintln!("eulertop: no certificate written to {path}: a step of this proof records no derivation in the certificate format (a lemma's stated value, or the inverse of sn, cn, dn)");
         return Ok(1);
     }
     Ok(i32::from(!p.is_proved()))

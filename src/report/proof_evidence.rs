@@ -9,7 +9,9 @@ use std::fmt::Write;
 pub fn proof_block(p: &ProofInfo) -> String {
     let mut s = String::new();
     if let Some(r) = &p.reason {
-        if r != "a definition" && r != "only identities are proved symbolically" {
+        if r != "a definition"
+            && r != "only identities and independence claims are proved symbolically"
+        {
             let _ = writeln!(s, "Symbolic proof: none — {}.\n", r.trim_end_matches('.'));
         }
         return s;

@@ -68,8 +68,8 @@ fn bad_ids_and_kinds_are_one_line_errors_with_status_2() {
             "no claim with id 'no.such.claim'",
         ),
         (
-            vec!["prove", "sec7.prop6.g1-poisson.up"],
-            "only identities are proved symbolically",
+            vec!["prove", "sec7.delta12-asym.g1.up"],
+            "only identities and independence claims are proved symbolically",
         ),
     ] {
         let (code, out, err) = run(&args);
@@ -78,4 +78,12 @@ fn bad_ids_and_kinds_are_one_line_errors_with_status_2() {
         assert_eq!(err.trim_end().lines().count(), 1, "{err}");
         assert!(err.contains(expected), "{err}");
     }
+}
+
+#[test]
+fn an_independence_claim_is_proved_by_its_derivative() {
+    let (code, out, _) = run(&["prove", "sec7.prop6.g1-poisson.up"]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("by sec7.master12.step.up"), "{out}");
+    assert!(out.contains("normal form of lhs - rhs: 0: proved"), "{out}");
 }

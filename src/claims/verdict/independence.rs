@@ -112,19 +112,9 @@ pub fn run(
     }
 }
 
-/// Proves the claim when the numerical verdict holds and `d(expr, wrt)` has the
-/// symbolic normal form 0.
-pub fn judge_symbolically(ctx: Ctx<'_>, expr: &PExpr, wrt: &str, ev: &mut Evidence) {
-    use super::symbolic::prove;
-    use super::Verdict;
+/// The identity whose proof proves independence: `d(expr, wrt) = 0`.
+pub fn derivative_sides(expr: &PExpr, wrt: &str) -> (PExpr, PExpr) {
     use crate::claims::ast::{Expr, ExprKind};
-    if ev.verdict != Verdict::Holds {
-        ev.proof = Some(super::ProofInfo::none(format!(
-            "not attempted: the numerical verdict is {}",
-            ev.verdict.name()
-        )));
-        return;
-    }
     let span = expr.expr.span;
     let derivative = PExpr {
         expr: Expr {
@@ -146,6 +136,22 @@ pub fn judge_symbolically(ctx: Ctx<'_>, expr: &PExpr, wrt: &str, ev: &mut Eviden
         text: "0".into(),
         origin: expr.origin.clone(),
     };
+    (derivative, zero)
+}
+
+/// Proves the claim when the numerical verdict holds and `d(expr, wrt)` has the
+/// symbolic normal form 0.
+pub fn judge_symbolically(ctx: Ctx<'_>, expr: &PExpr, wrt: &str, ev: &mut Evidence) {
+    use super::symbolic::prove;
+    use super::Verdict;
+    if ev.verdict != Verdict::Holds {
+        ev.proof = Some(super::ProofInfo::none(format!(
+            "not attempted: the numerical verdict is {}",
+            ev.verdict.name()
+        )));
+        return;
+    }
+    let (derivative, zero) = derivative_sides(expr, wrt);
     // the same expression on the same domain (a statement the paper makes twice) is
     // proved once per catalogue
     let key = super::lemmas::content_key(ctx, &[&derivative]);

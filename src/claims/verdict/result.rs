@@ -282,7 +282,7 @@ fn not_attempted(kind: Kind) -> &'static str {
     match kind {
         Kind::Definition => "a definition",
         Kind::Identity => "not attempted",
-        _ => "only identities are proved symbolically",
+        _ => "only identities and independence claims are proved symbolically",
     }
 }
 
