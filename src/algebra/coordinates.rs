@@ -99,6 +99,24 @@ fn inverse(m: &[Vec<Sym>]) -> AlgResult<Vec<Vec<Sym>>> {
 }
 
 impl Sym {
+    /// Can derivatives be taken with respect to this value: an indeterminate of the
+    /// claim, or one of the declared coordinates or parameters?  (Otherwise it is a
+    /// value, such as a function parameter bound to an expression.)
+    pub fn is_symbol_of_claim(&self) -> bool {
+        let same = |y: &Sym| y.try_sub(self).map(|d| d.is_exact_zero()).unwrap_or(false);
+        if let Some(c) = self.ring.change_of_variables() {
+            if c.coords.iter().any(same) || c.params.iter().any(same) {
+                return true;
+            }
+        }
+        self.as_field_var().is_some_and(|j| {
+            matches!(
+                self.ring.state().vars[j].kind,
+                super::ring::VarKind::Indeterminate
+            )
+        })
+    }
+
     /// The exact derivative with respect to an indeterminate `x`.
     ///
     /// ```

@@ -112,7 +112,7 @@ macro_rules! cannot_derive {
         }
     )*};
 }
-cannot_derive!(Dual<f64>, Dual<Float>, Rational);
+cannot_derive!(Dual<f64>, Dual<Float>, Dual<Sym>, Rational);
 
 /// Exact derivatives: the derivation of the prover's tower with respect to the
 /// indeterminate bound to `var` (every value already depends on it through the
@@ -136,6 +136,16 @@ impl Differentiate for Sym {
                 )))
             }
         };
+        // in a function body `var` is a parameter, and d() is the partial derivative of
+        // the body in it (as the numerical backends take it).  That is the derivative in
+        // the claim variable that is its value only when no other parameter depends on
+        // that variable; otherwise (and for values that are no variable) it is taken by
+        // dual numbers over the tower.
+        let partial_is_total =
+            x.is_symbol_of_claim() && (ev.depth == 0 || others_independent(ev, var, comp, &x));
+        if !partial_is_total {
+            return derive_with(ev, body, var, comp);
+        }
         let value = ev.eval(body)?;
         let mut failure = None;
         let out = value.map(&mut |f: &Sym| match f.derivative(&x) {
@@ -150,6 +160,18 @@ impl Differentiate for Sym {
             None => Ok(out),
         }
     }
+}
+
+/// Do the other bindings of the scope (a function's parameters) not depend on `x`, the
+/// value of `var` (component `comp`)?
+fn others_independent(ev: &Evaluator<'_, Sym>, var: &str, comp: Option<i64>, x: &Sym) -> bool {
+    ev.scope.iter().all(|b| {
+        let comps = b.value.components();
+        comps.iter().enumerate().all(|(j, c)| {
+            let itself = b.name == var && comp.map_or(comps.len() == 1, |k| k as usize == j + 1);
+            itself || c.derivative(x).is_ok_and(|d| d.is_exact_zero())
+        })
+    })
 }
 
 #[derive(Clone)]

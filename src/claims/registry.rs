@@ -33,6 +33,9 @@ pub trait ExtFunction: Send + Sync {
     fn call_exact(&self, args: &[Value<Rational>]) -> Result<Value<Rational>, String>;
     /// On exact symbolic values (the prover's backend).
     fn call_sym(&self, args: &[Value<Sym>]) -> Result<Value<Sym>, String>;
+    /// On dual numbers over the prover's values (partial derivatives in a function
+    /// parameter).
+    fn call_dual_sym(&self, args: &[Value<Dual<Sym>>]) -> Result<Value<Dual<Sym>>, String>;
     /// How the prover handles the function when its value is defined implicitly (by
     /// equations the numerical backends solve); `None` for explicit functions.
     fn implicit(&self) -> Option<&dyn Implicit> {
@@ -85,6 +88,15 @@ impl<G: GenericFunction> ExtFunction for G {
         }
         self.call(a)
     }
+    fn call_dual_sym(&self, a: &[Value<Dual<Sym>>]) -> Result<Value<Dual<Sym>>, String> {
+        if self.implicit().is_some() {
+            return Err(format!(
+                "{}: the derivative of an implicit map in a function parameter is not supported",
+                self.name_for_proofs()
+            ));
+        }
+        self.call(a)
+    }
     fn implicit(&self) -> Option<&dyn Implicit> {
         GenericFunction::implicit(self)
     }
@@ -113,6 +125,7 @@ host_call!(
     Dual<Float> => call_dual_mpfr,
     Rational => call_exact,
     Sym => call_sym,
+    Dual<Sym> => call_dual_sym,
 );
 
 /// A registered function.

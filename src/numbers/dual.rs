@@ -142,6 +142,8 @@ impl<S: Scalar> Scalar for Dual<S> {
 }
 
 impl<R: Real> Real for Dual<R> {
+    // a dual over a type that evaluates by rules must not run numerical iterations either
+    const BY_RULE: bool = R::BY_RULE;
     const FIXED: bool = R::FIXED;
     fn prec(&self) -> u32 {
         self.v.prec()

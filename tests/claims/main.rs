@@ -7,6 +7,7 @@ mod decided_branches;
 mod fuzz_claims;
 mod implicit_proofs;
 mod lemmas;
+mod partials;
 mod proof_hints;
 mod sign_cases;
 mod verdict_rules;

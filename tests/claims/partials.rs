@@ -1,0 +1,76 @@
+//! Derivatives in a function's parameter are partial derivatives in the prover as in the
+//! numerical backends: `d(x*y, x)` in `f(x, y)` called as `f(t, t^2)` is `t^2`, not the
+//! total derivative `3 t^2` in the claim variable `t`.
+
+use eulertop::bindings::euler_top::registry;
+use eulertop::claims::catalogue::{load_sources, Body, Catalogue};
+use eulertop::claims::verdict::context::Ctx;
+use eulertop::claims::verdict::symbolic::prove;
+use eulertop::claims::verdict::ProofInfo;
+
+const DEFS: &str = r#"
+[[claim]]
+id = "t.def.partial"
+environment = "Section 2"
+role = "definition"
+labels = []
+location = "control: a derivative in a function parameter"
+printed = 'x'
+kind = "definition"
+define = '''
+pxy(x, y) = d(x * y, x)
+px(x, c) = d(c * x^3, x)
+'''
+"#;
+
+fn control(id: &str, lhs: &str, rhs: &str) -> String {
+    format!(
+        r#"
+[[claim]]
+id = "{id}"
+environment = "Section 2"
+role = "statement"
+labels = []
+location = "control: partial derivatives"
+printed = 'x'
+kind = "identity"
+expect = "holds"
+vars = [["t", "uniform(1, 2)"], ["c", "uniform(1, 2)"]]
+lhs = "{lhs}"
+rhs = "{rhs}"
+"#
+    )
+}
+
+fn catalogue() -> Catalogue {
+    let text = [
+        DEFS.to_string(),
+        control("t.partial.right", "pxy(t, t^2)", "t^2"),
+        control("t.partial.total", "pxy(t, t^2)", "3*t^2"),
+        control("t.partial.independent", "px(t, c)", "3*c*t^2"),
+    ]
+    .concat();
+    load_sources(
+        &[("controls.toml".into(), text)],
+        registry().expect("registry"),
+    )
+    .expect("catalogue")
+}
+
+fn attempt(cat: &Catalogue, id: &str) -> ProofInfo {
+    let claim = cat.claims.iter().find(|c| c.id == id).expect("claim");
+    let Body::Identity { lhs, rhs } = &claim.body else {
+        panic!("{id} is not an identity")
+    };
+    prove(Ctx { cat, claim }, lhs, rhs, false)
+}
+
+#[test]
+fn a_derivative_in_a_parameter_holds_the_other_parameters_fixed() {
+    let cat = catalogue();
+    let p = attempt(&cat, "t.partial.right");
+    assert!(p.is_proved(), "{:?}", p.reason);
+    assert!(!attempt(&cat, "t.partial.total").is_proved());
+    let q = attempt(&cat, "t.partial.independent");
+    assert!(q.is_proved(), "{:?}", q.reason);
+}
