@@ -13,7 +13,6 @@
 //! (once per catalogue) and the claim is not proved otherwise.
 
 use super::context::{eval, Ctx};
-use super::symbolic::prove;
 use crate::algebra::{AlgResult, AlgebraError, Sym};
 use crate::claims::ast::{Expr, ExprKind};
 use crate::claims::catalogue::{Body, Claim, PExpr};
@@ -97,8 +96,11 @@ pub(super) fn apply(ev: &Evaluator<'_, Sym>, lemmas: &[Lemma<'_>]) -> AlgResult<
     Ok(())
 }
 
-/// Checks that every lemma is proved symbolically (memoised per catalogue).
-pub(super) fn check(ctx: Ctx<'_>, lemmas: &[Lemma<'_>]) -> Result<(), String> {
+/// The prover of identities, passed in by its module (which uses this one).
+pub(super) type Prover = fn(Ctx<'_>, &PExpr, &PExpr, bool) -> ProofInfo;
+
+/// Checks that every lemma is proved symbolically by `prove` (memoised per catalogue).
+pub(super) fn check(ctx: Ctx<'_>, lemmas: &[Lemma<'_>], prove: Prover) -> Result<(), String> {
     for l in lemmas {
         let Body::Identity { lhs, rhs } = &l.claim.body else {
             continue;
@@ -107,7 +109,7 @@ pub(super) fn check(ctx: Ctx<'_>, lemmas: &[Lemma<'_>]) -> Result<(), String> {
             cat: ctx.cat,
             claim: l.claim,
         };
-        let p = proof_of(sub, lhs, rhs);
+        let p = proof_of(sub, lhs, rhs, prove);
         if !p.is_proved() {
             return Err(format!(
                 "rests on {}, which is not proved: {}",
@@ -120,7 +122,7 @@ pub(super) fn check(ctx: Ctx<'_>, lemmas: &[Lemma<'_>]) -> Result<(), String> {
 }
 
 /// The symbolic proof of an identity that serves as a lemma, memoised per catalogue.
-pub(super) fn proof_of(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr) -> ProofInfo {
+pub(super) fn proof_of(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, prove: Prover) -> ProofInfo {
     memoised(ctx, &ctx.claim.id, || prove(ctx, lhs, rhs, false))
 }
 

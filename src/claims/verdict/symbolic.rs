@@ -868,7 +868,7 @@ fn with_lemmas(ctx: Ctx<'_>, info: ProofInfo) -> ProofInfo {
     if !info.is_proved() || lemmas.is_empty() {
         return info;
     }
-    match super::lemmas::check(ctx, &lemmas) {
+    match super::lemmas::check(ctx, &lemmas, prove) {
         Ok(()) => info,
         Err(why) => ProofInfo {
             ms: info.ms,
@@ -980,7 +980,7 @@ pub fn judge(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, ev: &mut Evidence) {
         return;
     }
     let info = if super::lemmas::is_lemma(ctx) {
-        super::lemmas::proof_of(ctx, lhs, rhs)
+        super::lemmas::proof_of(ctx, lhs, rhs, prove)
     } else {
         prove(ctx, lhs, rhs, false)
     };
