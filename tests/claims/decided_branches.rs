@@ -4,11 +4,8 @@
 //! variable drawn by `randint` over a few integers is enumerated case by case; and an
 //! indicator `if c then 1 else 0` still states a condition that no normal form proves.
 
-use eulertop::bindings::euler_top::registry;
-use eulertop::claims::catalogue::{load_sources, Body, Catalogue};
-use eulertop::claims::verdict::context::Ctx;
-use eulertop::claims::verdict::symbolic::prove;
-use eulertop::claims::verdict::ProofInfo;
+use super::support::{attempt, controls_only};
+use eulertop::claims::catalogue::Catalogue;
 
 fn control(id: &str, vars: &str, lhs: &str, rhs: &str) -> String {
     format!(
@@ -80,19 +77,7 @@ fn catalogue() -> Catalogue {
         .iter()
         .map(|(id, v, l, r)| control(id, v, l, r))
         .collect();
-    load_sources(
-        &[("controls.toml".into(), text)],
-        registry().expect("registry"),
-    )
-    .expect("catalogue")
-}
-
-fn attempt(cat: &Catalogue, id: &str) -> ProofInfo {
-    let claim = cat.claims.iter().find(|c| c.id == id).expect("claim");
-    let Body::Identity { lhs, rhs } = &claim.body else {
-        panic!("{id} is not an identity")
-    };
-    prove(Ctx { cat, claim }, lhs, rhs, false)
+    controls_only(text)
 }
 
 #[test]

@@ -2,11 +2,8 @@
 //! value supplies it to the claims that use it, a wrong lemma proves nothing, and the
 //! phase of `ell_coords` is a symbol whose sn, cn, dn are known.
 
-use eulertop::bindings::euler_top::registry;
-use eulertop::claims::catalogue::{load_sources, read_sources, Body, Catalogue};
-use eulertop::claims::verdict::context::Ctx;
-use eulertop::claims::verdict::symbolic::prove;
-use eulertop::claims::verdict::ProofInfo;
+use super::support::{attempt, with_catalogue};
+use eulertop::claims::catalogue::Catalogue;
 
 fn control(id: &str, uses: &str, lhs: &str, rhs: &str) -> String {
     format!(
@@ -86,18 +83,7 @@ rhs = "ellM(A, B, C, Msq, E, phi + 2 * delta2(A, B, C, Msq, E, h), sa, sc)"
 }
 
 fn catalogue() -> Catalogue {
-    let dir = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/identities"));
-    let mut sources = read_sources(dir).expect("catalogue files");
-    sources.push(("zz-controls.toml".into(), controls()));
-    load_sources(&sources, registry().expect("registry")).expect("catalogue")
-}
-
-fn attempt(cat: &Catalogue, id: &str) -> ProofInfo {
-    let claim = cat.claims.iter().find(|c| c.id == id).expect("claim");
-    let Body::Identity { lhs, rhs } = &claim.body else {
-        panic!("{id} is not an identity")
-    };
-    prove(Ctx { cat, claim }, lhs, rhs, false)
+    with_catalogue(controls())
 }
 
 #[test]

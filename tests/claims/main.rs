@@ -10,4 +10,5 @@ mod lemmas;
 mod partials;
 mod proof_hints;
 mod sign_cases;
+mod support;
 mod verdict_rules;

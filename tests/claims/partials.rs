@@ -2,11 +2,8 @@
 //! numerical backends: `d(x*y, x)` in `f(x, y)` called as `f(t, t^2)` is `t^2`, not the
 //! total derivative `3 t^2` in the claim variable `t`.
 
-use eulertop::bindings::euler_top::registry;
-use eulertop::claims::catalogue::{load_sources, Body, Catalogue};
-use eulertop::claims::verdict::context::Ctx;
-use eulertop::claims::verdict::symbolic::prove;
-use eulertop::claims::verdict::ProofInfo;
+use super::support::{attempt, controls_only};
+use eulertop::claims::catalogue::Catalogue;
 
 const DEFS: &str = r#"
 [[claim]]
@@ -50,19 +47,7 @@ fn catalogue() -> Catalogue {
         control("t.partial.independent", "px(t, c)", "3*c*t^2"),
     ]
     .concat();
-    load_sources(
-        &[("controls.toml".into(), text)],
-        registry().expect("registry"),
-    )
-    .expect("catalogue")
-}
-
-fn attempt(cat: &Catalogue, id: &str) -> ProofInfo {
-    let claim = cat.claims.iter().find(|c| c.id == id).expect("claim");
-    let Body::Identity { lhs, rhs } = &claim.body else {
-        panic!("{id} is not an identity")
-    };
-    prove(Ctx { cat, claim }, lhs, rhs, false)
+    controls_only(text)
 }
 
 #[test]

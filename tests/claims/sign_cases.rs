@@ -3,10 +3,8 @@
 //! sign only is never proved, and where the joint route cannot decide (a square root
 //! that vanishes in one case), the cases are enumerated.
 
-use eulertop::bindings::euler_top::registry;
-use eulertop::claims::catalogue::{load_sources, read_sources, Body, Catalogue};
-use eulertop::claims::verdict::context::Ctx;
-use eulertop::claims::verdict::symbolic::prove;
+use super::support::{attempt, with_catalogue};
+use eulertop::claims::catalogue::Catalogue;
 use eulertop::claims::verdict::ProofInfo;
 
 fn control(id: &str, lhs: &str, rhs: &str) -> String {
@@ -43,22 +41,11 @@ const CONTROLS: [(&str, &str, &str); 6] = [
 ];
 
 fn catalogue() -> Catalogue {
-    let dir = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/identities"));
-    let mut sources = read_sources(dir).expect("catalogue files");
     let text: String = CONTROLS
         .iter()
         .map(|(id, l, r)| control(id, l, r))
         .collect();
-    sources.push(("controls.toml".into(), text));
-    load_sources(&sources, registry().expect("registry")).expect("catalogue")
-}
-
-fn attempt(cat: &Catalogue, id: &str) -> ProofInfo {
-    let claim = cat.claims.iter().find(|c| c.id == id).expect("claim");
-    let Body::Identity { lhs, rhs } = &claim.body else {
-        panic!("{id} is not an identity")
-    };
-    prove(Ctx { cat, claim }, lhs, rhs, false)
+    with_catalogue(text)
 }
 
 fn joint(p: &ProofInfo) -> bool {

@@ -202,11 +202,17 @@ pub(super) fn is_lemma(ctx: Ctx<'_>) -> bool {
 
 /// Do the claim's own formulas call `name`?
 fn calls(claim: &Claim, name: &str) -> bool {
+    calls_where(claim, |n| n == name)
+}
+
+/// Do the claim's own formulas (sides or expression, and `let`s) call a function whose
+/// name satisfies `pred`?
+pub(super) fn calls_where(claim: &Claim, pred: impl Fn(&str) -> bool) -> bool {
     let mut found = false;
     let mut look = |e: &Expr| {
         e.walk(&mut |x| {
             if let ExprKind::Call(n, _) = &x.kind {
-                found |= n == name;
+                found |= pred(n);
             }
         })
     };

@@ -98,28 +98,11 @@ pub fn verify(
 /// A rough rank of a claim's cost, for scheduling only: independence proofs through
 /// implicit maps, then identities with implicit calls, then the rest.
 fn expected_cost(cat: &Catalogue, claim: &Claim) -> u8 {
-    let mut implicit = false;
-    let mut look = |e: &crate::claims::ast::Expr| {
-        e.walk(&mut |x| {
-            if let crate::claims::ast::ExprKind::Call(n, _) = &x.kind {
-                implicit |= cat
-                    .registry
-                    .ext(n)
-                    .is_some_and(|r| r.f.implicit().is_some());
-            }
-        })
-    };
-    match &claim.body {
-        Body::Identity { lhs, rhs } => {
-            look(&lhs.expr);
-            look(&rhs.expr);
-        }
-        Body::Independence { expr, .. } => look(&expr.expr),
-        _ => {}
-    }
-    for b in &claim.lets {
-        look(&b.body);
-    }
+    let implicit = lemmas::calls_where(claim, |n| {
+        cat.registry
+            .ext(n)
+            .is_some_and(|r| r.f.implicit().is_some())
+    });
     match (&claim.body, implicit) {
         (Body::Independence { .. }, true) => 2,
         (Body::Identity { .. }, true) => 1,

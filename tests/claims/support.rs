@@ -1,0 +1,33 @@
+//! What the proof tests share: catalogues with control claims, and one proof attempt.
+
+use eulertop::bindings::euler_top::registry;
+use eulertop::claims::catalogue::{load_sources, read_sources, Body, Catalogue};
+use eulertop::claims::verdict::context::Ctx;
+use eulertop::claims::verdict::symbolic::prove;
+use eulertop::claims::verdict::ProofInfo;
+
+/// The catalogue of `identities/` with the control claims `text` added.
+pub fn with_catalogue(text: String) -> Catalogue {
+    let dir = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/identities"));
+    let mut sources = read_sources(dir).expect("catalogue files");
+    sources.push(("zz-controls.toml".into(), text));
+    load_sources(&sources, registry().expect("registry")).expect("catalogue")
+}
+
+/// A catalogue of the control claims `text` alone.
+pub fn controls_only(text: String) -> Catalogue {
+    load_sources(
+        &[("controls.toml".into(), text)],
+        registry().expect("registry"),
+    )
+    .expect("catalogue")
+}
+
+/// The symbolic proof attempt of identity `id`.
+pub fn attempt(cat: &Catalogue, id: &str) -> ProofInfo {
+    let claim = cat.claims.iter().find(|c| c.id == id).expect("claim");
+    let Body::Identity { lhs, rhs } = &claim.body else {
+        panic!("{id} is not an identity")
+    };
+    prove(Ctx { cat, claim }, lhs, rhs, false)
+}
