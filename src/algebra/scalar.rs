@@ -124,6 +124,18 @@ impl Scalar for Sym {
     fn is_zero(&self) -> bool {
         self.is_exact_zero()
     }
+    fn stated_sign(&self) -> Result<i32, String> {
+        if self.is_exact_zero() {
+            return Ok(0);
+        }
+        match self.as_rational() {
+            Some(q) => Ok(if q < 0 { -1 } else { 1 }),
+            None => Err(format!(
+                "the sign of {} is not exact: sign and abs in a claim's formulas are decided only exactly (a sign taken at domain points would be the condition the formula states)",
+                self.render_short(80)
+            )),
+        }
+    }
     fn test_zero(&self) -> bool {
         if self.is_exact_zero() {
             return true;

@@ -99,6 +99,23 @@ pub trait Scalar:
     fn test_zero(&self) -> bool {
         self.is_zero()
     }
+    /// The sign (−1, 0, 1) for `sign` and `abs` in an expression language.  A number
+    /// answers by comparison; a symbolic value answers only when its sign is exact (a
+    /// rational, or exactly 0), because a sign decided at sample points of the domain
+    /// would be the very condition such a formula states.
+    fn stated_sign(&self) -> Result<i32, String>
+    where
+        Self: PartialOrd,
+    {
+        let z = self.zero();
+        Ok(if *self > z {
+            1
+        } else if *self < z {
+            -1
+        } else {
+            0
+        })
+    }
     /// The absolute value (modulus), rounded to `f64`.  Used for residual scaling.
     fn magnitude(&self) -> f64;
     /// The value rounded to `f64` (for complex scalars: the real part).

@@ -62,6 +62,15 @@ fn controls() -> Vec<(&'static str, &'static str, &'static str, &'static str)> {
             "if ax == 1 then x else if ax == 2 then 2*x else 3*x",
             "3*x",
         ),
+        // abs and sign are decided only exactly: abs(x) = x on x > 0 is a condition
+        ("t.abs.sampled", X, "abs(x)", "x"),
+        ("t.sign.sampled", X, "sign(x) * x", "x"),
+        (
+            "t.abs.exact",
+            X,
+            "abs((x + y)^2 - x^2 - 2*x*y - y^2) + x",
+            "x",
+        ),
         // a continuous ax is never equal to 1: decided, with an assumption
         (
             "t.if.generic-unequal",
@@ -124,4 +133,17 @@ fn an_equality_with_a_nonzero_normal_form_is_decided_on_the_domain() {
         "{:?}",
         p.assumptions
     );
+}
+
+#[test]
+fn abs_and_sign_are_decided_only_where_the_sign_is_exact() {
+    let cat = catalogue();
+    for id in ["t.abs.sampled", "t.sign.sampled"] {
+        let p = attempt(&cat, id);
+        assert!(!p.is_proved(), "{id} proved from sampled signs");
+        let why = p.reason.unwrap_or_default();
+        assert!(why.contains("is not exact"), "{id}: {why}");
+    }
+    let p = attempt(&cat, "t.abs.exact");
+    assert!(p.is_proved(), "{:?}", p.reason);
 }

@@ -12,9 +12,11 @@
 //! **Decisions.**  Comparisons, `abs`, the sign of a square root and the choice of a
 //! regime are decided at domain points of the claim (the prover's shadows) and recorded
 //! as assumptions.  So is the condition of an `if` that selects between two formulas
-//! (the regime of (M-M 1): `if up then … else …`).  A claim whose own formulas take
-//! `abs`, `sign`, `min`, `max`, or an indicator `if c then 1 else 0` (a branch that is a
-//! number) states a condition, which a normal form cannot prove: it is not attempted.
+//! (the regime of (M-M 1): `if up then … else …`).  `abs` and `sign` in the catalogue's
+//! formulas are decided only where the sign is exact (see `Scalar::stated_sign`).  A
+//! claim whose own formulas take `min`, `max`, or an indicator `if c then 1 else 0` (a
+//! branch that is a number) states a condition, which a normal form cannot prove: it is
+//! not attempted.
 //! A comparison yields a truth value, which only an `if` can use.
 //!
 //! ```
@@ -133,9 +135,7 @@ fn states_condition(ctx: Ctx<'_>, sides: &[&PExpr]) -> Option<String> {
         e.walk(&mut |x| {
             let what = match &x.kind {
                 ExprKind::If(_, a, b) if is_literal(a) || is_literal(b) => Some("if".to_string()),
-                ExprKind::Call(n, _)
-                    if ["abs", "sign", "min", "max", "floor"].contains(&n.as_str()) =>
-                {
+                ExprKind::Call(n, _) if ["min", "max", "floor"].contains(&n.as_str()) => {
                     Some(n.clone())
                 }
                 _ => None,
