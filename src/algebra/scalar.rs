@@ -227,10 +227,11 @@ impl Real for Sym {
         self.not_algebraic("ln")
     }
     fn sin(&self) -> Self {
-        self.not_algebraic("sin")
+        // sin u = sn(u, 0) (DLMF 22.5.ii: at k = 0, sn = sin, cn = cos, dn = 1)
+        self.circular(|s, _| Ok(s.clone()))
     }
     fn cos(&self) -> Self {
-        self.not_algebraic("cos")
+        self.circular(|_, c| Ok(c.clone()))
     }
     fn atan(&self) -> Self {
         self.not_algebraic("atan")
@@ -284,6 +285,13 @@ impl Sym {
     fn hyperbolic(&self, f: impl Fn(&Sym, &Sym) -> AlgResult<Sym>) -> Sym {
         let one = self.ring.integer(1);
         let r = self.sncndn(&one).and_then(|(s, c, _)| f(&s, &c));
+        Sym::or_poison(&self.ring, r)
+    }
+
+    /// A circular function of a real argument from sn and cn at modulus 0.
+    fn circular(&self, f: impl Fn(&Sym, &Sym) -> AlgResult<Sym>) -> Sym {
+        let zero = self.ring.integer(0);
+        let r = self.sncndn(&zero).and_then(|(s, c, _)| f(&s, &c));
         Sym::or_poison(&self.ring, r)
     }
 

@@ -71,6 +71,10 @@ fn controls() -> Vec<(&'static str, &'static str, &'static str, &'static str)> {
             "abs((x + y)^2 - x^2 - 2*x*y - y^2) + x",
             "x",
         ),
+        // sin and cos are sn and cn of modulus 0
+        ("t.sin.double", X, "sin(2*x)", "2*sin(x)*cos(x)"),
+        ("t.sin.wrong", X, "sin(2*x)", "2*sin(x)"),
+        ("t.cos.derivative", X, "d(cos(x*y), x)", "-y*sin(x*y)"),
         // a continuous ax is never equal to 1: decided, with an assumption
         (
             "t.if.generic-unequal",
@@ -146,4 +150,14 @@ fn abs_and_sign_are_decided_only_where_the_sign_is_exact() {
     }
     let p = attempt(&cat, "t.abs.exact");
     assert!(p.is_proved(), "{:?}", p.reason);
+}
+
+#[test]
+fn circular_functions_are_sn_and_cn_of_modulus_zero() {
+    let cat = catalogue();
+    for id in ["t.sin.double", "t.cos.derivative"] {
+        let p = attempt(&cat, id);
+        assert!(p.is_proved(), "{id}: {:?}", p.reason);
+    }
+    assert!(!attempt(&cat, "t.sin.wrong").is_proved());
 }

@@ -127,8 +127,8 @@ pub(super) fn proof_of(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, prove: Prover) ->
 }
 
 /// A proof memoised per catalogue under `key`.  The first caller computes it; a caller
-/// that finds it under way runs other pending work of the thread pool until it is
-/// there (a panic in the computation is recorded as a failed proof).
+/// that finds it under way waits for it (a panic in the computation is recorded as a
+/// failed proof).
 pub(super) fn memoised(ctx: Ctx<'_>, key: &str, run: impl FnOnce() -> ProofInfo) -> ProofInfo {
     use std::sync::atomic::Ordering;
     let slot = ctx.cat.lemma_memo.slot(key);
@@ -143,13 +143,14 @@ pub(super) fn memoised(ctx: Ctx<'_>, key: &str, run: impl FnOnce() -> ProofInfo)
         let _ = slot.value.set(std::sync::Arc::new(p.clone()));
         return p;
     }
+    // wait without running other work meanwhile: a task run here could wait in turn for
+    // a proof that is waiting for this one.  The computing caller only ever waits for
+    // its own lemmas (the `uses` graph has no cycles), so the waits end.
     loop {
         if let Some(r) = slot.value.get() {
             return read(r);
         }
-        if !matches!(rayon::yield_now(), Some(rayon::Yield::Executed)) {
-            std::thread::sleep(std::time::Duration::from_millis(1));
-        }
+        std::thread::sleep(std::time::Duration::from_millis(1));
     }
 }
 
