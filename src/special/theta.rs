@@ -54,11 +54,13 @@ pub(crate) const SERIES_MAX_M: f64 = 0.81;
 /// quarter period known to 150 bits.
 const J_FAST: i64 = 256;
 
-/// Largest `ε⁴` for which the series takes the nome in `f64`: the scale's error is then
-/// below `2⁻⁶⁵` (measured below `E·2⁻⁴⁸` with `E = 2q⁴ ≤ 2⁻¹⁷`, test
-/// `f64_nome_scale_against_mpfr`), as the fast reduction needs (see
-/// [`Theta::with_bottom`]); above it (`κ ≳ 0.7`) `ε` is a double-double.
-const NOME_F64_MAX_E4: f64 = 1.0 / (1u64 << 18) as f64;
+/// Largest `κ²` for which the series takes the nome in `f64`: there `ε⁴ < 2⁻¹⁸` (at
+/// `ε⁴ = 2⁻¹⁸`, `κ² ≈ 0.5078`), so the scale's error is below `2⁻⁶⁵` (measured below
+/// `E·2⁻⁴⁸` with `E = 2q⁴ ≤ 2⁻¹⁷`, test `f64_nome_scale_against_mpfr`), as the fast
+/// reduction needs (see [`Theta::with_bottom`]); above it (`κ > 1/√2`) `ε` is a
+/// double-double.  The test is on `κ²`, known at once, rather than on `ε`, so that a
+/// new modulus does not wait for the nome to learn which way it goes.
+const NOME_F64_MAX_M: f64 = 0.5;
 
 /// Per-modulus data of the fixed-precision theta bottoms.
 #[derive(Clone, Debug)]
@@ -101,7 +103,7 @@ fn quarter_root<R: Real>(x: &Dd<R>) -> Dd<R> {
 
 impl<R: Real> Theta<R> {
     /// The data for the modulus `κ` given by `m = κ²` and `mc = κ'² = 1 − κ²` (both as
-    /// double-doubles, `0 ≤ m`, `0 < mc`).
+    /// normalised double-doubles, `0 ≤ m`, `0 < mc`).
     #[inline(always)]
     pub(crate) fn new(m: &Dd<R>, mc: &Dd<R>) -> Self {
         Self::with_bottom(m, mc, m.v() > SERIES_MAX_M, false)
@@ -116,7 +118,9 @@ impl<R: Real> Theta<R> {
     #[inline(always)]
     pub(crate) fn with_bottom(m: &Dd<R>, mc: &Dd<R>, imaginary: bool, precise: bool) -> Self {
         let (a, b) = if imaginary { (mc, m) } else { (m, mc) };
-        let nome = Nome::new(&a.norm(), &b.norm(), precise || imaginary);
+        // the f64 nome is enough up to κ² = NOME_F64_MAX_M (the scale to 2⁻⁶⁵)
+        let precise = precise || imaginary || a.v() > NOME_F64_MAX_M;
+        let nome = Nome::new(a, b, precise);
         let pow = powers(&nome.q);
         let scale = nome.scale(&pow[6]);
         let one = m.hi.one();
@@ -329,8 +333,6 @@ impl<R: Real> Nome<R> {
         let opt = t.add_r(&one);
         let den = t.sqr().add_r(&one).mul(&opt.sqr()).mul_2si(1);
         let eps_f = a.hi.clone() / den.hi.clone();
-        // the f64 nome is enough while ε⁴ ≤ NOME_F64_MAX_E4 (the scale to 2⁻⁶⁵)
-        let precise = precise || eps_f.to_f64().powi(4) > NOME_F64_MAX_E4;
         let eps = if precise {
             a.div(&den).norm()
         } else {
@@ -395,7 +397,7 @@ impl<R: Real> Nome<R> {
             half_opt.add(&neg.mul(&cprime))
         } else {
             // (1 − c')² = (1 + E)⁻² = 1 − δ, δ = E(2 − 3E + 4E² − 5E³) + O(E⁵) with
-            // E ≤ 2⁻¹⁷ (NOME_F64_MAX_E4): no division after the nome
+            // E ≤ 2⁻¹⁷ (NOME_F64_MAX_M): no division after the nome
             let q4 = e4.clone() * (one.clone() + e4.mul_2si(3) + g2);
             let big_e = (q4 + q16.clone()).mul_2si(1);
             let c = |n: i64| one.from_i64(n);
