@@ -40,7 +40,7 @@
 //! `πK/(2K') = −ln(q')/2`, also in double-double ([`Dd::ln`]).
 
 use super::bottom::Bottom;
-use super::dd::{two_prod, two_sum, with_value, Dd};
+use super::dd::{fast_two_sum, two_prod, two_sum, with_value, Dd};
 use crate::numbers::Real;
 
 /// `π/2` as a double-double.
@@ -122,7 +122,7 @@ impl<R: Real> Theta<R> {
         let precise = precise || imaginary || a.v() > NOME_F64_MAX_M;
         let nome = Nome::new(a, b, precise);
         let pow = powers(&nome.q);
-        let scale = nome.scale(&pow[6]);
+        let scale = nome.scale();
         let one = m.hi.one();
         let period = if imaginary {
             nome.half_log_period()
@@ -377,36 +377,43 @@ impl<R: Real> Nome<R> {
     /// `π/(2K_λ) = AGM(1, λ') = ((1 + T)/(2θ₃(0, q⁴)))²` with `1/θ₃(0, q⁴) = 1 − c'`,
     /// `c' = E/(1 + E)`, `E = 2q⁴ + 2q¹⁶`, and `q⁴ = ε⁴(1 + g)`,
     /// `g = (1 + w)⁴ − 1 = 8ε⁴ + g₂`, `g₂ = 4t₈ + w²(6 + 4w + w²)` (about `84ε⁸`).
+    /// Everything comes from `ε⁴` and `w` (`q¹⁶` as `(q⁴)⁴`), not from the nome itself,
+    /// so the scale does not wait for the powers of `q`.
     #[inline(always)]
-    fn scale(&self, q16: &R) -> Dd<R> {
+    fn scale(&self) -> Dd<R> {
         let one = self.q.one();
         let (w, e4) = (&self.w, &self.e4);
         let g2 = self.w_tail.mul_2si(2)
             + w.sqr() * (one.from_i64(6) + w.clone() * (one.from_i64(4) + w.clone()));
         let half_opt = self.opt.mul_2si(-1);
-        let wdd = if self.precise {
+        if self.precise {
             let eps4 = self.eps4();
             let q4 = eps4.add(&eps4.sqr().mul_2si(3).add_r(&(eps4.hi.clone() * g2)));
-            let big_e = q4.add_r(q16).mul_2si(1).norm();
+            let q16 = q4.hi.sqr().sqr();
+            let big_e = q4.add_r(&q16).mul_2si(1).norm();
             let ev = big_e.hi.clone();
             let cprime = big_e.add_r(&(-(ev.sqr() / (one.clone() + ev))));
             let neg = Dd {
                 hi: -half_opt.hi.clone(),
                 lo: -half_opt.lo,
             };
-            half_opt.add(&neg.mul(&cprime))
-        } else {
-            // (1 − c')² = (1 + E)⁻² = 1 − δ, δ = E(2 − 3E + 4E² − 5E³) + O(E⁵) with
-            // E ≤ 2⁻¹⁷ (NOME_F64_MAX_M): no division after the nome
-            let q4 = e4.clone() * (one.clone() + e4.mul_2si(3) + g2);
-            let big_e = (q4 + q16.clone()).mul_2si(1);
-            let c = |n: i64| one.from_i64(n);
-            let delta = big_e.clone()
-                * (c(2) + big_e.clone() * (c(-3) + big_e.clone() * (c(4) - big_e.clone() * c(5))));
-            let s0 = half_opt.sqr();
-            return s0.add_r(&-(s0.hi.clone() * delta)).norm();
-        };
-        wdd.sqr().norm()
+            return half_opt.add(&neg.mul(&cprime)).sqr().norm();
+        }
+        // (1 − c')² = (1 + E)⁻² = 1 − δ, δ = E(2 − 3E + 4E² − 5E³) + O(E⁵) with
+        // E ≤ 2⁻¹⁷ (NOME_F64_MAX_M): no division after the nome
+        let q4 = e4.clone() * (one.clone() + e4.mul_2si(3) + g2);
+        let big_e = (q4.clone() + q4.sqr().sqr()).mul_2si(1);
+        let c = |n: i64| one.from_i64(n);
+        let delta = big_e.clone()
+            * (c(2) + big_e.clone() * (c(-3) + big_e.clone() * (c(4) - big_e.clone() * c(5))));
+        let s0 = half_opt.sqr();
+        // s0·(1 − δ) with 0 < δ < 2⁻¹⁵: a fast two-sum leaves it normalised to an ulp
+        let corr = -(s0.hi.clone() * delta);
+        let (h, e) = fast_two_sum(s0.v(), corr.to_f64());
+        Dd {
+            hi: with_value(&(s0.hi.clone() + corr), h),
+            lo: e + s0.lo,
+        }
     }
 
     /// `−ln(q)/2` (the quarter period `πK/(2K')` at imaginary argument):
