@@ -106,6 +106,16 @@ impl<R: Real> Dd<R> {
         }
     }
 
+    /// [`Dd::norm`] for `|lo| ≤ |hi|` (as after one operation), by a fast two-sum.
+    #[inline(always)]
+    pub(crate) fn norm_fast(&self) -> Self {
+        let (s, e) = fast_two_sum(self.v(), self.lo);
+        Dd {
+            hi: with_value(&self.hi, s),
+            lo: e,
+        }
+    }
+
     /// `self + o`.
     #[inline(always)]
     pub(crate) fn add(&self, o: &Self) -> Self {

@@ -88,9 +88,10 @@ pub(crate) struct Theta<R> {
 /// `t + (x − t⁴)/(4t³)` with `x − t⁴` formed exactly.
 #[inline(always)]
 fn quarter_root<R: Real>(x: &Dd<R>) -> Dd<R> {
-    // 1/(4t³) = t/(4t⁴) ≈ t/(4x): the division overlaps the square roots
-    let inv4x = 0.25 / x.v();
     let t = x.hi.sqrt().sqrt();
+    // 1/(4t³) = t/(4t⁴) ≈ t/(4x): the division overlaps the square roots (issued after
+    // the first one, which it would otherwise delay on the shared divider)
+    let inv4x = 0.25 / x.v();
     let tv = t.to_f64();
     let t2 = Dd::from(t.clone()).sqr();
     let t4 = t2.sqr();
@@ -334,7 +335,7 @@ impl<R: Real> Nome<R> {
         let den = t.sqr().add_r(&one).mul(&opt.sqr()).mul_2si(1);
         let eps_f = a.hi.clone() / den.hi.clone();
         let eps = if precise {
-            a.div(&den).norm()
+            a.div(&den).norm_fast()
         } else {
             Dd::from(eps_f)
         };
@@ -390,14 +391,15 @@ impl<R: Real> Nome<R> {
             let eps4 = self.eps4();
             let q4 = eps4.add(&eps4.sqr().mul_2si(3).add_r(&(eps4.hi.clone() * g2)));
             let q16 = q4.hi.sqr().sqr();
-            let big_e = q4.add_r(&q16).mul_2si(1).norm();
+            let big_e = q4.add_r(&q16).mul_2si(1).norm_fast();
             let ev = big_e.hi.clone();
             let cprime = big_e.add_r(&(-(ev.sqr() / (one.clone() + ev))));
             let neg = Dd {
                 hi: -half_opt.hi.clone(),
                 lo: -half_opt.lo,
             };
-            return half_opt.add(&neg.mul(&cprime)).sqr().norm();
+            // (the square is normalised to within an ulp: no renormalisation)
+            return half_opt.add(&neg.mul(&cprime)).sqr();
         }
         // (1 − c')² = (1 + E)⁻² = 1 − δ, δ = E(2 − 3E + 4E² − 5E³) + O(E⁵) with
         // E ≤ 2⁻¹⁷ (NOME_F64_MAX_M): no division after the nome
