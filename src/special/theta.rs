@@ -440,7 +440,7 @@ impl<R: Real> Nome<R> {
             hi: -lnq.hi.mul_2si(-1),
             lo: -lnq.lo / 2.0,
         }
-        .norm()
+        .norm_fast()
     }
 }
 
