@@ -384,10 +384,10 @@ impl<R: Real> Nome<R> {
     fn scale(&self) -> Dd<R> {
         let one = self.q.one();
         let (w, e4) = (&self.w, &self.e4);
-        let g2 = self.w_tail.mul_2si(2)
-            + w.sqr() * (one.from_i64(6) + w.clone() * (one.from_i64(4) + w.clone()));
         let half_opt = self.opt.mul_2si(-1);
         if self.precise {
+            let g2 = self.w_tail.mul_2si(2)
+                + w.sqr() * (one.from_i64(6) + w.clone() * (one.from_i64(4) + w.clone()));
             let eps4 = self.eps4();
             let q4 = eps4.add(&eps4.sqr().mul_2si(3).add_r(&(eps4.hi.clone() * g2)));
             let q16 = q4.hi.sqr().sqr();
@@ -402,7 +402,10 @@ impl<R: Real> Nome<R> {
             return half_opt.add(&neg.mul(&cprime)).sqr();
         }
         // (1 − c')² = (1 + E)⁻² = 1 − δ, δ = E(2 − 3E + 4E² − 5E³) + O(E⁵) with
-        // E ≤ 2⁻¹⁷ (NOME_F64_MAX_M): no division after the nome
+        // E ≤ 2⁻¹⁷ (NOME_F64_MAX_M): no division after the nome; and with ε⁴ ≤ 2⁻¹⁸
+        // `g₂ = 84ε⁸ + 992ε¹² + O(ε¹⁶)` (the next term moves `E` by under 2⁻⁷⁵), straight
+        // from `ε⁴` rather than through `w`
+        let g2 = e4.sqr() * (one.from_i64(84) + e4.clone() * one.from_i64(992));
         let q4 = e4.clone() * (one.clone() + e4.mul_2si(3) + g2);
         let big_e = (q4.clone() + q4.sqr().sqr()).mul_2si(1);
         let c = |n: i64| one.from_i64(n);
