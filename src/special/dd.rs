@@ -30,6 +30,14 @@ pub(crate) fn two_sum(a: f64, b: f64) -> (f64, f64) {
     (s, (a - (s - bb)) + (b - bb))
 }
 
+/// `(s, e)` with `s = fl(a + b)` and `s + e = a + b` exactly, for `a = 0` or
+/// `|a| ≥ |b|` (Dekker's fast two-sum: three operations instead of six).
+#[inline(always)]
+pub(crate) fn fast_two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    (s, b - (s - a))
+}
+
 /// `(p, e)` with `p = fl(a·b)` and `p + e = a·b` exactly, by one fused multiply-add
 /// (`f64::mul_add` is correctly rounded everywhere; it is one instruction in code
 /// compiled for FMA, see [`with_fma`], and a libm call elsewhere).
@@ -92,6 +100,16 @@ impl<R: Real> Dd<R> {
     #[inline(always)]
     pub(crate) fn norm(&self) -> Self {
         let (s, e) = two_sum(self.v(), self.lo);
+        Dd {
+            hi: with_value(&self.hi, s),
+            lo: e,
+        }
+    }
+
+    /// [`Dd::norm`] for `|lo| ≤ |hi|` (as after one operation), by a fast two-sum.
+    #[inline(always)]
+    pub(crate) fn norm_fast(&self) -> Self {
+        let (s, e) = fast_two_sum(self.v(), self.lo);
         Dd {
             hi: with_value(&self.hi, s),
             lo: e,

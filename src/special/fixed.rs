@@ -9,7 +9,7 @@
 //! * the 150-bit quarter periods used by the exact reduction of large arguments.
 
 use super::bottom::{sine_cases, tanh_sech, Bottom};
-use super::dd::{two_sum, with_fma, with_value, Dd};
+use super::dd::{fast_two_sum, two_sum, with_fma, with_value, Dd};
 use super::modulus::{quadrant, untransform, Form, Modulus, Spec};
 use super::reduce::reduce_dd2;
 use super::theta::{Theta, SERIES_MAX_M};
@@ -95,9 +95,9 @@ pub(crate) fn sncndn_fixed_many<R: Real>(
     )
 }
 
-/// `1 − x` as a double-double.
+/// `1 − x` as a normalised double-double, for any `x`.
 #[inline(always)]
-fn one_minus<R: Real>(x: &Dd<R>) -> Dd<R> {
+fn one_minus_any<R: Real>(x: &Dd<R>) -> Dd<R> {
     let (s, e) = two_sum(1.0, -x.v());
     Dd {
         hi: with_value(&(x.hi.one() - x.hi.clone()), s),
@@ -106,7 +106,21 @@ fn one_minus<R: Real>(x: &Dd<R>) -> Dd<R> {
     .norm()
 }
 
-/// `(κ², κ'², f, form)` of a [`Spec`] in double-double.
+/// `1 − x` as a normalised double-double, for `0 ≤ x ≤ 1` with `|x.lo| ≤ ulp(x.hi)`:
+/// `1 − x.hi` is exact for `x.hi ≥ ½` (Sterbenz) and at least `½` otherwise, so both
+/// sums are fast two-sums ([`fast_two_sum`]).
+#[inline(always)]
+fn one_minus<R: Real>(x: &Dd<R>) -> Dd<R> {
+    let (s, e) = fast_two_sum(1.0, -x.v());
+    let (h, l) = fast_two_sum(s, e - x.lo);
+    Dd {
+        hi: with_value(&(x.hi.one() - x.hi.clone()), h),
+        lo: l,
+    }
+}
+
+/// `(κ², κ'², f, form)` of a [`Spec`] in double-double, `κ²` and `κ'²` normalised (as
+/// [`Theta::with_bottom`] takes them).
 #[inline(always)]
 fn fixed_modulus<R: Real>(spec: Spec<'_, R>) -> (Dd<R>, Dd<R>, Dd<R>, Form) {
     let dd = |x: &R| Dd::from(x.clone());
@@ -125,12 +139,18 @@ fn fixed_modulus<R: Real>(spec: Spec<'_, R>) -> (Dd<R>, Dd<R>, Dd<R>, Form) {
             let m = dd(&k.one()).div(&dd(k).sqr());
             let km1 = dd(k).add_r(&(-k.one()));
             let kp1 = dd(k).add_r(&k.one());
-            (m.clone(), km1.mul(&kp1).mul(&m), dd(k), Form::Reciprocal)
+            let mc = km1.mul(&kp1).mul(&m).norm();
+            (m.norm(), mc, dd(k), Form::Reciprocal)
         }
         Spec::Parameter(m) if *m < m.zero() => {
-            let opm = one_minus(&dd(m));
+            let opm = one_minus_any(&dd(m));
             let inv = dd(&m.one()).div(&opm);
-            (inv.mul_r(&-m.clone()), inv, opm.sqrt(), Form::Imaginary)
+            (
+                inv.mul_r(&-m.clone()).norm(),
+                inv.norm(),
+                opm.sqrt(),
+                Form::Imaginary,
+            )
         }
         Spec::Parameter(m) if *m <= m.one() => {
             (dd(m), one_minus(&dd(m)), dd(&m.one()), Form::Direct)
@@ -138,7 +158,7 @@ fn fixed_modulus<R: Real>(spec: Spec<'_, R>) -> (Dd<R>, Dd<R>, Dd<R>, Form) {
         Spec::Parameter(m) => {
             let inv = dd(&m.one()).div(&dd(m));
             let c = dd(m).add_r(&(-m.one())).mul(&inv);
-            (inv, c, dd(m).sqrt(), Form::Reciprocal)
+            (inv.norm(), c.norm(), dd(m).sqrt(), Form::Reciprocal)
         }
     }
 }

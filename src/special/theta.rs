@@ -40,7 +40,7 @@
 //! `πK/(2K') = −ln(q')/2`, also in double-double ([`Dd::ln`]).
 
 use super::bottom::Bottom;
-use super::dd::{two_prod, two_sum, with_value, Dd};
+use super::dd::{fast_two_sum, two_prod, two_sum, with_value, Dd};
 use crate::numbers::Real;
 
 /// `π/2` as a double-double.
@@ -54,11 +54,13 @@ pub(crate) const SERIES_MAX_M: f64 = 0.81;
 /// quarter period known to 150 bits.
 const J_FAST: i64 = 256;
 
-/// Largest `ε⁴` for which the series takes the nome in `f64`: the scale's error is then
-/// below `2⁻⁶⁵` (measured below `E·2⁻⁴⁸` with `E = 2q⁴ ≤ 2⁻¹⁷`, test
-/// `f64_nome_scale_against_mpfr`), as the fast reduction needs (see
-/// [`Theta::with_bottom`]); above it (`κ ≳ 0.7`) `ε` is a double-double.
-const NOME_F64_MAX_E4: f64 = 1.0 / (1u64 << 18) as f64;
+/// Largest `κ²` for which the series takes the nome in `f64`: there `ε⁴ < 2⁻¹⁸` (at
+/// `ε⁴ = 2⁻¹⁸`, `κ² ≈ 0.5078`), so the scale's error is below `2⁻⁶⁵` (measured below
+/// `E·2⁻⁴⁸` with `E = 2q⁴ ≤ 2⁻¹⁷`, test `f64_nome_scale_against_mpfr`), as the fast
+/// reduction needs (see [`Theta::with_bottom`]); above it (`κ > 1/√2`) `ε` is a
+/// double-double.  The test is on `κ²`, known at once, rather than on `ε`, so that a
+/// new modulus does not wait for the nome to learn which way it goes.
+const NOME_F64_MAX_M: f64 = 0.5;
 
 /// Per-modulus data of the fixed-precision theta bottoms.
 #[derive(Clone, Debug)]
@@ -86,9 +88,10 @@ pub(crate) struct Theta<R> {
 /// `t + (x − t⁴)/(4t³)` with `x − t⁴` formed exactly.
 #[inline(always)]
 fn quarter_root<R: Real>(x: &Dd<R>) -> Dd<R> {
-    // 1/(4t³) = t/(4t⁴) ≈ t/(4x): the division overlaps the square roots
-    let inv4x = 0.25 / x.v();
     let t = x.hi.sqrt().sqrt();
+    // 1/(4t³) = t/(4t⁴) ≈ t/(4x): the division overlaps the square roots (issued after
+    // the first one, which it would otherwise delay on the shared divider)
+    let inv4x = 0.25 / x.v();
     let tv = t.to_f64();
     let t2 = Dd::from(t.clone()).sqr();
     let t4 = t2.sqr();
@@ -101,7 +104,7 @@ fn quarter_root<R: Real>(x: &Dd<R>) -> Dd<R> {
 
 impl<R: Real> Theta<R> {
     /// The data for the modulus `κ` given by `m = κ²` and `mc = κ'² = 1 − κ²` (both as
-    /// double-doubles, `0 ≤ m`, `0 < mc`).
+    /// normalised double-doubles, `0 ≤ m`, `0 < mc`).
     #[inline(always)]
     pub(crate) fn new(m: &Dd<R>, mc: &Dd<R>) -> Self {
         Self::with_bottom(m, mc, m.v() > SERIES_MAX_M, false)
@@ -116,9 +119,11 @@ impl<R: Real> Theta<R> {
     #[inline(always)]
     pub(crate) fn with_bottom(m: &Dd<R>, mc: &Dd<R>, imaginary: bool, precise: bool) -> Self {
         let (a, b) = if imaginary { (mc, m) } else { (m, mc) };
-        let nome = Nome::new(&a.norm(), &b.norm(), precise || imaginary);
+        // the f64 nome is enough up to κ² = NOME_F64_MAX_M (the scale to 2⁻⁶⁵)
+        let precise = precise || imaginary || a.v() > NOME_F64_MAX_M;
+        let nome = Nome::new(a, b, precise);
         let pow = powers(&nome.q);
-        let scale = nome.scale(&pow[6]);
+        let scale = nome.scale();
         let one = m.hi.one();
         let period = if imaginary {
             nome.half_log_period()
@@ -329,10 +334,8 @@ impl<R: Real> Nome<R> {
         let opt = t.add_r(&one);
         let den = t.sqr().add_r(&one).mul(&opt.sqr()).mul_2si(1);
         let eps_f = a.hi.clone() / den.hi.clone();
-        // the f64 nome is enough while ε⁴ ≤ NOME_F64_MAX_E4 (the scale to 2⁻⁶⁵)
-        let precise = precise || eps_f.to_f64().powi(4) > NOME_F64_MAX_E4;
         let eps = if precise {
-            a.div(&den).norm()
+            a.div(&den).norm_fast()
         } else {
             Dd::from(eps_f)
         };
@@ -375,36 +378,47 @@ impl<R: Real> Nome<R> {
     /// `π/(2K_λ) = AGM(1, λ') = ((1 + T)/(2θ₃(0, q⁴)))²` with `1/θ₃(0, q⁴) = 1 − c'`,
     /// `c' = E/(1 + E)`, `E = 2q⁴ + 2q¹⁶`, and `q⁴ = ε⁴(1 + g)`,
     /// `g = (1 + w)⁴ − 1 = 8ε⁴ + g₂`, `g₂ = 4t₈ + w²(6 + 4w + w²)` (about `84ε⁸`).
+    /// Everything comes from `ε⁴` and `w` (`q¹⁶` as `(q⁴)⁴`), not from the nome itself,
+    /// so the scale does not wait for the powers of `q`.
     #[inline(always)]
-    fn scale(&self, q16: &R) -> Dd<R> {
+    fn scale(&self) -> Dd<R> {
         let one = self.q.one();
         let (w, e4) = (&self.w, &self.e4);
-        let g2 = self.w_tail.mul_2si(2)
-            + w.sqr() * (one.from_i64(6) + w.clone() * (one.from_i64(4) + w.clone()));
         let half_opt = self.opt.mul_2si(-1);
-        let wdd = if self.precise {
+        if self.precise {
+            let g2 = self.w_tail.mul_2si(2)
+                + w.sqr() * (one.from_i64(6) + w.clone() * (one.from_i64(4) + w.clone()));
             let eps4 = self.eps4();
             let q4 = eps4.add(&eps4.sqr().mul_2si(3).add_r(&(eps4.hi.clone() * g2)));
-            let big_e = q4.add_r(q16).mul_2si(1).norm();
+            let q16 = q4.hi.sqr().sqr();
+            let big_e = q4.add_r(&q16).mul_2si(1).norm_fast();
             let ev = big_e.hi.clone();
             let cprime = big_e.add_r(&(-(ev.sqr() / (one.clone() + ev))));
             let neg = Dd {
                 hi: -half_opt.hi.clone(),
                 lo: -half_opt.lo,
             };
-            half_opt.add(&neg.mul(&cprime))
-        } else {
-            // (1 − c')² = (1 + E)⁻² = 1 − δ, δ = E(2 − 3E + 4E² − 5E³) + O(E⁵) with
-            // E ≤ 2⁻¹⁷ (NOME_F64_MAX_E4): no division after the nome
-            let q4 = e4.clone() * (one.clone() + e4.mul_2si(3) + g2);
-            let big_e = (q4 + q16.clone()).mul_2si(1);
-            let c = |n: i64| one.from_i64(n);
-            let delta = big_e.clone()
-                * (c(2) + big_e.clone() * (c(-3) + big_e.clone() * (c(4) - big_e.clone() * c(5))));
-            let s0 = half_opt.sqr();
-            return s0.add_r(&-(s0.hi.clone() * delta)).norm();
-        };
-        wdd.sqr().norm()
+            // (the square is normalised to within an ulp: no renormalisation)
+            return half_opt.add(&neg.mul(&cprime)).sqr();
+        }
+        // (1 − c')² = (1 + E)⁻² = 1 − δ, δ = E(2 − 3E + 4E² − 5E³) + O(E⁵) with
+        // E ≤ 2⁻¹⁷ (NOME_F64_MAX_M): no division after the nome; and with ε⁴ ≤ 2⁻¹⁸
+        // `g₂ = 84ε⁸ + 992ε¹² + O(ε¹⁶)` (the next term moves `E` by under 2⁻⁷⁵), straight
+        // from `ε⁴` rather than through `w`
+        let g2 = e4.sqr() * (one.from_i64(84) + e4.clone() * one.from_i64(992));
+        let q4 = e4.clone() * (one.clone() + e4.mul_2si(3) + g2);
+        let big_e = (q4.clone() + q4.sqr().sqr()).mul_2si(1);
+        let c = |n: i64| one.from_i64(n);
+        let delta = big_e.clone()
+            * (c(2) + big_e.clone() * (c(-3) + big_e.clone() * (c(4) - big_e.clone() * c(5))));
+        let s0 = half_opt.sqr();
+        // s0·(1 − δ) with 0 < δ < 2⁻¹⁵: a fast two-sum leaves it normalised to an ulp
+        let corr = -(s0.hi.clone() * delta);
+        let (h, e) = fast_two_sum(s0.v(), corr.to_f64());
+        Dd {
+            hi: with_value(&(s0.hi.clone() + corr), h),
+            lo: e + s0.lo,
+        }
     }
 
     /// `−ln(q)/2` (the quarter period `πK/(2K')` at imaginary argument):
@@ -429,7 +443,7 @@ impl<R: Real> Nome<R> {
             hi: -lnq.hi.mul_2si(-1),
             lo: -lnq.lo / 2.0,
         }
-        .norm()
+        .norm_fast()
     }
 }
 
