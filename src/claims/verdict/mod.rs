@@ -126,7 +126,7 @@ fn expected_cost(cat: &Catalogue, claim: &Claim) -> u8 {
 /// location = "anywhere"
 /// printed = 'sin^2 x + cos^2 x = 1'
 /// kind = "identity"
-/// expect = "holds"
+/// expect = "proved"
 /// vars = [["x", "uniform(-3, 3)"]]
 /// lhs = "sin(x)^2 + cos(x)^2"
 /// rhs = "1"
@@ -134,7 +134,7 @@ fn expected_cost(cat: &Catalogue, claim: &Claim) -> u8 {
 /// let cat = load_sources(&[("t.toml".into(), toml.into())], Registry::new()).unwrap();
 /// let opts = Options { bits: vec![53, 128], exact: true };
 /// let r = run_claim(&cat, &cat.claims[0], &opts);
-/// assert_eq!(r.verdict, Verdict::Holds);
+/// assert_eq!(r.verdict, Verdict::Proved); // holds on the ladder, and sin, cos are sn, cn at k = 0
 /// assert!(r.as_expected && r.samples == 8);
 /// ```
 pub fn run_claim(cat: &Catalogue, claim: &Claim, opts: &Options) -> ClaimResult {
