@@ -18,8 +18,18 @@ This script:
   * sn, cn, dn: recomputed from the base symbols with the addition theorems
     (DLMF 22.8.1-3), the quarter-period shifts (DLMF 22.4.3) and the half-period values,
     and the argument is checked to be the stated combination of the bases;
+  * the inverse of sn, cn, dn (the phase of the elliptic coordinates) is an opaque symbol
+    whose `equiv` line gives its derived sn, cn, dn values and an argument as a combination
+    of the bases: sn, cn, dn of that argument are recomputed and must equal the values, so
+    the symbol equals the argument modulo 4K, and it is replaced by it inside sn, cn, dn
+    (period 4K) before an argument is compared with its combination;
   * derivatives: recomputed by the chain rule from the `dvar` table, whose entries are
-    checked (roots: 2 r r' = a'; sn: s' = c d u' (+ the modulus terms); indeterminates);
+    checked (roots: 2 r r' = a'; sn: s' = c d u' (+ the modulus terms); indeterminates;
+    a `param`, a parameter of the proof's chart such as a phase step, has derivative 0
+    with respect to the other variables);
+  * a lemma's stated value (a proved step value) enters as the derivation of its value;
+    the certificate names the lemma in an assumption line, and the lemma has its own
+    certificate;
   * finally every claim lhs = rhs.
 The arithmetic is SymPy's sparse polynomial arithmetic (sympy.polys.rings over ZZ, on
 SymPy's own integers or gmpy2, never python-flint): a value is a quotient of two
@@ -226,6 +236,7 @@ class Cert:
         self.bases = {}
         self.periods = {}
         self.dvar = {}
+        self.equiv = {}  # symbol -> the argument with its sn, cn, dn (equal modulo 4K)
         self.vals = {}
         self.checked = 0
         self.points = []
@@ -587,7 +598,13 @@ class Cert:
             k2 = self.mul(k, k)
             if hk % 2:
                 trip = self.tadd(trip, p["halfK"], k2)
-            for _ in range((hk // 2) % 4):
+            quarters = (hk // 2) % 4
+            if quarters >= 2:
+                # sn(u + 2K) = -sn u, cn(u + 2K) = -cn u, dn(u + 2K) = dn u (DLMF 22.4.3): no k'
+                s, c, d = trip
+                trip = [self.neg(s), self.neg(c), d]
+                quarters -= 2
+            for _ in range(quarters):
                 s, c, d = trip
                 trip = [self.div(c, d), self.neg(self.div(self.mul(p["kp"], s), d)), self.div(p["kp"], d)]
             if hkp % 2:
@@ -602,8 +619,39 @@ class Cert:
                 arg = self.add(arg, self.mul(half, self.mul(self.const(hk), p["K"])))
             if hkp:
                 arg = self.add(arg, self.mul(half, self.mul(self.const(hkp), self.mul(p["i"], p["Kp"]))))
-        self.need(self.eq(arg, argv), "argument is not the stated combination of the bases")
+        self.need(self.eq(arg, self.substitute_equivalents(argv)), "argument is not the stated combination of the bases")
         return trip[["sn", "cn", "dn"].index(f)]
+
+    def substitute_equivalents(self, v):
+        """v with every symbol of an `equiv` line replaced by its argument (inside sn, cn,
+        dn only: they have the period 4K, and the symbol equals the argument modulo 4K)."""
+        for name, u in self.equiv.items():
+            g = self.syms[name]
+            if v.num.degree(g) <= 0 and v.den.degree(g) <= 0:
+                continue
+            self.need(v.den.degree(g) <= 0 and v.num.degree(g) == 1, f"{name} enters an argument non-linearly")
+            coeff = Frac(v.num.coeff_wrt(g, 1), v.den)
+            rest = Frac(v.num.coeff_wrt(g, 0), v.den)
+            v = self.add(rest, self.mul(coeff, u))
+        return v
+
+    def equivalence(self, rest):
+        """equiv NAME s=tA c=tB d=tC table T combo C halfK h halfiKp q arg=NF: sn, cn, dn of
+        the argument, recomputed from the bases, are the derived values s, c, d, which the
+        prover prescribed for the symbol NAME (the inverse of sn, cn, dn): so NAME equals the
+        argument modulo 4K."""
+        head, argtext = rest.split(" arg=", 1)
+        toks = head.split()
+        name = toks[0]
+        kv = dict(t.split("=", 1) for t in toks[1:4])
+        table, combo = toks[5], [c for c in toks[7].split(",") if c]
+        hk, hkp = int(toks[9]), int(toks[11])
+        self.need(self.kinds.get(name) == "opaque", f"equiv of {name}, which is not an opaque symbol")
+        u = self.frac(argtext)
+        for f, key in (("sn", "s"), ("cn", "c"), ("dn", "d")):
+            got = self.elliptic(f, u, table, combo, hk, hkp)
+            self.need(self.eq(got, self.vals[kv[key]]), f"{f} of the argument of {name} is not its prescribed value")
+        self.equiv[name] = u
 
     # ---- derivatives --------------------------------------------------------------
     def dpoly(self, e, x):
@@ -626,6 +674,8 @@ class Cert:
         kind = self.kinds.get(v)
         if kind == "indeterminate":
             return self.const(1 if v == x else 0)
+        if kind == "param" and v != x:
+            return self.const(0)
         raise CheckError(f"no derivative of {v} with respect to {x}")
 
     def check_dvar(self, x, v, val):
@@ -661,6 +711,10 @@ class Cert:
             self.need(self.eq(val, along), f"d{v}/d{x} is not the derivative of sn/Z")
         elif kind in ("K", "Kp"):
             self.need(self.eq(val, self.const(0)), f"d{v}/d{x} must be 0")
+        elif kind == "param" and v != x:
+            # a parameter of the proof's chart (a phase step δ, with h a function of it):
+            # the other parameters and the claim's variables held fixed do not move it
+            self.need(self.eq(val, self.const(0)), f"d{v}/d{x} of a chart parameter must be 0")
         else:
             raise CheckError(f"cannot check the derivative of {v} ({kind})")
 
@@ -734,6 +788,8 @@ class Cert:
             self.dvar[(x, v)] = f
         elif word == "node":
             self.node(rest)
+        elif word == "equiv":
+            self.equivalence(rest)
         elif word == "claim":
             a, b = [s.strip() for s in rest.split("=")]
             self.need(self.eq(self.vals[a], self.vals[b]), f"claim {a} = {b} fails")
@@ -879,6 +935,7 @@ def check_text(name, text):
 def corruptions(text):
     """Corrupted copies of a certificate, as (what, text) pairs: one coefficient of the
     last product node's stated normal form, the first root's radicand (+ 1), the first
+    equivalent argument of an inverse of sn, cn, dn (+ 1, where there is one), the first
     claim's right-hand side (+ 1)."""
     lines = text.splitlines()
     out = []
@@ -898,6 +955,11 @@ def corruptions(text):
         i = roots[0]
         head, rad = lines[i].split("  #", 1)[0].split("=", 1)
         swap(i, [f"{head}= {rad.strip()} + 1"], "radicand + 1")
+    equivs = [i for i, ln in enumerate(lines) if ln.startswith("equiv ") and " arg=(" in ln]
+    if equivs:
+        i = equivs[0]
+        head, arg = lines[i].split(" arg=(", 1)
+        swap(i, [f"{head} arg=(1 + {arg}"], "an equivalent argument + 1")
     claims = [i for i, ln in enumerate(lines) if re.match(r"claim t\d+ = t\d+$", ln)]
     if claims:
         i = claims[0]

@@ -142,6 +142,7 @@ impl Ring {
             ids: HashMap::new(),
             out: String::new(),
         };
+        self.equivalence_lines(&mut em, &names);
         let mut claims = Vec::new();
         for (ln, rn) in &nodes {
             let a = em.visit(ln);
@@ -158,12 +159,50 @@ impl Ring {
         Some(out)
     }
 
+    /// For each symbol with prescribed sn, cn, dn that an argument replaces inside sn,
+    /// cn, dn: its values (as derived) and that argument as a combination of the bases,
+    /// so that a recheck recomputes sn, cn, dn of the argument and compares.
+    fn equivalence_lines(&self, em: &mut Emitter<'_>, names: &[String]) {
+        let prescribed = self.state().prescribed.clone();
+        for p in prescribed {
+            let (Some(u), Some([s, c, d])) = (&p.equiv, &p.nodes) else {
+                continue;
+            };
+            let Ok((t, combo, hk, hkp)) = self.combination(&p.k, u) else {
+                continue;
+            };
+            let (a, b, e) = (em.visit(s), em.visit(c), em.visit(d));
+            let combo: Vec<String> = combo
+                .iter()
+                .map(|(i, n)| format!("b_{}_{}:{n}", t + 1, i + 1))
+                .collect();
+            let name = names[self.inner.opts.max_roots + p.var].clone();
+            let _ = writeln!(
+                em.out,
+                "equiv {name} s=t{a} c=t{b} d=t{e} table {} combo {} halfK {hk} halfiKp {hkp} arg={}",
+                t + 1,
+                combo.join(","),
+                nf_text(&u.num, &u.den, names)
+            );
+        }
+    }
+
     fn symbol_lines(&self, names: &[String]) -> String {
+        let nvars = self.state().vars.len();
+        let params: Vec<bool> = (0..nvars)
+            .map(|j| self.is_coordinate_parameter(j).unwrap_or(false))
+            .collect();
         let st = self.state();
         let mut out = String::new();
-        for v in &st.vars {
+        for (j, v) in st.vars.iter().enumerate() {
             let what = describe_kind(&v.kind);
-            let _ = writeln!(out, "field {} {}  # {what}", v.name, kind_tag(&v.kind));
+            // an opaque parameter of the declared coordinates (a phase step δ) is a
+            // coordinate of the chart: the other parameters do not depend on it
+            let tag = match v.kind {
+                VarKind::Opaque { constant: false } if params[j] => "param",
+                _ => kind_tag(&v.kind),
+            };
+            let _ = writeln!(out, "field {} {tag}  # {what}", v.name);
             if let VarKind::Named(def) = &v.kind {
                 let _ = writeln!(
                     out,

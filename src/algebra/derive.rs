@@ -171,7 +171,7 @@ impl Ring {
     }
 
     /// Is field variable `j` one of the parameters of the declared coordinates?
-    fn is_coordinate_parameter(&self, j: usize) -> AlgResult<bool> {
+    pub(crate) fn is_coordinate_parameter(&self, j: usize) -> AlgResult<bool> {
         let params: Vec<Val> = match &self.state().coordinates {
             Some(c) => c.params.iter().map(|(v, _)| v.clone()).collect(),
             None => return Ok(false),

@@ -51,6 +51,10 @@ struct Split {
     half_kp: i64,
 }
 
+/// An argument as `(table, [(base, n)], half_k, half_kp)`: Σ n·base + half_k·K/2 +
+/// half_kp·iK'/2 in the elliptic table `table`.
+pub(crate) type Combination = (usize, Vec<(usize, i64)>, i64, i64);
+
 impl Ring {
     /// The index of the table of modulus `k`, created if new.
     fn table_of(&self, k: &Sym) -> AlgResult<usize> {
@@ -332,6 +336,21 @@ impl Ring {
         Ok(None)
     }
 
+    /// The table of modulus `k`, and `u` as a combination of its bases with half-period
+    /// multiples (for certificates).
+    pub(crate) fn combination(&self, k: &Val, u: &Val) -> AlgResult<Combination> {
+        let t = self.table_of(&Sym::from_val(self, k.clone(), None))?;
+        let split = self.split(t, u)?;
+        let n = self.coordinates(t, &split.vec)?;
+        let combo = n
+            .iter()
+            .enumerate()
+            .filter(|(_, m)| **m != 0)
+            .map(|(j, m)| (j, *m))
+            .collect();
+        Ok((t, combo, split.half_k, split.half_kp))
+    }
+
     /// Records that the prescribed symbol `v` equals `u` modulo 4K.
     pub(crate) fn set_equivalent(&self, v: &Sym, u: &Sym) {
         if let Some(var) = v.as_field_var() {
@@ -542,6 +561,10 @@ impl Ring {
             what,
             why: why.to_string(),
             equiv: None,
+            nodes: match (&s.node, &c.node, &d.node) {
+                (Some(a), Some(b), Some(e)) => Some([a.clone(), b.clone(), e.clone()]),
+                _ => None,
+            },
         });
         Ok(())
     }

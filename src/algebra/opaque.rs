@@ -120,7 +120,6 @@ impl Sym {
                 "the inverse of sn, cn, dn: dn is not positive on the domain".into(),
             ));
         }
-        ring.mark_uncertified("the inverse of sn, cn, dn with prescribed values");
         let v = Sym::opaque_call("phiinv", &[s, c, d, k], |z| {
             let real = |c: &Complex| c.real().clone();
             let u = crate::special::jacobi_inverse(
@@ -145,8 +144,10 @@ impl Sym {
                 d,
                 "the inverse of sn, cn, dn has the given values as its sn, cn, dn (DLMF 22.15.11-12); they satisfy sn^2 + cn^2 = 1 and dn^2 + k^2 sn^2 = 1 identically, and dn > 0",
             )?;
+            if equivalent.is_none() {
+                ring.mark_uncertified("the inverse of sn, cn, dn without an equivalent argument");
+            }
             if let Some(u) = equivalent {
-                ring.mark_uncertified("an argument equivalent to the inverse of sn, cn, dn");
                 ring.set_equivalent(&v, &u);
                 ring.note(format!(
                     "{} has the sn, cn, dn of {}: inside sn, cn, dn (period 4K) it is replaced by that argument",

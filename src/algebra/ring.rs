@@ -152,6 +152,8 @@ pub(crate) struct Prescription {
     /// An argument with the same sn, cn, dn (so equal to the symbol modulo 4K), which
     /// replaces the symbol inside sn, cn, dn.
     pub equiv: Option<Val>,
+    /// The derivations of `s`, `c`, `d`, when the ring records them (for certificates).
+    pub nodes: Option<[Arc<Node>; 3]>,
 }
 
 /// A value as the ring stores it: without the ring handle (see [`Val`]), with its

@@ -82,8 +82,21 @@ fn bad_ids_and_kinds_are_one_line_errors_with_status_2() {
 
 #[test]
 fn an_independence_claim_is_proved_by_its_derivative() {
-    let (code, out, _) = run(&["prove", "sec7.prop6.g1-poisson.up"]);
-    assert_eq!(code, 0, "{out}");
+    let path = std::env::temp_dir().join(format!("eulertop-indep-{}.cert", std::process::id()));
+    let p = path.to_str().expect("utf-8 temp path");
+    let (code, out, err) = run(&["prove", "sec7.prop6.g1-poisson.up", "--certificate", p]);
+    assert_eq!(code, 0, "{out}{err}");
     assert!(out.contains("by sec7.master12.step.up"), "{out}");
     assert!(out.contains("normal form of lhs - rhs: 0: proved"), "{out}");
+    // the phase of the elliptic coordinates enters the certificate through `equiv` lines,
+    // and the phase step as a parameter of the chart
+    let cert = std::fs::read_to_string(&path).expect("certificate written");
+    let _ = std::fs::remove_file(&path);
+    assert!(
+        cert.lines().any(|l| l.starts_with("equiv phiinv")),
+        "no equiv line"
+    );
+    assert!(cert
+        .lines()
+        .any(|l| l == "field delta param  # opaque symbol"));
 }

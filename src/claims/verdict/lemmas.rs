@@ -85,7 +85,6 @@ pub(super) fn apply(ev: &Evaluator<'_, Sym>, lemmas: &[Lemma<'_>]) -> AlgResult<
         let value = eval(ev, l.rhs).map_err(fail)?;
         remember(l.name, &args, &value).map_err(fail)?;
         let ring = ev.like().ring().clone();
-        ring.mark_uncertified("a lemma's stated value");
         ring.assume(format!(
             "{}(…) = {}: by {}, proved separately (on the branch its proof assumes)",
             l.name,
