@@ -60,4 +60,20 @@ impl ProofInfo {
     pub fn is_proved(&self) -> bool {
         self.method == ProofMethod::Symbolic
     }
+
+    /// What the proof rests on, in a few words: "12 symbols, 4 relations, 3 assumptions"
+    /// (and the number of cases, if any).
+    pub fn extent(&self) -> String {
+        let cases = if self.cases.is_empty() {
+            String::new()
+        } else {
+            format!(", {} cases", self.cases.len())
+        };
+        format!(
+            "{} symbols, {} relations, {} assumptions{cases}",
+            self.symbols.len(),
+            self.relations.len(),
+            self.assumptions.len()
+        )
+    }
 }

@@ -987,15 +987,8 @@ pub fn judge(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, ev: &mut Evidence) {
     if info.is_proved() {
         ev.verdict = Verdict::Proved;
         ev.reason = format!(
-            "the symbolic normal form of lhs − rhs is 0 ({} symbols, {} relations, {} assumptions{}); holds numerically",
-            info.symbols.len(),
-            info.relations.len(),
-            info.assumptions.len(),
-            if info.cases.is_empty() {
-                String::new()
-            } else {
-                format!(", {} cases", info.cases.len())
-            }
+            "the symbolic normal form of lhs − rhs is 0 ({}); holds numerically",
+            info.extent()
         );
     }
     ev.proof = Some(info);
