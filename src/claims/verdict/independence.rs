@@ -142,26 +142,19 @@ pub fn derivative_sides(expr: &PExpr, wrt: &str) -> (PExpr, PExpr) {
 /// Proves the claim when the numerical verdict holds and `d(expr, wrt)` has the
 /// symbolic normal form 0.
 pub fn judge_symbolically(ctx: Ctx<'_>, expr: &PExpr, wrt: &str, ev: &mut Evidence) {
-    use super::symbolic::prove;
-    use super::Verdict;
-    if ev.verdict != Verdict::Holds {
-        ev.proof = Some(super::ProofInfo::none(format!(
-            "not attempted: the numerical verdict is {}",
-            ev.verdict.name()
-        )));
-        return;
-    }
+    use super::symbolic::{prove, upgrade};
     let (derivative, zero) = derivative_sides(expr, wrt);
     // the same expression on the same domain (a statement the paper makes twice) is
     // proved once per catalogue
     let key = super::lemmas::content_key(ctx, &[&derivative]);
-    let info = super::lemmas::memoised(ctx, &key, || prove(ctx, &derivative, &zero, false));
-    if info.is_proved() {
-        ev.verdict = Verdict::Proved;
-        ev.reason = format!(
-            "the symbolic normal form of d(expr, {wrt}) is 0 ({}): expr is constant in {wrt} on each interval of the domain; independent numerically",
-            info.extent()
-        );
-    }
-    ev.proof = Some(info);
+    upgrade(
+        ev,
+        || super::lemmas::memoised(ctx, &key, || prove(ctx, &derivative, &zero, false)),
+        |info| {
+            format!(
+                "the symbolic normal form of d(expr, {wrt}) is 0 ({}): expr is constant in {wrt} on each interval of the domain; independent numerically",
+                info.extent()
+            )
+        },
+    );
 }

@@ -972,6 +972,32 @@ fn merge(info: &mut ProofInfo, key: &[String], p: Proof) {
 /// Turns a numerical `holds` into `proved` when the symbolic proof succeeds.  A claim
 /// the ladder refutes (or cannot judge) is never passed to the prover as true.
 pub fn judge(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, ev: &mut Evidence) {
+    upgrade(
+        ev,
+        || {
+            if super::lemmas::is_lemma(ctx) {
+                super::lemmas::proof_of(ctx, lhs, rhs, prove)
+            } else {
+                prove(ctx, lhs, rhs, false)
+            }
+        },
+        |info| {
+            format!(
+                "the symbolic normal form of lhs − rhs is 0 ({}); holds numerically",
+                info.extent()
+            )
+        },
+    );
+}
+
+/// Runs `attempt` only when the numerical verdict holds (a claim the ladder refutes or
+/// cannot judge is never passed to the prover as true), and makes the verdict `proved`,
+/// with the reason `why`, when the attempt proves; the attempt is the claim's evidence.
+pub(super) fn upgrade(
+    ev: &mut Evidence,
+    attempt: impl FnOnce() -> ProofInfo,
+    why: impl FnOnce(&ProofInfo) -> String,
+) {
     if ev.verdict != Verdict::Holds {
         ev.proof = Some(ProofInfo::none(format!(
             "not attempted: the numerical verdict is {}",
@@ -979,17 +1005,10 @@ pub fn judge(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, ev: &mut Evidence) {
         )));
         return;
     }
-    let info = if super::lemmas::is_lemma(ctx) {
-        super::lemmas::proof_of(ctx, lhs, rhs, prove)
-    } else {
-        prove(ctx, lhs, rhs, false)
-    };
+    let info = attempt();
     if info.is_proved() {
         ev.verdict = Verdict::Proved;
-        ev.reason = format!(
-            "the symbolic normal form of lhs − rhs is 0 ({}); holds numerically",
-            info.extent()
-        );
+        ev.reason = why(&info);
     }
     ev.proof = Some(info);
 }
