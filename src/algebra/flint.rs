@@ -178,12 +178,28 @@ impl PartialEq for Poly {
 }
 impl Eq for Poly {}
 
+/// Hashes the length and at most 16 evenly spaced terms: equal polynomials hash
+/// alike, and hashing a polynomial of thousands of terms stays cheap (equality
+/// then compares them all).
 impl std::hash::Hash for Poly {
     fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
-        self.for_each_term(|c, e| {
-            c.hash(state);
-            e.hash(state);
-        });
+        let len = self.len();
+        len.hash(state);
+        let step = len.div_ceil(16).max(1);
+        let mut exps = vec![0u64; self.ctx.nvars];
+        for i in (0..len).step_by(step) {
+            self.term_coefficient(i).hash(state);
+            // SAFETY: i < len; the buffer has nvars entries.
+            unsafe {
+                fm::fmpz_mpoly_get_term_exp_ui(
+                    exps.as_mut_ptr(),
+                    &self.raw,
+                    i as i64,
+                    self.ctx.ptr(),
+                )
+            };
+            exps.hash(state);
+        }
     }
 }
 
@@ -564,6 +580,39 @@ impl Poly {
             )
         };
         p
+    }
+
+    /// The coefficients when the polynomial is viewed as a polynomial in the variables
+    /// `vars` (each a polynomial in the other variables), in no particular order.
+    ///
+    /// ```
+    /// use eulertop::algebra::flint::{Ctx, Poly};
+    /// let ctx = Ctx::new(2);
+    /// let (x, y) = (Poly::var(&ctx, 0), Poly::var(&ctx, 1));
+    /// let p = x.mul(&y).add(&x).add(&y.mul(&y));         // (x)·y + (1)·y² + x
+    /// let mut lens: Vec<usize> = p.coefficients_in(&[1]).iter().map(|c| c.len()).collect();
+    /// lens.sort();
+    /// assert_eq!(lens, vec![1, 1, 1]);
+    /// ```
+    pub fn coefficients_in(&self, vars: &[usize]) -> Vec<Poly> {
+        assert!(
+            vars.iter().all(|&i| i < self.ctx.nvars),
+            "variable index out of range"
+        );
+        let mut groups: std::collections::BTreeMap<Vec<u64>, Vec<(Integer, Vec<u64>)>> =
+            std::collections::BTreeMap::new();
+        self.for_each_term(|c, e| {
+            let key: Vec<u64> = vars.iter().map(|&i| e[i]).collect();
+            let mut rest = e.to_vec();
+            for &i in vars {
+                rest[i] = 0;
+            }
+            groups.entry(key).or_default().push((c.clone(), rest));
+        });
+        groups
+            .values()
+            .map(|terms| Poly::from_terms(&self.ctx, terms.iter().map(|(c, e)| (c, &e[..]))))
+            .collect()
     }
 
     /// The gcd of the coefficients when the polynomial is viewed as a polynomial in the
