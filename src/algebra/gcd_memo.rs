@@ -80,11 +80,16 @@ pub(crate) fn split_gcd(a: &Poly, b: &Poly) -> AlgResult<Poly> {
     let (va, vb) = (a.used_vars(), b.used_vars());
     let only_a: Vec<usize> = va.iter().copied().filter(|i| !vb.contains(i)).collect();
     let only_b: Vec<usize> = vb.iter().copied().filter(|i| !va.contains(i)).collect();
-    if only_a.is_empty() && only_b.is_empty() {
-        return Ok(a.gcd(b)?);
+    let (mut free_a, mut free_b) = (only_a, only_b);
+    if free_a.is_empty() && free_b.is_empty() {
+        let outside = outside_gcd(a, b, &va);
+        if outside.is_empty() {
+            return Ok(a.gcd(b)?);
+        }
+        (free_a, free_b) = (outside.clone(), outside);
     }
-    let mut parts = parts_free_of(a, &only_a);
-    parts.extend(parts_free_of(b, &only_b));
+    let mut parts = parts_free_of(a, &free_a);
+    parts.extend(parts_free_of(b, &free_b));
     parts.sort_by_key(Poly::len);
     let mut g = parts[0].clone();
     for p in &parts[1..] {
@@ -99,6 +104,152 @@ pub(crate) fn split_gcd(a: &Poly, b: &Poly) -> AlgResult<Poly> {
         g = split_gcd(&g, p)?;
     }
     Ok(g)
+}
+
+/// Operands this large together are tested for variables outside their gcd.
+const IMAGE_TERMS: usize = 400;
+
+/// The variables of `vars` (which both `a` and `b` use) that provably do not occur
+/// in `gcd(a, b)`.
+///
+/// Every variable but `x` is replaced by a fixed integer and everything is taken
+/// modulo the prime 2⁶¹ − 1.  Where the leading coefficient of `a` in `x` does not
+/// vanish there, a factor of the gcd of positive degree in `x` keeps its degree and
+/// divides both univariate images, so a constant gcd of the images excludes `x`.
+/// The point is fixed, so the result is deterministic; an unlucky point only
+/// leaves a variable in.
+fn outside_gcd(a: &Poly, b: &Poly, vars: &[usize]) -> Vec<usize> {
+    if a.len() + b.len() < IMAGE_TERMS {
+        return Vec::new();
+    }
+    let n = a.ctx().nvars();
+    let point: Vec<u64> = (0..n as u64).map(|i| 2 + (i * 7 + 3) % 19).collect();
+    let (ia, ib) = (images(a, &point, vars), images(b, &point, vars));
+    let da = a.degrees();
+    vars.iter()
+        .zip(ia.iter().zip(&ib))
+        .filter(|(&x, (pa, pb))| {
+            degree(pa) == da[x] as usize && degree(&modp::gcd((*pa).clone(), (*pb).clone())) == 0
+        })
+        .map(|(&x, _)| x)
+        .collect()
+}
+
+/// For each variable `x` of `vars`, the coefficients (by power of `x`) of `p` with
+/// every other variable replaced by its value in `point`, modulo [`modp::P`].
+fn images(p: &Poly, point: &[u64], vars: &[usize]) -> Vec<Vec<u64>> {
+    let mut out: Vec<Vec<u64>> = vars.iter().map(|_| Vec::new()).collect();
+    let inv: Vec<u64> = point.iter().map(|&v| modp::inv(v)).collect();
+    p.for_each_term(|c, e| {
+        let mut full = modp::reduce_integer(c);
+        for (j, &ej) in e.iter().enumerate() {
+            if ej > 0 {
+                full = modp::mul(full, modp::pow(point[j], ej));
+            }
+        }
+        for (k, &x) in vars.iter().enumerate() {
+            let term = modp::mul(full, modp::pow(inv[x], e[x]));
+            let slot = &mut out[k];
+            let ex = e[x] as usize;
+            if slot.len() <= ex {
+                slot.resize(ex + 1, 0);
+            }
+            slot[ex] = modp::add(slot[ex], term);
+        }
+    });
+    out
+}
+
+/// The degree of a coefficient vector (0 for the zero polynomial too).
+fn degree(p: &[u64]) -> usize {
+    p.iter().rposition(|&c| c != 0).unwrap_or(0)
+}
+
+/// Arithmetic modulo the Mersenne prime 2⁶¹ − 1.
+mod modp {
+    use rug::Integer;
+
+    /// The modulus.
+    pub(super) const P: u64 = (1 << 61) - 1;
+
+    pub(super) fn add(a: u64, b: u64) -> u64 {
+        let s = a + b;
+        if s >= P {
+            s - P
+        } else {
+            s
+        }
+    }
+
+    pub(super) fn sub(a: u64, b: u64) -> u64 {
+        if a >= b {
+            a - b
+        } else {
+            a + P - b
+        }
+    }
+
+    pub(super) fn mul(a: u64, b: u64) -> u64 {
+        ((a as u128 * b as u128) % P as u128) as u64
+    }
+
+    pub(super) fn pow(mut b: u64, mut e: u64) -> u64 {
+        let mut r = 1;
+        while e > 0 {
+            if e & 1 == 1 {
+                r = mul(r, b);
+            }
+            b = mul(b, b);
+            e >>= 1;
+        }
+        r
+    }
+
+    /// The inverse of a nonzero residue (Fermat).
+    pub(super) fn inv(a: u64) -> u64 {
+        pow(a, P - 2)
+    }
+
+    /// The residue of an integer in `[0, P)`.
+    pub(super) fn reduce_integer(c: &Integer) -> u64 {
+        let r = Integer::from(c % P);
+        if r < 0 {
+            (r + P).to_u64_wrapping()
+        } else {
+            r.to_u64_wrapping()
+        }
+    }
+
+    /// A gcd (not normalised) of two coefficient vectors (trailing zeros allowed).
+    pub(super) fn gcd(mut a: Vec<u64>, mut b: Vec<u64>) -> Vec<u64> {
+        trim(&mut a);
+        trim(&mut b);
+        while !b.is_empty() {
+            let r = rem(a, &b);
+            a = b;
+            b = r;
+        }
+        a
+    }
+
+    fn trim(p: &mut Vec<u64>) {
+        while p.last() == Some(&0) {
+            p.pop();
+        }
+    }
+
+    fn rem(mut a: Vec<u64>, b: &[u64]) -> Vec<u64> {
+        let lead_inv = inv(b[b.len() - 1]);
+        while a.len() >= b.len() {
+            let q = mul(a[a.len() - 1], lead_inv);
+            let shift = a.len() - b.len();
+            for (i, &bi) in b.iter().enumerate() {
+                a[shift + i] = sub(a[shift + i], mul(q, bi));
+            }
+            trim(&mut a);
+        }
+        a
+    }
 }
 
 /// `[p]`, or the coefficients of `p` in `vars` when there are any.
@@ -217,5 +368,49 @@ mod tests {
             assert_eq!(split_gcd(&c, &a.neg()).unwrap(), a.gcd(&c).unwrap());
             assert!(split_gcd(&c, &a.neg()).unwrap().leading_coefficient() > 0);
         }
+    }
+
+    #[test]
+    fn variables_outside_the_gcd_are_found_and_the_gcd_is_flints() {
+        let ctx = Ctx::new(4);
+        let x = |i| Poly::var(&ctx, i);
+        let one = Poly::from_i64(&ctx, 1);
+        let common = x(0).sub(&x(1)).mul(&x(0).add(&one)).mul(&x(0));
+        for seed in 0..4u64 {
+            let big = |k: u64| {
+                scrambled(&ctx, k, &[0, 1, 2, 3], 30).mul(&scrambled(
+                    &ctx,
+                    k + 9,
+                    &[0, 1, 2, 3],
+                    30,
+                ))
+            };
+            let (a, b) = (big(seed).mul(&common), big(seed + 50).mul(&common));
+            assert!(a.len() + b.len() >= IMAGE_TERMS);
+            let outside = outside_gcd(&a, &b, &[0, 1, 2, 3]);
+            assert_eq!(outside, vec![2, 3]);
+            assert_eq!(
+                split_gcd(&a, &b).unwrap(),
+                a.gcd(&b).unwrap(),
+                "seed {seed}"
+            );
+            // a common factor in x2 keeps x2 in
+            let c = a.mul(&x(2).add(&one));
+            let d = b.mul(&x(2).add(&one));
+            assert!(!outside_gcd(&c, &d, &[0, 1, 2, 3]).contains(&2));
+            assert_eq!(split_gcd(&c, &d).unwrap(), c.gcd(&d).unwrap());
+        }
+    }
+
+    #[test]
+    fn residues_modulo_the_prime() {
+        let p = rug::Integer::from(modp::P);
+        assert_eq!(modp::reduce_integer(&rug::Integer::from(-1)), modp::P - 1);
+        assert_eq!(modp::reduce_integer(&(p.clone() * 3 + 5)), 5);
+        assert_eq!(modp::mul(modp::inv(12345), 12345), 1);
+        // (t − 1)(t + 2) and (t − 1)(t − 3) share t − 1
+        let f = vec![modp::P - 2, 1, 1];
+        let g = vec![3, modp::P - 4, 1];
+        assert_eq!(degree(&modp::gcd(f, g)), 1);
     }
 }
