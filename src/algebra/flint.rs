@@ -599,20 +599,40 @@ impl Poly {
             vars.iter().all(|&i| i < self.ctx.nvars),
             "variable index out of range"
         );
-        let mut groups: std::collections::BTreeMap<Vec<u64>, Vec<(Integer, Vec<u64>)>> =
-            std::collections::BTreeMap::new();
-        self.for_each_term(|c, e| {
-            let key: Vec<u64> = vars.iter().map(|&i| e[i]).collect();
-            let mut rest = e.to_vec();
-            for &i in vars {
-                rest[i] = 0;
+        let mut groups: std::collections::HashMap<Vec<u64>, Poly> =
+            std::collections::HashMap::new();
+        let mut exps = vec![0u64; self.ctx.nvars];
+        let mut f = Fmpz::new();
+        for i in 0..self.len() {
+            // SAFETY: i < len; the buffer has nvars entries; f is initialised.
+            unsafe {
+                fm::fmpz_mpoly_get_term_exp_ui(
+                    exps.as_mut_ptr(),
+                    &self.raw,
+                    i as i64,
+                    self.ctx.ptr(),
+                );
+                fm::fmpz_mpoly_get_term_coeff_fmpz(&mut f.0, &self.raw, i as i64, self.ctx.ptr());
             }
-            groups.entry(key).or_default().push((c.clone(), rest));
-        });
-        groups
-            .values()
-            .map(|terms| Poly::from_terms(&self.ctx, terms.iter().map(|(c, e)| (c, &e[..]))))
-            .collect()
+            let key: Vec<u64> = vars.iter().map(|&v| exps[v]).collect();
+            for &v in vars {
+                exps[v] = 0;
+            }
+            let p = groups.entry(key).or_insert_with(|| Poly::blank(&self.ctx));
+            // SAFETY: the exponent buffer has nvars entries; p and f are initialised.
+            unsafe {
+                fm::fmpz_mpoly_push_term_fmpz_ui(&mut p.raw, &f.0, exps.as_ptr(), self.ctx.ptr())
+            };
+        }
+        let mut out: Vec<Poly> = groups.into_values().collect();
+        for p in &mut out {
+            // SAFETY: initialised polynomial; sorting and combining make it canonical.
+            unsafe {
+                fm::fmpz_mpoly_sort_terms(&mut p.raw, self.ctx.ptr());
+                fm::fmpz_mpoly_combine_like_terms(&mut p.raw, self.ctx.ptr());
+            }
+        }
+        out
     }
 
     /// The gcd of the coefficients when the polynomial is viewed as a polynomial in the

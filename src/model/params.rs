@@ -77,14 +77,18 @@ impl<R: Real> EllipticParams<R> {
         let bc = b.clone() - c.clone();
         let ac = a.clone() - c.clone();
         let ae = y2.clone() * ab.clone() / b.clone() + z2.clone() * ac.clone() / c.clone();
-        let ce = x2.clone() * ac / a.clone() + y2 * bc.clone() / b.clone();
-        let be = z2 * bc / c.clone() - x2 * ab / a.clone();
+        let ce = x2.clone() * ac / a.clone() + y2.clone() * bc.clone() / b.clone();
+        let be = z2.clone() * bc / c.clone() - x2.clone() * ab / a.clone();
         let regime = match be.signum_i() {
             1 => Regime::Upper,
             -1 => Regime::Lower,
             _ => Regime::Separatrix,
         };
-        Self::from_differences(inertia, &inertia.m2(m), &inertia.energy(m), ae, ce, regime)
+        // (M2) and (E) from the squares already taken (M₁²/A rather than M₁·(M₁/A)):
+        // an exact evaluation then squares each component once
+        let m2 = x2.clone() + y2.clone() + z2.clone();
+        let e = x2 / a.clone() + y2 / b.clone() + z2 / c.clone();
+        Self::from_differences(inertia, &m2, &e, ae, ce, regime)
     }
 
     fn from_differences(
