@@ -181,6 +181,53 @@ fn not_analytic(ctx: Ctx<'_>, vars: &[(String, &PExpr)], sides: &[&PExpr]) -> Op
     found.map(|n| format!("'{n}' of a complex variable is not analytic: an indeterminate does not stand for every complex value"))
 }
 
+/// Nested applications of one catalogue function to its own result, this deep or
+/// deeper, are an iteration (such as Newton's method written out).
+const ITERATION_DEPTH: usize = 3;
+
+/// Why no proof is attempted when the claim evaluates an iteration: a catalogue
+/// function applied to its own result [`ITERATION_DEPTH`] times, in the claim's
+/// formulas or in a catalogue function they call.  Its exact value is a rational
+/// function whose size multiplies with every step, far beyond the prover's bound.
+fn iteration(ctx: Ctx<'_>, sides: &[&PExpr]) -> Option<String> {
+    let reg = &ctx.cat.registry;
+    let mut seen = std::collections::BTreeSet::new();
+    let mut stack: Vec<(&Expr, Option<&str>)> = sides.iter().map(|s| (&s.expr, None)).collect();
+    stack.extend(ctx.claim.lets.iter().map(|b| (&b.body, None)));
+    while let Some((e, inside)) = stack.pop() {
+        let mut found = None;
+        e.walk(&mut |x| {
+            let ExprKind::Call(name, _) = &x.kind else {
+                return;
+            };
+            if found.is_none() && self_nesting(x, name) >= ITERATION_DEPTH {
+                found = Some(name.clone());
+            }
+            if let Some(f) = reg.user(name) {
+                if seen.insert(name.clone()) {
+                    stack.push((&f.def.body, Some(name.as_str())));
+                }
+            }
+        });
+        if let Some(n) = found {
+            let place = inside.map_or(String::new(), |f| format!(" in the catalogue function {f}"));
+            return Some(format!(
+                "the claim evaluates an iteration ({n} applied to its own result{place}): its exact value grows with every step beyond the prover's bound, so no proof is attempted"
+            ));
+        }
+    }
+    None
+}
+
+/// How many times `name` is applied in a chain `name(name(…))` starting at `e`
+/// (through the first argument).
+fn self_nesting(e: &Expr, name: &str) -> usize {
+    match &e.kind {
+        ExprKind::Call(n, args) if n == name => 1 + args.first().map_or(0, |a| self_nesting(a, name)),
+        _ => 0,
+    }
+}
+
 /// A numeric literal, possibly negated: the branch of an indicator `if c then 1 else 0`.
 fn is_literal(e: &Expr) -> bool {
     match &e.kind {
@@ -823,6 +870,9 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
         Err(c) => return ProofInfo::none(c.to_string()),
     };
     if let Some(why) = not_analytic(ctx, sampler.variables(), &[lhs, rhs]) {
+        return ProofInfo::none(why);
+    }
+    if let Some(why) = iteration(ctx, &[lhs, rhs]) {
         return ProofInfo::none(why);
     }
     let plain: Vec<(String, (Role, usize))> = sampler
