@@ -68,31 +68,60 @@ pub fn verify(
     select: &(dyn Fn(&Claim) -> bool + Sync),
     done: &(dyn Fn(&ClaimResult) + Sync),
 ) -> Vec<ClaimResult> {
-    let mut chosen: Vec<(usize, &Claim)> = cat
+    let chosen: Vec<(usize, &Claim)> = cat
         .claims
         .iter()
         .filter(|c| select(c))
         .enumerate()
         .collect();
-    // the likely slowest first, so that no core idles at the end; results keep the
-    // catalogue's order
-    chosen.sort_by_key(|(i, c)| (std::cmp::Reverse(expected_cost(cat, c)), *i));
+    // the likely slowest first, so that no core idles at the end, and a statement
+    // stated again (whose proof is then recalled) after its first statement; results
+    // keep the catalogue's order
+    let mut seen = std::collections::BTreeSet::new();
+    let mut keyed: Vec<((std::cmp::Reverse<u8>, usize), (usize, &Claim))> = chosen
+        .into_iter()
+        .map(|(i, c)| {
+            let again = statement_key(cat, c).is_some_and(|k| !seen.insert(k));
+            let cost = if again { 0 } else { expected_cost(cat, c) };
+            ((std::cmp::Reverse(cost), i), (i, c))
+        })
+        .collect();
+    keyed.sort_by_key(|(k, _)| *k);
+    let chosen: Vec<(usize, &Claim)> = keyed.into_iter().map(|(_, c)| c).collect();
     // Opt-in per-claim timings on standard error (never part of the results).
     let timing = std::env::var_os("EULERTOP_TIMING").is_some();
-    let mut results: Vec<(usize, ClaimResult)> = chosen
-        .par_iter()
-        .with_max_len(1)
-        .map(|(i, c)| {
+    // One shared queue in that order: each worker takes the next claim when it is
+    // free (a parallel iterator would start the second worker half-way down the list).
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let results = std::sync::Mutex::new(Vec::with_capacity(chosen.len()));
+    (0..rayon::current_num_threads())
+        .into_par_iter()
+        .for_each(|_| loop {
+            let j = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            let Some((i, c)) = chosen.get(j) else { break };
             let r = run_claim(cat, c, opts);
             if timing {
                 eprintln!("timing {:8.1} ms  {}", r.elapsed_ms, c.id);
             }
             done(&r);
-            (*i, r)
-        })
-        .collect();
+            results
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .push((*i, r));
+        });
+    let mut results = results.into_inner().unwrap_or_else(|e| e.into_inner());
     results.sort_by_key(|(i, _)| *i);
     results.into_iter().map(|(_, r)| r).collect()
+}
+
+/// The key under which an independence claim's proof is remembered (the same
+/// statement on the same domain has the same key); `None` for other claims.
+fn statement_key(cat: &Catalogue, claim: &Claim) -> Option<String> {
+    let Body::Independence { expr, wrt, .. } = &claim.body else {
+        return None;
+    };
+    let (derivative, _) = independence::derivative_sides(expr, wrt);
+    Some(lemmas::content_key(Ctx { cat, claim }, &[&derivative]))
 }
 
 /// A rough rank of a claim's cost, for scheduling only: independence proofs through
