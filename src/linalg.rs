@@ -50,16 +50,16 @@ impl<S: Scalar> Vec3<S> {
     pub fn dot(&self, o: &Self) -> S {
         let [a, b, c] = &self.0;
         let [x, y, z] = &o.0;
-        a.clone() * x.clone() + b.clone() * y.clone() + c.clone() * z.clone()
+        S::dot3([a, b, c], [x, y, z])
     }
     /// The standard (right-handed) cross product: `(a×b)₁ = a₂b₃ − a₃b₂`, cyclic.
     pub fn cross(&self, o: &Self) -> Self {
         let [a1, a2, a3] = &self.0;
         let [b1, b2, b3] = &o.0;
         Vec3([
-            a2.clone() * b3.clone() - a3.clone() * b2.clone(),
-            a3.clone() * b1.clone() - a1.clone() * b3.clone(),
-            a1.clone() * b2.clone() - a2.clone() * b1.clone(),
+            S::det2(a2, b3, a3, b2),
+            S::det2(a3, b1, a1, b3),
+            S::det2(a1, b2, a2, b1),
         ])
     }
     /// `s · self`.

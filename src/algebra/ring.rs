@@ -321,6 +321,11 @@ impl Ring {
         self.state().error.clone()
     }
 
+    /// Whether the ring records derivations for certificates.
+    pub(crate) fn certifying(&self) -> bool {
+        self.inner.opts.certificate
+    }
+
     pub(crate) fn poison(&self, e: AlgebraError) {
         let mut st = self.state();
         if st.error.is_none() {

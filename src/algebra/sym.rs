@@ -159,6 +159,54 @@ impl Inner {
         Ok(Val { num, den, sh })
     }
 
+    /// `Σ ±aᵢbᵢ` with the products over the least common multiple of their
+    /// denominators, reduced by the relations and brought to lowest terms once.
+    pub(crate) fn v_sum_of_products(&self, terms: &[(&Val, &Val, bool)]) -> AlgResult<Val> {
+        let mut sh: Option<Shadow> = None;
+        let mut prods: Vec<(Poly, Poly)> = Vec::with_capacity(terms.len());
+        for (a, b, neg) in terms {
+            let p = a.sh.mul(&b.sh);
+            sh = Some(match sh {
+                None if *neg => p.neg(),
+                None => p,
+                Some(s) if *neg => s.sub(&p),
+                Some(s) => s.add(&p),
+            });
+            let num = a.num.mul(&b.num);
+            prods.push((if *neg { num.neg() } else { num }, a.den.mul(&b.den)));
+        }
+        let sh = sh.ok_or_else(|| AlgebraError::Internal("an empty sum of products".into()))?;
+        let mut lcm = prods[0].1.clone();
+        for (_, q) in &prods[1..] {
+            let g = self.gcds.gcd(&lcm, q)?;
+            lcm = lcm.mul(&exact(q, &g)?);
+        }
+        let mut num = Poly::zero(&self.ctx);
+        for (p, q) in &prods {
+            num = num.add(&p.mul(&exact(&lcm, q)?));
+        }
+        if num.len() + lcm.len() > self.opts.max_terms {
+            // before cancelling, the sum may exceed the bound that its lowest terms
+            // meet: then the products and sums one at a time
+            return self.sum_stepwise(terms);
+        }
+        let (num, den) = self.normalise(self.reduce(num), lcm)?;
+        Ok(Val { num, den, sh })
+    }
+
+    fn sum_stepwise(&self, terms: &[(&Val, &Val, bool)]) -> AlgResult<Val> {
+        let mut acc: Option<Val> = None;
+        for (a, b, neg) in terms {
+            let p = self.v_mul(a, b)?;
+            acc = Some(match acc {
+                None if *neg => self.v_neg(&p),
+                None => p,
+                Some(s) => self.v_add(&s, &p, *neg)?,
+            });
+        }
+        acc.ok_or_else(|| AlgebraError::Internal("an empty sum of products".into()))
+    }
+
     pub(crate) fn v_neg(&self, a: &Val) -> Val {
         Val {
             num: a.num.neg(),
@@ -338,6 +386,24 @@ impl Sym {
         let v = self.ring.inner.v_add(&self.val, &o.val, true)?;
         let node = self.node2(Op::Sub, o, &v);
         Ok(Sym::from_val(&self.ring, v, node))
+    }
+
+    /// `Σ ±aᵢbᵢ` (minus where the flag is set) over one common denominator, brought
+    /// to lowest terms once (no derivation node: used without certificates only).
+    pub fn try_sum_of_products(terms: &[(&Sym, &Sym, bool)]) -> AlgResult<Sym> {
+        let ring = &terms
+            .first()
+            .ok_or_else(|| AlgebraError::Internal("an empty sum of products".into()))?
+            .0
+            .ring;
+        let mut vals = Vec::with_capacity(terms.len());
+        for (x, y, neg) in terms {
+            terms[0].0.same_ring(x)?;
+            terms[0].0.same_ring(y)?;
+            vals.push((&x.val, &y.val, *neg));
+        }
+        let v = ring.inner.v_sum_of_products(&vals)?;
+        Ok(Sym::from_val(ring, v, None))
     }
 
     /// `self · o`, or an error.

@@ -135,6 +135,15 @@ pub trait Scalar:
     fn recip(&self) -> Self {
         self.one() / self.clone()
     }
+    /// `a₁b₁ + a₂b₂ + a₃b₃`, in that order (an exact backend may sum the products
+    /// over one denominator instead).
+    fn dot3(a: [&Self; 3], b: [&Self; 3]) -> Self {
+        a[0].clone() * b[0].clone() + a[1].clone() * b[1].clone() + a[2].clone() * b[2].clone()
+    }
+    /// `a·b − c·d` (an exact backend may subtract over one denominator instead).
+    fn det2(a: &Self, b: &Self, c: &Self, d: &Self) -> Self {
+        a.clone() * b.clone() - c.clone() * d.clone()
+    }
     /// `self` squared.
     fn sqr(&self) -> Self {
         self.clone() * self.clone()

@@ -2,7 +2,9 @@
 //! * an expression minus the same expression built in another order (operands of `+`
 //!   and `·` swapped, `a − b` as `a + (−b)`, `a/b` as `a·b⁻¹`) normalises to 0;
 //! * the normal form, evaluated at the domain points from the symbols' values, equals
-//!   the expression evaluated directly in 256-bit MPFR (with `special::sncndn` for sn).
+//!   the expression evaluated directly in 256-bit MPFR (with `special::sncndn` for sn);
+//! * a sum of products over one denominator (`Sym::try_sum_of_products`) equals the
+//!   products and sums taken one at a time, normal form and shadow.
 
 use eulertop::algebra::{prove_identity, Ring, RingOptions, Sym};
 use proptest::prelude::*;
@@ -47,6 +49,24 @@ fn expr() -> impl Strategy<Value = E> {
             (inner.clone(), inner.clone()).prop_map(|(a, b)| E::Mul(Box::new(a), Box::new(b))),
             (inner.clone(), inner.clone()).prop_map(|(a, b)| E::Div(Box::new(a), Box::new(b))),
             (inner, -2i32..4).prop_map(|(a, n)| E::Pow(Box::new(a), n)),
+        ]
+    })
+}
+
+/// Smaller expressions (without sums of arguments, so the bases are final), six of
+/// which go into one sum of three products.
+fn small_expr() -> impl Strategy<Value = E> {
+    let leaf = prop_oneof![
+        (0usize..3).prop_map(E::Var),
+        (-3i64..4).prop_map(E::Int),
+        (0usize..3).prop_map(E::Sqrt),
+        (0usize..3).prop_map(E::Sn),
+    ];
+    leaf.prop_recursive(2, 6, 2, |inner| {
+        prop_oneof![
+            (inner.clone(), inner.clone()).prop_map(|(a, b)| E::Add(Box::new(a), Box::new(b))),
+            (inner.clone(), inner.clone()).prop_map(|(a, b)| E::Mul(Box::new(a), Box::new(b))),
+            (inner.clone(), inner).prop_map(|(a, b)| E::Div(Box::new(a), Box::new(b))),
         ]
     })
 }
@@ -175,6 +195,38 @@ proptest! {
             prop_assert!(close(z, &direct), "{:?} at point {}: {} vs {}", e, p, z, direct);
             prop_assert!(close(a.shadow(p), &direct), "shadow of {:?} at point {}", e, p);
         }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 32, rng_seed: proptest::test_runner::RngSeed::Fixed(20261125), ..ProptestConfig::default() })]
+
+    #[test]
+    fn a_sum_of_products_equals_its_terms_summed(
+        es in proptest::collection::vec(small_expr(), 6),
+        signs in proptest::collection::vec(any::<bool>(), 3),
+    ) {
+        let sums = |env: &Env| -> eulertop::algebra::AlgResult<(Sym, Sym)> {
+            let v: Vec<Sym> = es.iter().map(|e| build(e, env, false)).collect();
+            let terms: Vec<(&Sym, &Sym, bool)> =
+                (0..3).map(|i| (&v[2 * i], &v[2 * i + 1], signs[i])).collect();
+            let mut direct = env.ring.integer(0);
+            for (a, b, neg) in &terms {
+                let p = *a * *b;
+                direct = if *neg { &direct - &p } else { &direct + &p };
+            }
+            Ok((Sym::try_sum_of_products(&terms)?, direct))
+        };
+        let env = env();
+        let both = sums(&env);
+        // sums beyond the size bound are not compared
+        prop_assume!(both.is_ok() && env.ring.error().is_none());
+        let (fused, direct) = both.unwrap();
+        for p in 0..3 {
+            prop_assert!(close(fused.shadow(p), direct.shadow(p)), "shadow at point {}", p);
+        }
+        let proof = env.ring.prove(&fused, &direct);
+        prop_assert!(proof.is_proved(), "{:?}", proof.outcome);
     }
 }
 

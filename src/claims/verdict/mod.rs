@@ -78,16 +78,19 @@ pub fn verify(
     // stated again (whose proof is then recalled) after its first statement; results
     // keep the catalogue's order
     let mut seen = std::collections::BTreeSet::new();
-    let mut keyed: Vec<((std::cmp::Reverse<u8>, usize), (usize, &Claim))> = chosen
-        .into_iter()
-        .map(|(i, c)| {
+    let costs: Vec<u8> = chosen
+        .iter()
+        .map(|(_, c)| {
             let again = statement_key(cat, c).is_some_and(|k| !seen.insert(k));
-            let cost = if again { 0 } else { expected_cost(cat, c) };
-            ((std::cmp::Reverse(cost), i), (i, c))
+            if again {
+                0
+            } else {
+                expected_cost(cat, c)
+            }
         })
         .collect();
-    keyed.sort_by_key(|(k, _)| *k);
-    let chosen: Vec<(usize, &Claim)> = keyed.into_iter().map(|(_, c)| c).collect();
+    let mut chosen = chosen;
+    chosen.sort_by_key(|(i, _)| (std::cmp::Reverse(costs[*i]), *i));
     // Opt-in per-claim timings on standard error (never part of the results).
     let timing = std::env::var_os("EULERTOP_TIMING").is_some();
     // One shared queue in that order: each worker takes the next claim when it is

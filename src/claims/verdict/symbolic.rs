@@ -223,7 +223,9 @@ fn iteration(ctx: Ctx<'_>, sides: &[&PExpr]) -> Option<String> {
 /// (through the first argument).
 fn self_nesting(e: &Expr, name: &str) -> usize {
     match &e.kind {
-        ExprKind::Call(n, args) if n == name => 1 + args.first().map_or(0, |a| self_nesting(a, name)),
+        ExprKind::Call(n, args) if n == name => {
+            1 + args.first().map_or(0, |a| self_nesting(a, name))
+        }
         _ => 0,
     }
 }
