@@ -189,15 +189,7 @@ impl std::hash::Hash for Poly {
         let mut exps = vec![0u64; self.ctx.nvars];
         for i in (0..len).step_by(step) {
             self.term_coefficient(i).hash(state);
-            // SAFETY: i < len; the buffer has nvars entries.
-            unsafe {
-                fm::fmpz_mpoly_get_term_exp_ui(
-                    exps.as_mut_ptr(),
-                    &self.raw,
-                    i as i64,
-                    self.ctx.ptr(),
-                )
-            };
+            self.term_exponents(i, &mut exps);
             exps.hash(state);
         }
     }
@@ -480,6 +472,16 @@ impl Poly {
         self.term_coefficient(0)
     }
 
+    /// The exponents of term `i` into `exps` (one entry per variable).
+    fn term_exponents(&self, i: usize, exps: &mut [u64]) {
+        assert!(i < self.len() && exps.len() == self.ctx.nvars);
+        // SAFETY: i < len; the buffer has nvars entries (checked); exponents of
+        // polynomials built here fit in 64 bits.
+        unsafe {
+            fm::fmpz_mpoly_get_term_exp_ui(exps.as_mut_ptr(), &self.raw, i as i64, self.ctx.ptr())
+        };
+    }
+
     fn term_coefficient(&self, i: usize) -> Integer {
         let mut f = Fmpz::new();
         // SAFETY: i < len (callers), f initialised.
@@ -495,16 +497,7 @@ impl Poly {
         let mut exps = vec![0u64; n];
         for i in 0..self.len() {
             let c = self.term_coefficient(i);
-            // SAFETY: i < len; the exponent buffer has nvars entries; exponents of
-            // polynomials built here fit in 64 bits.
-            unsafe {
-                fm::fmpz_mpoly_get_term_exp_ui(
-                    exps.as_mut_ptr(),
-                    &self.raw,
-                    i as i64,
-                    self.ctx.ptr(),
-                )
-            };
+            self.term_exponents(i, &mut exps);
             f(&c, &exps);
         }
     }
@@ -604,16 +597,11 @@ impl Poly {
         let mut exps = vec![0u64; self.ctx.nvars];
         let mut f = Fmpz::new();
         for i in 0..self.len() {
-            // SAFETY: i < len; the buffer has nvars entries; f is initialised.
+            self.term_exponents(i, &mut exps);
+            // SAFETY: i < len; f is initialised.
             unsafe {
-                fm::fmpz_mpoly_get_term_exp_ui(
-                    exps.as_mut_ptr(),
-                    &self.raw,
-                    i as i64,
-                    self.ctx.ptr(),
-                );
-                fm::fmpz_mpoly_get_term_coeff_fmpz(&mut f.0, &self.raw, i as i64, self.ctx.ptr());
-            }
+                fm::fmpz_mpoly_get_term_coeff_fmpz(&mut f.0, &self.raw, i as i64, self.ctx.ptr())
+            };
             let key: Vec<u64> = vars.iter().map(|&v| exps[v]).collect();
             for &v in vars {
                 exps[v] = 0;

@@ -6,6 +6,7 @@ mod coverage;
 mod decided_branches;
 mod fuzz_claims;
 mod implicit_proofs;
+mod iterations;
 mod lemmas;
 mod partials;
 mod proof_hints;

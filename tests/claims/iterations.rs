@@ -1,0 +1,66 @@
+//! Iterations written out in the catalogue: a function applied to its own result three
+//! times (Newton's method, say) is not expanded by the prover, with the reason; the
+//! same function applied twice is still attempted, and proved where the identity holds.
+
+use super::support::{attempt, controls_only};
+
+const CATALOGUE: &str = r#"
+[[claim]]
+id = "t.def"
+environment = "Section 2"
+role = "definition"
+location = "control: iterations"
+printed = 'x'
+kind = "definition"
+define = '''
+nwt(x, a) = (x + a / x) / 2
+nwt3(x, a) = nwt(nwt(nwt(x, a), a), a)
+twice(x, a) = nwt(nwt(x, a), a)
+'''
+
+[[claim]]
+id = "t.iter.three"
+environment = "Section 2"
+role = "statement"
+labels = []
+location = "control: iterations"
+printed = 'x'
+kind = "identity"
+expect = "holds"
+vars = [["a", "uniform(1, 2)"]]
+lhs = "nwt3(a, a^2)"
+rhs = "a"
+
+[[claim]]
+id = "t.iter.two"
+environment = "Section 2"
+role = "statement"
+labels = []
+location = "control: iterations"
+printed = 'x'
+kind = "identity"
+expect = "holds"
+vars = [["a", "uniform(1, 2)"]]
+lhs = "twice(a, a^2)"
+rhs = "a"
+"#;
+
+#[test]
+fn a_threefold_self_application_is_not_expanded_and_says_why() {
+    let cat = controls_only(CATALOGUE.to_string());
+    let p = attempt(&cat, "t.iter.three");
+    assert!(!p.is_proved());
+    let why = p.reason.unwrap_or_default();
+    assert!(
+        why.contains("iteration") && why.contains("nwt") && why.contains("nwt3"),
+        "{why}"
+    );
+}
+
+#[test]
+fn a_twofold_application_is_attempted_and_proved() {
+    // a is the root of x² = a², a fixed point of the step: two steps give a exactly
+    let cat = controls_only(CATALOGUE.to_string());
+    let p = attempt(&cat, "t.iter.two");
+    assert!(p.is_proved(), "{:?}", p.reason);
+}
