@@ -63,8 +63,12 @@ use rug::Complex;
 use std::collections::BTreeMap;
 use std::time::Instant;
 
-/// Domain points per case at which the symbols carry numeric values.
-const POINTS: usize = 3;
+/// Domain points per case at which the symbols carry numeric values.  Signs, branches
+/// and regimes are decided at these points, so a sign that changes on the domain is
+/// taken for constant only when every point falls on one side (for an even split,
+/// probability 2⁻⁴ with five points; with eight points no verdict of the catalogue
+/// changes, and the run takes 10 % longer).
+const POINTS: usize = 5;
 /// Draws spent looking for points of every case.
 const MAX_DRAWS: usize = 256;
 
