@@ -411,7 +411,6 @@ fn row07_recursive_definition_is_a_load_error() {
 // -- row 8: overflow is named as overflow ---------------------------------------------
 
 #[test]
-#[ignore = "row 8 open: jacobi reports an overflowing u as a malformed number"]
 fn row08_overflow_is_not_called_malformed() {
     let o = run_in(None, &["jacobi"], b"1e309 0.5\n", Stdio::piped());
     assert_one_line_error(&o, &["line 1"], "jacobi 1e309");
@@ -428,7 +427,6 @@ fn row08_a_huge_sum_bound_is_named_too_large() {
 // -- row 9: jacobi's stdin: invalid UTF-8 and huge lines ------------------------------
 
 #[test]
-#[ignore = "row 9 open: jacobi names no line for invalid UTF-8 and echoes huge lines"]
 fn row09_non_utf8_and_huge_lines() {
     let o = run_in(None, &["jacobi"], b"0.5 0.5\n0.5 \xff\n", Stdio::piped());
     assert_one_line_error(&o, &["line 2"], "non-UTF-8 line");
