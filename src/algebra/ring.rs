@@ -211,6 +211,9 @@ pub(crate) struct Inner {
     pub state: Mutex<State>,
     /// Remembered gcds of the ring's polynomials.
     pub gcds: GcdMemo,
+    /// Set with the first error: the ring's values are then meaningless, and the
+    /// operators stop computing.
+    pub poisoned: std::sync::atomic::AtomicBool,
 }
 
 /// A tower of fields ℚ(x₁…xₙ)(r₁)…(rₘ), rᵢ² = aᵢ, with numeric shadows at domain
@@ -269,6 +272,7 @@ impl Ring {
                 opts,
                 state: Mutex::new(state),
                 gcds: GcdMemo::default(),
+                poisoned: std::sync::atomic::AtomicBool::new(false),
             }),
         }
     }
@@ -331,6 +335,17 @@ impl Ring {
         if st.error.is_none() {
             st.error = Some(e);
         }
+        self.inner
+            .poisoned
+            .store(true, std::sync::atomic::Ordering::Relaxed);
+    }
+
+    /// Whether an error has been recorded ([`Ring::error`]): no proof on the ring can
+    /// succeed any more, so the operators return at once.
+    pub(crate) fn is_poisoned(&self) -> bool {
+        self.inner
+            .poisoned
+            .load(std::sync::atomic::Ordering::Relaxed)
     }
 
     /// The symbols: `(name, what it is)` for field variables and roots.

@@ -17,6 +17,9 @@ macro_rules! binop {
         impl $tr for Sym {
             type Output = Sym;
             fn $m(self, o: Sym) -> Sym {
+                if self.ring.is_poisoned() {
+                    return self.ring.nan();
+                }
                 let r = self.$try(&o);
                 Sym::or_poison(&self.ring, r)
             }
@@ -24,6 +27,9 @@ macro_rules! binop {
         impl $tr<&Sym> for &Sym {
             type Output = Sym;
             fn $m(self, o: &Sym) -> Sym {
+                if self.ring.is_poisoned() {
+                    return self.ring.nan();
+                }
                 let r = self.$try(o);
                 Sym::or_poison(&self.ring, r)
             }
@@ -93,6 +99,9 @@ impl Scalar for Sym {
     /// terms once ([`Sym::try_sum_of_products`]); with certificates, as three products
     /// and two sums.
     fn dot3(a: [&Self; 3], b: [&Self; 3]) -> Self {
+        if a[0].ring.is_poisoned() {
+            return a[0].ring.nan();
+        }
         if a[0].ring.certifying() {
             return a[0].clone() * b[0].clone()
                 + a[1].clone() * b[1].clone()
@@ -107,6 +116,9 @@ impl Scalar for Sym {
     }
     /// As [`Scalar::dot3`], for `a·b − c·d`.
     fn det2(a: &Self, b: &Self, c: &Self, d: &Self) -> Self {
+        if a.ring.is_poisoned() {
+            return a.ring.nan();
+        }
         if a.ring.certifying() {
             return a.clone() * b.clone() - c.clone() * d.clone();
         }

@@ -86,7 +86,14 @@ impl<G: GenericFunction> ExtFunction for G {
                 return Ok(v);
             }
         }
-        self.call(a)
+        // after the prover's first error the values are meaningless (and the model's
+        // checks would misname them): that error is the reason
+        self.call(a).map_err(|m| {
+            a.iter()
+                .flat_map(|v| v.components())
+                .find_map(|x| crate::numbers::Real::failure(&x))
+                .unwrap_or(m)
+        })
     }
     fn call_dual_sym(&self, a: &[Value<Dual<Sym>>]) -> Result<Value<Dual<Sym>>, String> {
         if self.implicit().is_some() {

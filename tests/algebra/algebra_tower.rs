@@ -463,3 +463,23 @@ fn perfect_square_radicands_need_no_root_symbol() {
     assert_eq!(root, p);
     assert!(r.relations().is_empty(), "{:?}", r.relations());
 }
+
+#[test]
+fn after_the_first_error_the_operators_stop_and_the_error_stays() {
+    let r = ring();
+    let x = var(&r, "x", [0.5, -1.0, 2.0]);
+    let y = var(&r, "y", [1.5, 2.0, 3.0]);
+    // the sign of x differs between the points: the comparison poisons the ring
+    let _ = x > r.integer(0);
+    let first = r.error().expect("an undecidable sign is recorded");
+    assert!(
+        first.to_string().contains("differs between domain points"),
+        "{first}"
+    );
+    // later operations do not compute (nor record anything else), and nothing is proved
+    let big = (x.clone() + y.clone()).powi(12) * (x.clone() - y.clone()).powi(12);
+    assert!(big.is_exact_zero());
+    let _ = big.clone() / (x.clone() - x.clone());
+    assert_eq!(r.error().map(|e| e.to_string()), Some(first.to_string()));
+    assert!(!r.prove(&(x.clone() * y.clone()), &(y * x)).is_proved());
+}
