@@ -32,11 +32,7 @@ fn f_agm<R: Real>(q0: i64, r0: &R, kp: &R) -> Result<R, SpecialError> {
     let mut scale = one;
     for _ in 0..200 {
         let c = (a.clone() - b.clone()) * half.clone();
-        let rho = if q.rem_euclid(2) == 0 {
-            b.clone() / a.clone()
-        } else {
-            a.clone() / b.clone()
-        };
+        let rho = step_ratio(q, &a, &b);
         r = r.clone() + (rho * r.tan()).atan();
         q = q
             .checked_mul(2)
@@ -63,6 +59,16 @@ fn f_agm<R: Real>(q0: i64, r0: &R, kp: &R) -> Result<R, SpecialError> {
     )))
 }
 
+/// The ratio of the phase step: `b/a` for even `Q` (`tan φ = tan r`), `a/b` for odd `Q`
+/// (`tan φ = −cot r`).
+fn step_ratio<R: Real>(q: i64, a: &R, b: &R) -> R {
+    if q.rem_euclid(2) == 0 {
+        b.clone() / a.clone()
+    } else {
+        a.clone() / b.clone()
+    }
+}
+
 /// [`f_agm`] with the residual phase kept as its tangent `t = tan r`: the step
 /// `r ← r + atan(ρ tan r)` is `t ← t(1 + ρ)/(1 − ρt²)` (the tangent addition formula),
 /// and leaving `[−π/4, π/4]` is `t ← −(1 − ρt²)/(t(1 + ρ))` with `Q ← Q ± 1`.  The new
@@ -79,11 +85,7 @@ fn f_agm_tangent<R: Real>(q0: i64, r0: &R, kp: &R) -> Result<R, SpecialError> {
     let mut scale = one.clone();
     for _ in 0..200 {
         let c = (a.clone() - b.clone()) * half.clone();
-        let rho = if q.rem_euclid(2) == 0 {
-            b.clone() / a.clone()
-        } else {
-            a.clone() / b.clone()
-        };
+        let rho = step_ratio(q, &a, &b);
         let num = t.clone() * (one.clone() + rho.clone());
         let den = one.clone() - rho * t.sqr();
         q = q

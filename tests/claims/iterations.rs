@@ -4,7 +4,7 @@
 
 use super::support::{attempt, controls_only};
 
-const CATALOGUE: &str = r#"
+const DEFINITIONS: &str = r#"
 [[claim]]
 id = "t.def"
 environment = "Section 2"
@@ -17,37 +17,40 @@ nwt(x, a) = (x + a / x) / 2
 nwt3(x, a) = nwt(nwt(nwt(x, a), a), a)
 twice(x, a) = nwt(nwt(x, a), a)
 '''
-
-[[claim]]
-id = "t.iter.three"
-environment = "Section 2"
-role = "statement"
-labels = []
-location = "control: iterations"
-printed = 'x'
-kind = "identity"
-expect = "holds"
-vars = [["a", "uniform(1, 2)"]]
-lhs = "nwt3(a, a^2)"
-rhs = "a"
-
-[[claim]]
-id = "t.iter.two"
-environment = "Section 2"
-role = "statement"
-labels = []
-location = "control: iterations"
-printed = 'x'
-kind = "identity"
-expect = "holds"
-vars = [["a", "uniform(1, 2)"]]
-lhs = "twice(a, a^2)"
-rhs = "a"
 "#;
+
+/// `lhs = a` on `a ∈ (1, 2)`.
+fn claim(id: &str, lhs: &str) -> String {
+    format!(
+        r#"
+[[claim]]
+id = "{id}"
+environment = "Section 2"
+role = "statement"
+labels = []
+location = "control: iterations"
+printed = 'x'
+kind = "identity"
+expect = "holds"
+vars = [["a", "uniform(1, 2)"]]
+lhs = "{lhs}"
+rhs = "a"
+"#
+    )
+}
+
+fn catalogue() -> eulertop::claims::catalogue::Catalogue {
+    let text = format!(
+        "{DEFINITIONS}{}{}",
+        claim("t.iter.three", "nwt3(a, a^2)"),
+        claim("t.iter.two", "twice(a, a^2)")
+    );
+    controls_only(text)
+}
 
 #[test]
 fn a_threefold_self_application_is_not_expanded_and_says_why() {
-    let cat = controls_only(CATALOGUE.to_string());
+    let cat = catalogue();
     let p = attempt(&cat, "t.iter.three");
     assert!(!p.is_proved());
     let why = p.reason.unwrap_or_default();
@@ -60,7 +63,7 @@ fn a_threefold_self_application_is_not_expanded_and_says_why() {
 #[test]
 fn a_twofold_application_is_attempted_and_proved() {
     // a is the root of x² = a², a fixed point of the step: two steps give a exactly
-    let cat = controls_only(CATALOGUE.to_string());
+    let cat = catalogue();
     let p = attempt(&cat, "t.iter.two");
     assert!(p.is_proved(), "{:?}", p.reason);
 }
