@@ -4,26 +4,11 @@
 //! variable drawn by `randint` over a few integers is enumerated case by case; and an
 //! indicator `if c then 1 else 0` still states a condition that no normal form proves.
 
-use super::support::{attempt, controls_only};
+use super::support::{attempt, controls_only, identity_claim};
 use eulertop::claims::catalogue::Catalogue;
 
 fn control(id: &str, vars: &str, lhs: &str, rhs: &str) -> String {
-    format!(
-        r#"
-[[claim]]
-id = "{id}"
-environment = "Section 2"
-role = "statement"
-labels = []
-location = "control: decided branches"
-printed = 'x'
-kind = "identity"
-expect = "holds"
-vars = [{vars}]
-lhs = "{lhs}"
-rhs = "{rhs}"
-"#
-    )
+    identity_claim(id, "control: decided branches", vars, lhs, rhs)
 }
 
 const X: &str = r#"["x", "uniform(1, 2)"], ["y", "uniform(3, 4)"]"#;

@@ -2,7 +2,7 @@
 //! times (Newton's method, say) is not expanded by the prover, with the reason; the
 //! same function applied twice is still attempted, and proved where the identity holds.
 
-use super::support::{attempt, controls_only};
+use super::support::{attempt, controls_only, identity_claim};
 
 const DEFINITIONS: &str = r#"
 [[claim]]
@@ -21,21 +21,12 @@ twice(x, a) = nwt(nwt(x, a), a)
 
 /// `lhs = a` on `a ∈ (1, 2)`.
 fn claim(id: &str, lhs: &str) -> String {
-    format!(
-        r#"
-[[claim]]
-id = "{id}"
-environment = "Section 2"
-role = "statement"
-labels = []
-location = "control: iterations"
-printed = 'x'
-kind = "identity"
-expect = "holds"
-vars = [["a", "uniform(1, 2)"]]
-lhs = "{lhs}"
-rhs = "a"
-"#
+    identity_claim(
+        id,
+        "control: iterations",
+        r#"["a", "uniform(1, 2)"]"#,
+        lhs,
+        "a",
     )
 }
 

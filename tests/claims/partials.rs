@@ -2,7 +2,7 @@
 //! numerical backends: `d(x*y, x)` in `f(x, y)` called as `f(t, t^2)` is `t^2`, not the
 //! total derivative `3 t^2` in the claim variable `t`.
 
-use super::support::{attempt, controls_only};
+use super::support::{attempt, controls_only, identity_claim};
 use eulertop::claims::catalogue::Catalogue;
 
 const DEFS: &str = r#"
@@ -21,21 +21,12 @@ px(x, c) = d(c * x^3, x)
 "#;
 
 fn control(id: &str, lhs: &str, rhs: &str) -> String {
-    format!(
-        r#"
-[[claim]]
-id = "{id}"
-environment = "Section 2"
-role = "statement"
-labels = []
-location = "control: partial derivatives"
-printed = 'x'
-kind = "identity"
-expect = "holds"
-vars = [["t", "uniform(1, 2)"], ["c", "uniform(1, 2)"]]
-lhs = "{lhs}"
-rhs = "{rhs}"
-"#
+    identity_claim(
+        id,
+        "control: partial derivatives",
+        r#"["t", "uniform(1, 2)"], ["c", "uniform(1, 2)"]"#,
+        lhs,
+        rhs,
     )
 }
 

@@ -31,3 +31,24 @@ pub fn attempt(cat: &Catalogue, id: &str) -> ProofInfo {
     };
     prove(Ctx { cat, claim }, lhs, rhs, false)
 }
+
+/// A control identity claim `lhs = rhs` (expected to hold) over the variables `vars`
+/// (TOML pairs such as `["x", "uniform(1, 2)"]`), as catalogue text.
+pub fn identity_claim(id: &str, location: &str, vars: &str, lhs: &str, rhs: &str) -> String {
+    format!(
+        r#"
+[[claim]]
+id = "{id}"
+environment = "Section 2"
+role = "statement"
+labels = []
+location = "{location}"
+printed = 'x'
+kind = "identity"
+expect = "holds"
+vars = [{vars}]
+lhs = "{lhs}"
+rhs = "{rhs}"
+"#
+    )
+}
