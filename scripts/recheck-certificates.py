@@ -30,6 +30,13 @@ This script:
   * a lemma's stated value (a proved step value) enters as the derivation of its value;
     the certificate names the lemma in an assumption line, and the lemma has its own
     certificate;
+  * signs proved on the domain: `param t positive|nonzero` and `image x = (N)/(D)` give
+    each indeterminate as a rational function of parameters t > 0 (or t != 0), and
+    `posroot r` names a root taken as the positive square root of its radicand, which
+    must itself be proved positive; `sign tN > 0` is checked by substituting the images
+    into the numerator and the denominator of tN (p(x) * prod d_i**deg_i expanded term by
+    term, roots as further positive parameters): every coefficient must have the stated
+    sign, and a parameter t != 0 may occur to even powers only;
   * finally every claim lhs = rhs.
 The arithmetic is SymPy's sparse polynomial arithmetic (sympy.polys.rings over ZZ, on
 SymPy's own integers or gmpy2, never python-flint): a value is a quotient of two
@@ -238,6 +245,10 @@ class Cert:
         self.dvar = {}
         self.equiv = {}  # symbol -> the argument with its sn, cn, dn (equal modulo 4K)
         self.vals = {}
+        self.params = []  # (name, kind) of the domain's parametrization
+        self.pring = None
+        self.images = {}  # indeterminate -> (num, den) in the parameters
+        self.posroots = {}  # root name -> None (declared), True/False (radicand checked)
         self.checked = 0
         self.points = []
 
@@ -511,6 +522,72 @@ class Cert:
         self.need(a.den == self.ring.one, f"the radicand of {name} is not a polynomial with integer coefficients")
         self.roots.append((name, self.index(name), a.num))
         self.kinds[name] = "root"
+
+    # ---- signs proved with a parametrization of the domain --------------------------
+    def param_frac(self, text):
+        """An image (N)/(D): polynomials over ZZ in the parameters (and, unused, the roots)."""
+        import sympy
+        if self.pring is None:
+            names = [n for n, _ in self.params] + ["root__" + r for r, _, _ in self.roots]
+            self.pring, *_ = ring(",".join(names) or "_unused", ZZ)
+            self.pnames = {str(g): g for g in self.pring.gens}
+        parts = split_top(text.strip().replace(")/(", "),("))
+        self.need(len(parts) == 2, f"bad image {text[:60]}")
+        loc = {n: sympy.Symbol(n) for n in self.pnames}
+        num, den = [self.pring.from_expr(sympy.sympify(p, locals=loc)) for p in parts]
+        self.need(den != 0, "an image with denominator 0")
+        return num, den
+
+    def definite(self, p):
+        """The sign of a polynomial in the parameters whose terms all have one sign."""
+        if not p:
+            return None
+        nonzero = [i for i, (_, k) in enumerate(self.params) if k == "nonzero"]
+        signs = set()
+        for monom, c in p.terms():
+            if any(monom[i] % 2 for i in nonzero):
+                return None
+            signs.add(c > 0)
+        return (1 if True in signs else -1) if len(signs) == 1 else None
+
+    def root_positive(self, name):
+        if name not in self.posroots:
+            return False
+        if self.posroots[name] is None:
+            self.posroots[name] = False  # no cycles
+            rad = next(a for r, _, a in self.roots if r == name)
+            self.posroots[name] = self.poly_sign(rad) == 1
+        return self.posroots[name]
+
+    def poly_sign(self, p):
+        """The sign of p (a polynomial in the certificate's symbols) on the parametrized
+        domain, or None: p * prod d_i**deg_i with x_i = n_i/d_i, term by term."""
+        if not p or self.pring is None:
+            return None
+        rows, factor = [], 1
+        for i, deg in enumerate(p.degrees()):
+            if deg <= 0:
+                continue
+            name = str(self.ring.symbols[i])
+            if name in self.images:
+                n, d = self.images[name]
+            elif self.kinds.get(name) == "root" and self.root_positive(name):
+                n, d = self.pnames["root__" + name], self.pring.one
+            else:
+                return None
+            sd = self.definite(d)
+            if sd is None:
+                return None
+            factor *= sd ** (deg % 2)
+            rows.append((i, [n**k for k in range(deg + 1)], [d**k for k in range(deg + 1)], deg))
+        acc = self.pring.zero
+        for monom, c in p.terms():
+            t = self.pring(c)
+            for i, npw, dpw, deg in rows:
+                t = t * npw[monom[i]] * dpw[deg - monom[i]]
+            acc += t
+        s = self.definite(acc)
+        return None if s is None else s * factor
 
     def keyed(self, rest, keys):
         pat = r"\s(" + "|".join(keys) + r")="
@@ -790,6 +867,25 @@ class Cert:
             self.node(rest)
         elif word == "equiv":
             self.equivalence(rest)
+        elif word == "param":
+            name, kind = rest.split()
+            if (name, kind) not in self.params:  # a later case of the proof repeats them
+                self.need(kind in ("positive", "nonzero") and self.pring is None, f"bad parameter {name}")
+                self.params.append((name, kind))
+        elif word == "image":
+            name, val = rest.split("=", 1)
+            self.images[name.strip()] = self.param_frac(val)
+        elif word == "posroot":
+            self.need(self.kinds.get(rest.strip()) == "root", f"posroot of a non-root {rest[:40]}")
+            self.posroots[rest.strip()] = None
+        elif word == "sign":
+            t, rel, zero = rest.split()
+            self.need(rel in "<>" and zero == "0", f"bad sign line {rest[:40]}")
+            f = self.vals[t]
+            a, b = self.poly_sign(f.num), self.poly_sign(f.den)
+            self.need(a is not None and b is not None and a * b == (1 if rel == ">" else -1),
+                      f"sign {t} {rel} 0 is not proved by the parametrization")
+            self.checked += 1
         elif word == "claim":
             a, b = [s.strip() for s in rest.split("=")]
             self.need(self.eq(self.vals[a], self.vals[b]), f"claim {a} = {b} fails")
@@ -936,7 +1032,7 @@ def corruptions(text):
     """Corrupted copies of a certificate, as (what, text) pairs: one coefficient of the
     last product node's stated normal form, the first root's radicand (+ 1), the first
     equivalent argument of an inverse of sn, cn, dn (+ 1, where there is one), the first
-    claim's right-hand side (+ 1)."""
+    proved sign (flipped, where there is one), the first claim's right-hand side (+ 1)."""
     lines = text.splitlines()
     out = []
 
@@ -960,6 +1056,11 @@ def corruptions(text):
         i = equivs[0]
         head, arg = lines[i].split(" arg=(", 1)
         swap(i, [f"{head} arg=(1 + {arg}"], "an equivalent argument + 1")
+    signs = [i for i, ln in enumerate(lines) if re.match(r"sign t\d+ [<>] 0$", ln)]
+    if signs:
+        i = signs[0]
+        flipped = lines[i].replace(" > 0", " < 0") if " > 0" in lines[i] else lines[i].replace(" < 0", " > 0")
+        swap(i, [flipped], "a proved sign flipped")
     claims = [i for i, ln in enumerate(lines) if re.match(r"claim t\d+ = t\d+$", ln)]
     if claims:
         i = claims[0]

@@ -149,7 +149,9 @@ impl Ring {
             let b = em.visit(rn);
             claims.push((a, b));
         }
+        let signs = self.sign_lines(&mut em);
         out.push_str(&em.out);
+        out.push_str(&signs);
         for (a, b) in claims {
             let _ = writeln!(out, "claim t{a} = t{b}");
         }
@@ -157,6 +159,44 @@ impl Ring {
             let _ = writeln!(out, "# assumption ({:?}): {}", a.origin, a.statement);
         }
         Some(out)
+    }
+
+    /// The signs proved with the parametrization of the domain (module
+    /// [`super::positivity`]): the parametrization, the roots taken as positive, and one
+    /// `sign tN > 0` (or `< 0`) line per proved sign of a derived value.
+    fn sign_lines(&self, em: &mut Emitter<'_>) -> String {
+        let (signs, vars, roots) = {
+            let st = self.state();
+            let vars: Vec<String> = (st.vars.iter())
+                .filter(|v| matches!(v.kind, VarKind::Indeterminate))
+                .map(|v| v.name.clone())
+                .collect();
+            let roots: Vec<String> = (st.roots.iter())
+                .filter(|r| r.values.iter().all(super::positivity::positive_real))
+                .map(|r| r.name.clone())
+                .collect();
+            (st.proved_signs.clone(), vars, roots)
+        };
+        let Some(par) = self
+            .inner
+            .opts
+            .positivity
+            .as_ref()
+            .filter(|_| !signs.is_empty())
+        else {
+            return String::new();
+        };
+        let mut out = par.certificate_lines(&vars);
+        for r in roots {
+            let _ = writeln!(out, "posroot {r}");
+        }
+        for (node, s) in signs {
+            if let Some(n) = node {
+                let id = em.visit(&n);
+                let _ = writeln!(out, "sign t{id} {} 0", if s > 0 { ">" } else { "<" });
+            }
+        }
+        out
     }
 
     /// For each symbol with prescribed sn, cn, dn that an argument replaces inside sn,

@@ -74,9 +74,11 @@
 //!   normal form then proves nothing, as always).
 //! * Half periods: multiples of `K/2` and `iK'/2` only; the derivative of `K(k)` in a
 //!   varying modulus is refused (it would need `E(k)`).
-//! * Decisions from the shadows are assumptions of the proof, never proved: a claim
-//!   whose statement *is* such a condition (an inequality, an indicator) is not proved
-//!   by a normal form.
+//! * Decisions from the shadows are assumptions of the proof.  A claim whose statement
+//!   *is* such a condition (an inequality, an indicator) is proved only with
+//!   [`RingOptions::strict_signs`]: every sign is then proved by [`positivity`] (a
+//!   sufficient test on a parametrization of the domain by positive parameters), or the
+//!   proof stops.
 //!
 //! # Example
 //!
@@ -111,6 +113,7 @@ mod lattice;
 mod node;
 mod opaque;
 mod order;
+pub mod positivity;
 mod proof;
 mod ring;
 pub mod roots;

@@ -29,6 +29,9 @@ impl Sym {
             return Ok(if q < 0 { -1 } else { 1 });
         }
         let ring = &self.ring;
+        if ring.options().strict_signs {
+            return self.proved_sign().ok_or_else(|| self.unproved_sign());
+        }
         let prec = ring.precision();
         let what = self.render_short(160);
         // the carried error scales may be too pessimistic to decide: then the value is
@@ -79,6 +82,12 @@ impl Sym {
             };
         }
         let ring = &self.ring;
+        if ring.options().strict_signs {
+            return self
+                .proved_sign()
+                .map(|_| ())
+                .ok_or_else(|| self.unproved_sign());
+        }
         let prec = ring.precision();
         let sh = ring.reevaluated(&self.val);
         if let Some(p) = (0..ring.points()).find(|&p| sh.is_small(p, prec)) {
@@ -90,6 +99,14 @@ impl Sym {
         }
         ring.record_assumption(format!("{} ≠ 0", self.render_short(160)), 0);
         Ok(())
+    }
+
+    /// Why a sign is not decided where signs must be proved.
+    fn unproved_sign(&self) -> AlgebraError {
+        AlgebraError::CannotDecide(format!(
+            "the sign of {} is not proved on the domain (the claim states a condition, so its signs are proved, never taken at domain points)",
+            self.render_short(160)
+        ))
     }
 
     /// Compares two real values on the domain (see [`Sym::sign`]).

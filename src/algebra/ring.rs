@@ -40,6 +40,12 @@ pub struct RingOptions {
     /// Base arguments of the elliptic functions to start from (see
     /// [`crate::algebra::prove_identity`], which fills this in on a restart).
     pub base_hints: Vec<super::base_table::BaseHint>,
+    /// A parametrization of the domain with which signs are proved (module
+    /// [`super::positivity`]): the signs that `abs` and `sign` in a claim's formulas take.
+    pub positivity: Option<Arc<super::positivity::Parametrization>>,
+    /// Every sign and every comparison must be proved with [`RingOptions::positivity`],
+    /// never taken at domain points: for a claim whose statement is a condition.
+    pub strict_signs: bool,
 }
 
 /// The largest numerator plus denominator, in terms, that the prover works with at
@@ -60,6 +66,8 @@ impl Default for RingOptions {
             expand_named: false,
             max_terms: MAX_TERMS,
             base_hints: Vec::new(),
+            positivity: None,
+            strict_signs: false,
         }
     }
 }
@@ -182,6 +190,9 @@ pub(crate) struct State {
     pub assumptions: Vec<Assumption>,
     /// Steps the certificate format does not record (a proof with one has no certificate).
     pub uncertified: Vec<String>,
+    /// Signs proved with the parametrization of the domain, with the derivation of each
+    /// value (for certificates).
+    pub proved_signs: Vec<(Option<Arc<Node>>, i32)>,
     pub notes: Vec<String>,
     pub error: Option<AlgebraError>,
     pub origin: Origin,
@@ -251,6 +262,7 @@ impl Ring {
             tables: Vec::new(),
             assumptions: Vec::new(),
             uncertified: Vec::new(),
+            proved_signs: Vec::new(),
             notes: Vec::new(),
             error: None,
             origin: Origin::Claim,

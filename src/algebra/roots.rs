@@ -455,14 +455,23 @@ impl Sym {
             cand = inner.v_neg(&cand);
         }
         let result = Sym::from_val(ring, cand, None);
-        if !(sigma > 0 && fresh.is_none() && result.is_single_root_of(self)) {
-            ring.record_assumption(format!("{what} = {}", result.render_short(160)), sigma);
-        }
         let node = self
             .node
             .as_ref()
             .map(|n| Node::sqrt(n, &result.val, sigma));
-        Ok(result.with_node(node))
+        let result = result.with_node(node);
+        if !(sigma > 0 && fresh.is_none() && result.is_single_root_of(self)) {
+            if !ring.options().strict_signs {
+                ring.record_assumption(format!("{what} = {}", result.render_short(160)), sigma);
+            } else if result.proved_sign() != Some(1) {
+                // the principal root is the positive one: the branch must be proved
+                return Err(AlgebraError::CannotDecide(format!(
+                    "the branch of {what} is not proved on the domain: {} > 0 is not proved",
+                    result.render_short(160)
+                )));
+            }
+        }
+        Ok(result)
     }
 
     /// Is this value a single root symbol whose radicand is exactly `x` (the

@@ -164,10 +164,13 @@ impl Scalar for Sym {
         if self.is_exact_zero() {
             return Ok(0);
         }
-        match self.as_rational() {
-            Some(q) => Ok(if q < 0 { -1 } else { 1 }),
+        if let Some(q) = self.as_rational() {
+            return Ok(if q < 0 { -1 } else { 1 });
+        }
+        match self.proved_sign() {
+            Some(s) => Ok(s),
             None => Err(format!(
-                "the sign of {} is not exact: sign and abs in a claim's formulas are decided only exactly (a sign taken at domain points would be the condition the formula states)",
+                "the sign of {} is neither exact nor proved on the domain: sign and abs in a claim's formulas are decided only exactly (a sign taken at domain points would be the condition the formula states)",
                 self.render_short(80)
             )),
         }

@@ -48,8 +48,12 @@ fn controls() -> Vec<(&'static str, &'static str, &'static str, &'static str)> {
             "3*x",
         ),
         // abs and sign are decided only exactly: abs(x) = x on x > 0 is a condition
-        ("t.abs.sampled", X, "abs(x)", "x"),
-        ("t.sign.sampled", X, "sign(x) * x", "x"),
+        // x − 1/2 > 0 at every point of x ∈ (1, 2), but not for every x > 0: the sign is
+        // not proved, and a sign taken at the points would prove nothing
+        ("t.abs.sampled", X, "abs(x - 1/2)", "x - 1/2"),
+        ("t.sign.sampled", X, "sign(x - 1/2) * (x - 1/2)", "x - 1/2"),
+        // x > 0 on the relaxation of x ∈ (1, 2): the sign is proved
+        ("t.abs.proved", X, "abs(x) * sign(x*y)", "x"),
         (
             "t.abs.exact",
             X,
@@ -125,16 +129,19 @@ fn an_equality_with_a_nonzero_normal_form_is_decided_on_the_domain() {
 }
 
 #[test]
-fn abs_and_sign_are_decided_only_where_the_sign_is_exact() {
+fn abs_and_sign_are_decided_only_where_the_sign_is_exact_or_proved() {
     let cat = catalogue();
     for id in ["t.abs.sampled", "t.sign.sampled"] {
         let p = attempt(&cat, id);
         assert!(!p.is_proved(), "{id} proved from sampled signs");
         let why = p.reason.unwrap_or_default();
-        assert!(why.contains("is not exact"), "{id}: {why}");
+        assert!(why.contains("neither exact nor proved"), "{id}: {why}");
     }
     let p = attempt(&cat, "t.abs.exact");
     assert!(p.is_proved(), "{:?}", p.reason);
+    let p = attempt(&cat, "t.abs.proved");
+    assert!(p.is_proved(), "{:?}", p.reason);
+    assert!(p.assumptions.is_empty(), "{:?}", p.assumptions);
 }
 
 #[test]

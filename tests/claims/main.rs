@@ -2,6 +2,7 @@
 //! lexer, parser, loader and evaluator, and the coverage of the paper's labels.
 
 mod claims_engine;
+mod conditions;
 mod coverage;
 mod decided_branches;
 mod fuzz_claims;

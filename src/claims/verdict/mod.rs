@@ -21,6 +21,7 @@ pub mod independence;
 pub mod ladder;
 pub(crate) mod lemmas;
 pub mod negation;
+mod positivity;
 pub mod proof_info;
 pub mod result;
 pub mod symbolic;

@@ -13,10 +13,12 @@
 //! regime are decided at domain points of the claim (the prover's shadows) and recorded
 //! as assumptions.  So is the condition of an `if` that selects between two formulas
 //! (the regime of (M-M 1): `if up then … else …`).  `abs` and `sign` in the catalogue's
-//! formulas are decided only where the sign is exact (see `Scalar::stated_sign`).  A
-//! claim whose own formulas take `min`, `max`, or an indicator `if c then 1 else 0` (a
-//! branch that is a number) states a condition, which a normal form cannot prove: it is
-//! not attempted.
+//! formulas are decided only where the sign is exact or proved (see
+//! `Scalar::stated_sign`).  A claim whose own formulas take `min`, `max`, or an
+//! indicator `if c then 1 else 0` (a branch that is a number) states a condition: it is
+//! proved only when every sign, comparison and square-root branch it decides is proved
+//! with the domain's parametrization by positive parameters (module `positivity`,
+//! [`crate::algebra::positivity`]), and none is taken at domain points.
 //! A comparison yields a truth value, which only an `if` can use.
 //!
 //! ```
@@ -827,13 +829,15 @@ fn prove_case(
     roles: &[(String, Role, &PExpr)],
     points: &[Point],
     sides_of: (&PExpr, &PExpr),
-    certificate: bool,
+    (certificate, signs): (bool, &Signs),
     base_hints: Vec<BaseHint>,
 ) -> Proof {
     let opts = RingOptions {
         points: points.len(),
         certificate,
         base_hints,
+        positivity: signs.positivity.clone(),
+        strict_signs: signs.strict,
         ..RingOptions::default()
     };
     let hint = ctx.claim.hint.as_ref();
@@ -865,12 +869,17 @@ fn prove_case(
     })
 }
 
+/// How the proof decides signs: the domain's parametrization, and whether every sign
+/// must be proved with it (a claim that states a condition).
+struct Signs {
+    positivity: Option<std::sync::Arc<crate::algebra::positivity::Parametrization>>,
+    strict: bool,
+}
+
 /// Attempts a symbolic proof of `lhs = rhs` on the claim's domain.
 pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> ProofInfo {
     let t0 = Instant::now();
-    if let Some(why) = states_condition(ctx, &[lhs, rhs]) {
-        return ProofInfo::none(why);
-    }
+    let condition = states_condition(ctx, &[lhs, rhs]);
     let sampler = match ctx.sampler(Stream::Proof) {
         Ok(s) => s,
         Err(c) => return ProofInfo::none(c.to_string()),
@@ -880,6 +889,15 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
     }
     if let Some(why) = iteration(ctx, &[lhs, rhs]) {
         return ProofInfo::none(why);
+    }
+    let signs = Signs {
+        positivity: super::positivity::parametrization(sampler.variables()),
+        strict: condition.is_some(),
+    };
+    if let (Some(why), None) = (&condition, &signs.positivity) {
+        return ProofInfo::none(format!(
+            "{why} (no variable of its domain can be parametrized to prove signs)"
+        ));
     }
     let plain: Vec<(String, (Role, usize))> = sampler
         .variables()
@@ -897,7 +915,9 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
         Ok(_) => return ProofInfo::none("no case of the domain has enough points"),
         Err(m) => return ProofInfo::none(m),
     };
-    if let Some(mut joint) = prove_signs_jointly(ctx, &roles, &cases, (lhs, rhs), certificate) {
+    if let Some(mut joint) =
+        prove_signs_jointly(ctx, &roles, &cases, (lhs, rhs), (certificate, &signs))
+    {
         joint.ms = t0.elapsed().as_secs_f64() * 1e3;
         return with_lemmas(ctx, joint);
     }
@@ -907,7 +927,14 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
     let mut hints = Vec::new();
     for (key, points) in &cases {
         // the cases differ in signs only: the bases that served one serve the next
-        let p = prove_case(ctx, &roles, points, (lhs, rhs), certificate, hints);
+        let p = prove_case(
+            ctx,
+            &roles,
+            points,
+            (lhs, rhs),
+            (certificate, &signs),
+            hints,
+        );
         hints = p.base_hints.clone();
         merge(&mut info, key, p);
         if !info.is_proved() {
@@ -942,7 +969,7 @@ fn prove_signs_jointly(
     roles: &[(String, Role, &PExpr)],
     cases: &Cases,
     sides: (&PExpr, &PExpr),
-    certificate: bool,
+    certificate: (bool, &Signs),
 ) -> Option<ProofInfo> {
     let points: Vec<Point> = cases.values().flatten().cloned().collect();
     let is_sign = |name: &str| {

@@ -1,0 +1,161 @@
+//! The claim's domain as a parametrization by positive parameters, with which the
+//! prover proves signs (see [`crate::algebra::positivity`]).
+//!
+//! Each sampled variable whose definition is built from numbers, earlier variables,
+//! `+ − × ÷`, integer powers, `vec(…)` and `uniform(lo, hi)` becomes a rational function
+//! of parameters.  Each `uniform(lo, hi)` is relaxed to a range that contains it:
+//!
+//! | drawn from | relaxed to | as |
+//! |---|---|---|
+//! | `0 ≤ lo < hi ≤ 1` | `(0, 1)` | `t/(1 + t)`, `t > 0` |
+//! | `0 ≤ lo` | `(0, ∞)` | `t > 0` |
+//! | `hi ≤ 0` | `(−∞, 0)` | `−t`, `t > 0` |
+//! | otherwise | any nonzero value | `μ ≠ 0` |
+//!
+//! So the parametrized set contains the sampled domain (its `where` conditions only
+//! narrow the domain further), and a sign proved on it holds on the sampled domain.
+//! A variable drawn otherwise (`sign()`, `K(…)`, a normal deviate) is not parametrized,
+//! and a sign that involves it is not proved this way.
+
+use crate::algebra::positivity::{ParamRat, Parametrization};
+use crate::claims::ast::{BinOp, Expr, ExprKind, UnOp};
+use crate::claims::catalogue::PExpr;
+use std::collections::BTreeMap;
+use std::sync::Arc;
+
+/// A parametrized value: a scalar or the components of a vector.
+#[derive(Clone)]
+enum PVal {
+    Scalar(ParamRat),
+    Vector(Vec<ParamRat>),
+}
+
+/// The parametrization of the claim's sampled variables, or `None` when none of them
+/// can be parametrized.
+pub(super) fn parametrization(vars: &[(String, &PExpr)]) -> Option<Arc<Parametrization>> {
+    let mut par = Parametrization::new();
+    let mut env: BTreeMap<String, PVal> = BTreeMap::new();
+    for (name, def) in vars {
+        let mut ranges = Vec::new();
+        let Some(v) = value(&mut par, &env, &def.expr, (name, &mut ranges)) else {
+            continue;
+        };
+        let how = if ranges.is_empty() {
+            String::new()
+        } else {
+            format!(", {}", ranges.join(", "))
+        };
+        match &v {
+            PVal::Scalar(x) => par.bind(name, x.clone(), format!("{name} = {}{how}", def.text)),
+            PVal::Vector(xs) => {
+                for (j, x) in xs.iter().enumerate() {
+                    let text = (j == 0).then(|| format!("{name} = {}{how}", def.text));
+                    par.bind(
+                        &format!("{name}{}", j + 1),
+                        x.clone(),
+                        text.unwrap_or_default(),
+                    );
+                }
+            }
+        }
+        env.insert(name.clone(), v);
+    }
+    (!par.is_empty()).then(|| Arc::new(par))
+}
+
+/// The value of a definition; `ranges` collects how its draws are relaxed.
+fn value(
+    par: &mut Parametrization,
+    env: &BTreeMap<String, PVal>,
+    e: &Expr,
+    (var, ranges): (&str, &mut Vec<String>),
+) -> Option<PVal> {
+    let scalar = |v: PVal| match v {
+        PVal::Scalar(x) => Some(x),
+        PVal::Vector(_) => None,
+    };
+    Some(match &e.kind {
+        ExprKind::Num(s) => {
+            let q = crate::numbers::parse_rational(s).ok()?;
+            let q = rug::Rational::from((
+                rug::Integer::from_str_radix(&q.numer().to_string(), 10).ok()?,
+                rug::Integer::from_str_radix(&q.denom().to_string(), 10).ok()?,
+            ));
+            PVal::Scalar(par.constant(&q))
+        }
+        ExprKind::Name(n) => env.get(n)?.clone(),
+        ExprKind::Unary(UnOp::Neg, a) => {
+            PVal::Scalar(scalar(value(par, env, a, (var, ranges))?)?.neg())
+        }
+        ExprKind::Binary(op, a, b) => {
+            let x = scalar(value(par, env, a, (var, ranges))?)?;
+            let y = scalar(value(par, env, b, (var, ranges))?)?;
+            PVal::Scalar(match op {
+                BinOp::Add => x.add(&y),
+                BinOp::Sub => x.sub(&y),
+                BinOp::Mul => x.mul(&y),
+                BinOp::Div => x.div(&y)?,
+                BinOp::Pow => {
+                    let n = y.as_constant()?;
+                    if *n.denom() != 1 {
+                        return None;
+                    }
+                    x.powi(n.numer().to_i64()?)?
+                }
+                _ => return None,
+            })
+        }
+        ExprKind::Call(f, args) if f == "vec" && args.len() == 3 => {
+            let mut xs = Vec::new();
+            for a in args {
+                xs.push(scalar(value(par, env, a, (var, ranges))?)?);
+            }
+            PVal::Vector(xs)
+        }
+        ExprKind::Call(f, args) if f == "uniform" && args.len() == 2 => {
+            let lo = scalar(value(par, env, &args[0], (var, ranges))?)?.as_constant()?;
+            let hi = scalar(value(par, env, &args[1], (var, ranges))?)?.as_constant()?;
+            PVal::Scalar(relaxed(
+                par,
+                &format!("t{}_{var}", ranges.len() + 1),
+                (&lo, &hi),
+                ranges,
+            )?)
+        }
+        _ => return None,
+    })
+}
+
+/// A parameter for `uniform(lo, hi)`, on a range that contains `(lo, hi)`.
+fn relaxed(
+    par: &mut Parametrization,
+    name: &str,
+    (lo, hi): (&rug::Rational, &rug::Rational),
+    ranges: &mut Vec<String>,
+) -> Option<ParamRat> {
+    let one = par.constant(&rug::Rational::from(1));
+    let (v, range) = if *lo >= 0 && *hi < 1 {
+        let t = par.positive(name)?;
+        (
+            t.div(&one.add(&t))?,
+            format!("{name}/(1 + {name}) with {name} > 0 for uniform({lo}, {hi})"),
+        )
+    } else if *lo >= 0 {
+        (
+            par.positive(name)?,
+            format!("{name} > 0 for uniform({lo}, {hi})"),
+        )
+    } else if *hi <= 0 {
+        (
+            par.positive(name)?.neg(),
+            format!("-{name}, {name} > 0, for uniform({lo}, {hi})"),
+        )
+    } else {
+        (
+            par.nonzero(name)?,
+            format!("{name} ≠ 0 for uniform({lo}, {hi})"),
+        )
+    };
+    ranges.push(range);
+    Some(v)
+}
