@@ -190,7 +190,7 @@ impl Ring {
         for r in roots {
             let _ = writeln!(out, "posroot {r}");
         }
-        for (node, s) in signs {
+        for (node, s, _) in signs {
             if let Some(n) = node {
                 let id = em.visit(&n);
                 let _ = writeln!(out, "sign t{id} {} 0", if s > 0 { ">" } else { "<" });

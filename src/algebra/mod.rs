@@ -18,9 +18,11 @@
 //!   squares, so the tower over K is a field (module [`roots`]).
 //! * **Shadows.**  Every value carries its value at a few domain points (complex MPFR,
 //!   256 bits by default), computed alongside.  Signs, branches of square roots and
-//!   comparisons are decided from them and recorded as [`Assumption`]s; disagreeing
-//!   points give [`AlgebraError::CannotDecide`]; an exact 0 with a non-zero shadow is an
-//!   internal error.
+//!   comparisons are proved where [`positivity`] proves them (with
+//!   [`RingOptions::positivity`], a parametrization of the domain); otherwise they are
+//!   decided from the shadows and recorded as [`Assumption`]s; disagreeing points give
+//!   [`AlgebraError::CannotDecide`]; an exact 0 with a non-zero shadow is an internal
+//!   error.
 //! * **Elliptic functions.**  `sn`, `cn`, `dn` of arguments that are integer
 //!   combinations of base arguments and of `K/2`, `iK'/2` are expanded by DLMF 22.8,
 //!   22.4.3 and 22.5.1 (module [`elliptic`]); each base has symbols `s`, `c`, `d` with

@@ -1,7 +1,8 @@
 //! Signs and comparisons decided from the shadows.
 //!
-//! A sign is *exact* when the value is an exact rational (or exactly zero); otherwise it
-//! is decided from the shadows when every domain point gives the same sign, and the
+//! A sign is *exact* when the value is an exact rational (or exactly zero), and *proved*
+//! when the ring's parametrization of the domain proves it (module
+//! [`super::positivity`]); otherwise it is decided from the shadows when every domain point gives the same sign, and the
 //! decision is recorded as an assumption of the proof (with its origin: a definition
 //! or the claim's own text).  Points that disagree, a value that vanishes at a point,
 //! or a value that is not real give [`AlgebraError::CannotDecide`].
@@ -31,6 +32,9 @@ impl Sym {
         let ring = &self.ring;
         if ring.options().strict_signs {
             return self.proved_sign().ok_or_else(|| self.unproved_sign());
+        }
+        if let Some(s) = self.proved_sign() {
+            return Ok(s);
         }
         let prec = ring.precision();
         let what = self.render_short(160);
@@ -87,6 +91,9 @@ impl Sym {
                 .proved_sign()
                 .map(|_| ())
                 .ok_or_else(|| self.unproved_sign());
+        }
+        if self.proved_sign().is_some() {
+            return Ok(());
         }
         let prec = ring.precision();
         let sh = ring.reevaluated(&self.val);

@@ -238,9 +238,27 @@ impl Parametrization {
         out
     }
 
-    /// How the domain is parametrized, for the reader.
+    /// How the domain is parametrized, for the reader: the images, then the ranges of
+    /// the parameters.
     pub fn describe(&self) -> String {
-        self.descriptions.join("; ")
+        let of = |kind: ParamKind| -> Vec<&str> {
+            (self.params.iter())
+                .filter(|(_, k)| *k == kind)
+                .map(|(n, _)| n.as_str())
+                .collect()
+        };
+        let mut ranges = Vec::new();
+        for (kind, rel) in [(ParamKind::Positive, "> 0"), (ParamKind::NonZero, "≠ 0")] {
+            let names = of(kind);
+            if !names.is_empty() {
+                ranges.push(format!("{} {rel}", names.join(", ")));
+            }
+        }
+        format!(
+            "{}, with {}",
+            self.descriptions.join("; "),
+            ranges.join(" and ")
+        )
     }
 
     /// The sign of `num/den` (polynomials of another context) where the variable of
@@ -352,6 +370,10 @@ impl Sym {
     /// it.  The proof then has no certificate (the format does not record the test).
     pub(crate) fn proved_sign(&self) -> Option<i32> {
         let par = self.ring.inner.opts.positivity.clone()?;
+        if self.ring.certifying() && self.node.is_none() {
+            // a certificate names the value of every proved sign by its derivation
+            return None;
+        }
         let images = self.ring.sign_images(&par, &self.val.num)?;
         let s = par.sign_of(&self.val.num, &self.val.den, &images)?;
         // the points lie in the parametrized domain: their signs must agree
@@ -362,19 +384,12 @@ impl Sym {
             return None;
         }
         let rel = if s > 0 { ">" } else { "<" };
-        self.ring.note(format!(
-            "the domain is parametrized by positive parameters: {}",
-            par.describe()
-        ));
-        self.ring.note(format!(
-            "{} {rel} 0 is proved: after substitution of the parametrization every coefficient has one sign",
-            self.render_short(160)
-        ));
-        if self.ring.certifying() && self.node.is_none() {
-            self.ring
-                .mark_uncertified("a sign proved for a value without a derivation");
+        let statement = format!("{} {rel} 0", self.render_short(160));
+        let mut st = self.ring.state();
+        if st.proved_signs.iter().all(|(_, _, t)| *t != statement) {
+            st.proved_signs.push((self.node.clone(), s, statement));
         }
-        (self.ring.state().proved_signs).push((self.node.clone(), s));
+        drop(st);
         Some(s)
     }
 }

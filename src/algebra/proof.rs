@@ -33,6 +33,10 @@ pub struct Proof {
     pub relations: Vec<String>,
     /// The decisions taken from the domain (branches, signs, comparisons).
     pub assumptions: Vec<Assumption>,
+    /// Signs proved with the parametrization of the domain (not assumptions).
+    pub proved_signs: Vec<String>,
+    /// That parametrization, for the reader, when a sign was proved with it.
+    pub parametrization: Option<String>,
     /// Addition-theorem instances and other steps, for the reader.
     pub notes: Vec<String>,
     /// Terms of the numerators of `lhs` and `rhs` (the size of the identity).
@@ -62,6 +66,8 @@ impl Proof {
             symbols: Vec::new(),
             relations: Vec::new(),
             assumptions: Vec::new(),
+            proved_signs: Vec::new(),
+            parametrization: None,
             notes: Vec::new(),
             terms: 0,
             ms,
@@ -110,6 +116,8 @@ impl Ring {
             symbols: self.symbols(),
             relations: self.relations(),
             assumptions: self.assumptions(),
+            proved_signs: self.proved_signs(),
+            parametrization: self.parametrization(),
             notes: self.notes(),
             terms: pairs.iter().map(|(l, r)| l.terms() + r.terms()).sum(),
             ms: t0.elapsed().as_secs_f64() * 1e3,

@@ -192,7 +192,7 @@ pub(crate) struct State {
     pub uncertified: Vec<String>,
     /// Signs proved with the parametrization of the domain, with the derivation of each
     /// value (for certificates).
-    pub proved_signs: Vec<(Option<Arc<Node>>, i32)>,
+    pub proved_signs: Vec<(Option<Arc<Node>>, i32, String)>,
     pub notes: Vec<String>,
     pub error: Option<AlgebraError>,
     pub origin: Origin,
@@ -329,6 +329,20 @@ impl Ring {
     /// The assumptions recorded so far.
     pub fn assumptions(&self) -> Vec<Assumption> {
         self.state().assumptions.clone()
+    }
+
+    /// The signs proved with the parametrization of the domain (`x > 0`), in order.
+    pub fn proved_signs(&self) -> Vec<String> {
+        let st = self.state();
+        st.proved_signs.iter().map(|(_, _, s)| s.clone()).collect()
+    }
+
+    /// The parametrization of the domain, for the reader, when a sign was proved with it.
+    pub fn parametrization(&self) -> Option<String> {
+        let used = !self.state().proved_signs.is_empty();
+        (self.inner.opts.positivity.as_ref())
+            .filter(|_| used)
+            .map(|p| p.describe())
     }
 
     /// The first error met inside an operator (`+`, `*`, comparisons, …), which cannot

@@ -461,9 +461,10 @@ impl Sym {
             .map(|n| Node::sqrt(n, &result.val, sigma));
         let result = result.with_node(node);
         if !(sigma > 0 && fresh.is_none() && result.is_single_root_of(self)) {
-            if !ring.options().strict_signs {
+            let proved = result.proved_sign() == Some(1);
+            if !ring.options().strict_signs && !proved {
                 ring.record_assumption(format!("{what} = {}", result.render_short(160)), sigma);
-            } else if result.proved_sign() != Some(1) {
+            } else if !proved {
                 // the principal root is the positive one: the branch must be proved
                 return Err(AlgebraError::CannotDecide(format!(
                     "the branch of {what} is not proved on the domain: {} > 0 is not proved",

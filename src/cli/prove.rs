@@ -41,6 +41,16 @@ pub fn derivation(id: &str, printed: &str, p: &ProofInfo) -> String {
     list(&mut out, "symbols", &p.symbols);
     list(&mut out, "relations", &p.relations);
     list(&mut out, "steps", &p.notes);
+    if let Some(par) = &p.parametrization {
+        out.push_str(&format!(
+            "domain parametrized by positive parameters:\n  {par}\n"
+        ));
+    }
+    list(
+        &mut out,
+        "signs proved (every coefficient of one sign after substituting the parametrization; a root of a radicand proved positive is its positive root)",
+        &p.proved_signs,
+    );
     list(
         &mut out,
         "assumptions (decided on the claim's domain)",

@@ -37,6 +37,14 @@ pub fn proof_block(p: &ProofInfo) -> String {
     items(&mut s, "cases", &p.cases);
     items(&mut s, "symbols", &p.symbols);
     items(&mut s, "relations", &p.relations);
+    if let Some(par) = &p.parametrization {
+        let _ = writeln!(s, "- domain parametrized by positive parameters: `{par}`");
+    }
+    items(
+        &mut s,
+        "signs proved (every coefficient of one sign after substituting the parametrization; a root of a radicand proved positive is its positive root)",
+        &p.proved_signs,
+    );
     items(
         &mut s,
         "assumptions (decided on the domain)",

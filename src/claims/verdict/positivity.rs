@@ -36,31 +36,65 @@ pub(super) fn parametrization(vars: &[(String, &PExpr)]) -> Option<Arc<Parametri
     let mut par = Parametrization::new();
     let mut env: BTreeMap<String, PVal> = BTreeMap::new();
     for (name, def) in vars {
+        if !parametrizable(&def.expr, &env) {
+            continue;
+        }
         let mut ranges = Vec::new();
         let Some(v) = value(&mut par, &env, &def.expr, (name, &mut ranges)) else {
             continue;
         };
-        let how = if ranges.is_empty() {
-            String::new()
-        } else {
-            format!(", {}", ranges.join(", "))
-        };
+        let text = format!("{name} = {}", relaxed_text(&def.text, &ranges));
         match &v {
-            PVal::Scalar(x) => par.bind(name, x.clone(), format!("{name} = {}{how}", def.text)),
+            PVal::Scalar(x) => par.bind(name, x.clone(), text),
             PVal::Vector(xs) => {
                 for (j, x) in xs.iter().enumerate() {
-                    let text = (j == 0).then(|| format!("{name} = {}{how}", def.text));
-                    par.bind(
-                        &format!("{name}{}", j + 1),
-                        x.clone(),
-                        text.unwrap_or_default(),
-                    );
+                    let text = if j == 0 { text.clone() } else { String::new() };
+                    par.bind(&format!("{name}{}", j + 1), x.clone(), text);
                 }
             }
         }
         env.insert(name.clone(), v);
     }
     (!par.is_empty()).then(|| Arc::new(par))
+}
+
+/// Is the definition built only from numbers, parametrized variables, arithmetic,
+/// `vec` and `uniform`?
+fn parametrizable(e: &Expr, env: &BTreeMap<String, PVal>) -> bool {
+    let mut ok = true;
+    e.walk(&mut |x| match &x.kind {
+        ExprKind::Name(n) => ok &= env.contains_key(n),
+        ExprKind::Call(f, _) => ok &= f == "uniform" || f == "vec",
+        ExprKind::Num(_) | ExprKind::Unary(UnOp::Neg, _) | ExprKind::Binary(..) => {}
+        _ => ok = false,
+    });
+    ok
+}
+
+/// The definition's text with each `uniform(…)`, in order, replaced by its parameter.
+fn relaxed_text(text: &str, ranges: &[String]) -> String {
+    let mut out = String::new();
+    let mut rest = text;
+    for r in ranges {
+        let Some(i) = rest.find("uniform(") else {
+            break;
+        };
+        let mut depth = 0;
+        let end = rest[i..].char_indices().find_map(|(j, c)| {
+            match c {
+                '(' => depth += 1,
+                ')' => depth -= 1,
+                _ => {}
+            }
+            (c == ')' && depth == 0).then_some(i + j + 1)
+        });
+        let Some(end) = end else { break };
+        out.push_str(&rest[..i]);
+        out.push_str(r);
+        rest = &rest[end..];
+    }
+    out.push_str(rest);
+    out
 }
 
 /// The value of a definition; `ranges` collects how its draws are relaxed.
@@ -136,25 +170,13 @@ fn relaxed(
     let one = par.constant(&rug::Rational::from(1));
     let (v, range) = if *lo >= 0 && *hi < 1 {
         let t = par.positive(name)?;
-        (
-            t.div(&one.add(&t))?,
-            format!("{name}/(1 + {name}) with {name} > 0 for uniform({lo}, {hi})"),
-        )
+        (t.div(&one.add(&t))?, format!("{name}/(1 + {name})"))
     } else if *lo >= 0 {
-        (
-            par.positive(name)?,
-            format!("{name} > 0 for uniform({lo}, {hi})"),
-        )
+        (par.positive(name)?, name.to_string())
     } else if *hi <= 0 {
-        (
-            par.positive(name)?.neg(),
-            format!("-{name}, {name} > 0, for uniform({lo}, {hi})"),
-        )
+        (par.positive(name)?.neg(), format!("(-{name})"))
     } else {
-        (
-            par.nonzero(name)?,
-            format!("{name} ≠ 0 for uniform({lo}, {hi})"),
-        )
+        (par.nonzero(name)?, name.to_string())
     };
     ranges.push(range);
     Some(v)

@@ -26,6 +26,12 @@ pub struct ProofInfo {
     pub relations: Vec<String>,
     /// The decisions taken from the domain.
     pub assumptions: Vec<String>,
+    /// Signs proved with the parametrization of the domain (not assumptions).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub proved_signs: Vec<String>,
+    /// That parametrization, when a sign was proved with it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub parametrization: Option<String>,
     /// The steps for the reader: addition-theorem instances, symbols introduced.
     pub notes: Vec<String>,
     /// The cases of the finitely-valued variables ("sa = 1, sc = -1"), if any.
@@ -48,6 +54,8 @@ impl ProofInfo {
             symbols: Vec::new(),
             relations: Vec::new(),
             assumptions: Vec::new(),
+            proved_signs: Vec::new(),
+            parametrization: None,
             notes: Vec::new(),
             cases: Vec::new(),
             terms: 0,

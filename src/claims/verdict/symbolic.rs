@@ -1041,6 +1041,10 @@ fn merge(info: &mut ProofInfo, key: &[String], p: Proof) {
     );
     add(&mut info.relations, p.relations.clone());
     add(&mut info.notes, p.notes.clone());
+    add(&mut info.proved_signs, p.proved_signs.clone());
+    if info.parametrization.is_none() {
+        info.parametrization = p.parametrization.clone();
+    }
     add(
         &mut info.assumptions,
         p.assumptions.iter().map(|a| a.statement.clone()).collect(),
