@@ -2,7 +2,7 @@
 //! times (Newton's method, say) is not expanded by the prover, with the reason; the
 //! same function applied twice is still attempted, and proved where the identity holds.
 
-use super::support::{attempt, controls_only, identity_claim};
+use super::support::{assert_refused, attempt, controls_only, identity_claim};
 
 const DEFINITIONS: &str = r#"
 [[claim]]
@@ -41,14 +41,7 @@ fn catalogue() -> eulertop::claims::catalogue::Catalogue {
 
 #[test]
 fn a_threefold_self_application_is_not_expanded_and_says_why() {
-    let cat = catalogue();
-    let p = attempt(&cat, "t.iter.three");
-    assert!(!p.is_proved());
-    let why = p.reason.unwrap_or_default();
-    assert!(
-        why.contains("iteration") && why.contains("nwt") && why.contains("nwt3"),
-        "{why}"
-    );
+    assert_refused(&catalogue(), "t.iter.three", &["iteration", "nwt", "nwt3"]);
 }
 
 #[test]

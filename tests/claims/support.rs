@@ -32,6 +32,18 @@ pub fn attempt(cat: &Catalogue, id: &str) -> ProofInfo {
     prove(Ctx { cat, claim }, lhs, rhs, false)
 }
 
+/// Asserts that the claim is not proved and that the reason contains every one of
+/// `words`; returns the reason.
+pub fn assert_refused(cat: &Catalogue, id: &str, words: &[&str]) -> String {
+    let p = attempt(cat, id);
+    assert!(!p.is_proved(), "{id} was proved");
+    let why = p.reason.unwrap_or_default();
+    for w in words {
+        assert!(why.contains(w), "{id}: '{w}' is not in the reason: {why}");
+    }
+    why
+}
+
 /// A control identity claim `lhs = rhs` (expected to hold) over the variables `vars`
 /// (TOML pairs such as `["x", "uniform(1, 2)"]`), as catalogue text.
 pub fn identity_claim(id: &str, location: &str, vars: &str, lhs: &str, rhs: &str) -> String {
