@@ -159,15 +159,55 @@ impl Ring {
             }
             return Err(unknown(""));
         };
-        if !self.val_derivative(&p.k, jx)?.num.is_zero() {
-            return Err(unknown(": its modulus varies"));
-        }
         let ds = self.val_derivative(&p.s, jx)?;
         let cd = self.inner.v_mul(&p.c, &p.d)?;
         if cd.num.is_zero() {
             return Err(unknown(": cn dn vanishes"));
         }
-        self.inner.v_div(&ds, &cd)
+        let dk = self.val_derivative(&p.k, jx)?;
+        if dk.num.is_zero() {
+            return self.inner.v_div(&ds, &cd);
+        }
+        // sn(v, k) = s: c d v' + (∂sn/∂k)(v, k) k' = s', with
+        // ∂sn/∂k = −c d Z/(k k'²) + k s c²/k'² and Z = E(am v, k) − k'² v
+        let z = self.opaque_zeta(j, &p)?;
+        let inner = &self.inner;
+        let m = |a: &Val, b: &Val| inner.v_mul(a, b);
+        let one = inner.const_val(&Rational::from(1));
+        let k2 = m(&p.k, &p.k)?;
+        let kp2 = inner.v_add(&one, &k2, true)?;
+        let t1 = inner.v_div(&m(&cd, &z)?, &m(&p.k, &kp2)?)?;
+        let t2 = inner.v_div(&m(&m(&p.k, &p.s)?, &m(&p.c, &p.c)?)?, &kp2)?;
+        let dsdk = inner.v_add(&t2, &t1, true)?;
+        let rhs = inner.v_add(&ds, &m(&dsdk, &dk)?, true)?;
+        self.mark_uncertified("the derivative of an inverse of sn, cn, dn whose modulus varies");
+        inner.v_div(&rhs, &cd)
+    }
+
+    /// The symbol `Z = E(am v, k) − k'² v` of opaque symbol `j` (its values from the
+    /// k-derivative of sn at the symbol's values, as for a base argument).
+    fn opaque_zeta(&self, j: usize, p: &super::ring::Prescription) -> AlgResult<Val> {
+        let known = self.state().opaque_zeta.get(&j).copied();
+        if let Some(z) = known {
+            return Ok(self.var_sym(z).val);
+        }
+        let v = self.var_sym(j).val;
+        let prec = self.precision();
+        let mut values = Vec::new();
+        for i in 0..self.points() {
+            if !v.sh.is_real_at(i, prec) || !p.k.sh.is_real_at(i, prec) {
+                return Err(AlgebraError::Derivative(
+                    "in the modulus at a complex argument".into(),
+                ));
+            }
+            values.push(zeta_value(&v.sh, &p.k.sh, i, prec)?);
+        }
+        let name = format!("Z_{}", self.state().vars[j].name);
+        let z = self
+            .inner
+            .add_var(name, VarKind::Opaque { constant: false }, values)?;
+        self.state().opaque_zeta.insert(j, z);
+        Ok(self.var_sym(z).val)
     }
 
     /// Is field variable `j` one of the parameters of the declared coordinates?

@@ -75,7 +75,9 @@
 //!   they get a root of their own, and such towers may have zero divisors (a non-zero
 //!   normal form then proves nothing, as always).
 //! * Half periods: multiples of `K/2` and `iK'/2` only; the derivative of `K(k)` in a
-//!   varying modulus is refused (it would need `E(k)`).
+//!   varying modulus is refused (it would need `E(k)`).  The derivative of an inverse of
+//!   sn, cn, dn in a varying modulus takes one more symbol `Z = E(am v, k) − k'²v` per
+//!   inverse; such a proof has no certificate (the format does not record that rule).
 //! * Decisions from the shadows are assumptions of the proof.  A claim whose statement
 //!   *is* such a condition (an inequality, an indicator) is proved only with
 //!   [`RingOptions::strict_signs`]: every sign is then proved by [`positivity`] (a
@@ -121,6 +123,7 @@ mod ring;
 pub mod roots;
 mod scalar;
 pub mod shadow;
+pub mod split;
 mod square_classes;
 mod sym;
 mod symbols;

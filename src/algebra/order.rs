@@ -54,6 +54,10 @@ impl Sym {
                 ))
             })?;
             if sign != 0 && s != sign {
+                if ring.state().undecided.is_none() {
+                    let split = self.split();
+                    ring.state().undecided = split;
+                }
                 return Err(AlgebraError::CannotDecide(format!(
                     "the sign of {what}: it differs between domain points"
                 )));

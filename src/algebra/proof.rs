@@ -47,8 +47,14 @@ pub struct Proof {
     pub attempts: usize,
     /// Whether named quantities had to be replaced by their definitions.
     pub expanded_named: bool,
+    /// The steps the certificate format does not record (a proof with one has no
+    /// certificate).
+    pub uncertified: Vec<String>,
     /// The certificate, when the ring recorded derivations.
     pub certificate: Option<String>,
+    /// The first sign that differed between domain points, by which the domain can be
+    /// split (see [`super::split`]).
+    pub split: Option<super::split::SignSplit>,
     /// The elliptic base arguments of the last attempt, as hints for a related proof
     /// (another case of the same claim).
     pub base_hints: Vec<BaseHint>,
@@ -73,8 +79,10 @@ impl Proof {
             ms,
             attempts,
             expanded_named: false,
+            uncertified: Vec::new(),
             certificate: None,
             base_hints: Vec::new(),
+            split: None,
         }
     }
 }
@@ -111,6 +119,7 @@ impl Ring {
             Outcome::Proved => self.certificate(pairs, "lhs = rhs"),
             Outcome::NotProved(_) => None,
         };
+        let uncertified = self.state().uncertified.clone();
         Proof {
             outcome,
             symbols: self.symbols(),
@@ -123,8 +132,10 @@ impl Ring {
             ms: t0.elapsed().as_secs_f64() * 1e3,
             attempts: 1,
             expanded_named: self.options().expand_named,
+            uncertified,
             certificate,
             base_hints: self.options().base_hints.clone(),
+            split: self.undecided_sign(),
         }
     }
 
@@ -287,7 +298,11 @@ where
         }
         let pairs = match built {
             Ok(p) => p,
-            Err(e) => return Proof::failed(e.to_string(), ms(&t0), attempts),
+            Err(e) => {
+                let mut p = Proof::failed(e.to_string(), ms(&t0), attempts);
+                p.split = ring.undecided_sign();
+                return p;
+            }
         };
         let mut proof = ring.prove_all(&pairs);
         let named = ring

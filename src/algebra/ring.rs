@@ -212,6 +212,11 @@ pub(crate) struct State {
     pub prescribed: Vec<Prescription>,
     /// The arguments of opaque calls, by the field variable of the call's symbol.
     pub opaque_args: std::collections::BTreeMap<usize, (String, Vec<Stored>)>,
+    /// The symbol `Z = E(am v, k) − k'² v` of an opaque symbol `v` with prescribed sn, cn,
+    /// dn, by the field variable of `v` (for its derivative when the modulus varies).
+    pub opaque_zeta: std::collections::BTreeMap<usize, usize>,
+    /// The first sign that differed between domain points (module [`super::split`]).
+    pub undecided: Option<super::split::SignSplit>,
     /// The change of variables of a parametrization, for derivatives.
     pub coordinates: Option<Coordinates>,
 }
@@ -277,6 +282,8 @@ impl Ring {
             prescribed: Vec::new(),
             capacity_hit: false,
             opaque_args: std::collections::BTreeMap::new(),
+            opaque_zeta: std::collections::BTreeMap::new(),
+            undecided: None,
         };
         Ring {
             inner: Arc::new(Inner {

@@ -98,7 +98,10 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         .map_err(write_error("standard output"))?;
     if let (Some(path), None, true) = (&args.certificate, &p.certificate, p.is_proved()) {
         // proved, but a step recorded no derivation: say so rather than write nothing
-        eprintln!("eulertop: no certificate written to {path}: a step of this proof records no derivation in the certificate format (such as the inverse of sn, cn, dn without an equivalent argument)");
+        eprintln!(
+            "eulertop: no certificate written to {path}: the certificate format does not record {}",
+            p.uncertified.join("; ")
+        );
         return Ok(1);
     }
     Ok(i32::from(!p.is_proved()))

@@ -483,3 +483,47 @@ fn after_the_first_error_the_operators_stop_and_the_error_stays() {
     assert_eq!(r.error().map(|e| e.to_string()), Some(first.to_string()));
     assert!(!r.prove(&(x.clone() * y.clone()), &(y * x)).is_proved());
 }
+
+#[test]
+fn the_inverse_of_sn_in_a_varying_modulus_differentiates_as_the_inverse_function() {
+    // v = F(asin x, k), the inverse of sn: sn(v, k) = x, cn v = √(1 − x²),
+    // dn v = √(1 − k²x²).  Its derivatives in x and in k (through the symbol
+    // Z = E(am v, k) − k'²v) must agree with central differences of F at the points.
+    use eulertop::special::ellipf;
+    let (xs, ks) = ([0.3, 0.6], [0.5, 0.8]);
+    let ring = Ring::new(RingOptions {
+        points: 2,
+        ..Default::default()
+    });
+    let x = ring.indeterminate_f64("x", &xs).unwrap();
+    let k = ring.indeterminate_f64("k", &ks).unwrap();
+    let f = |x: f64, k: f64| ellipf(&x.asin(), &k).unwrap();
+    let values: Vec<Complex> = (0..2)
+        .map(|i| Complex::with_val(256, (f(xs[i], ks[i]), 0)))
+        .collect();
+    let v = ring.opaque("v", &values, false).unwrap();
+    let one = ring.integer(1);
+    let c = (one.clone() - x.clone() * x.clone()).sqrt().unwrap();
+    let d = (one - k.clone() * k.clone() * x.clone() * x.clone())
+        .sqrt()
+        .unwrap();
+    ring.prescribe_sncndn(&v, &k, &x, &c, &d, "v = F(asin x, k)")
+        .unwrap();
+    let (dvdx, dvdk) = (v.derivative(&x).unwrap(), v.derivative(&k).unwrap());
+    let h = 1e-6;
+    for i in 0..2 {
+        let fx = (f(xs[i] + h, ks[i]) - f(xs[i] - h, ks[i])) / (2.0 * h);
+        let fk = (f(xs[i], ks[i] + h) - f(xs[i], ks[i] - h)) / (2.0 * h);
+        let got = |s: &Sym| s.shadow(i).real().to_f64();
+        assert!(
+            (got(&dvdx) - fx).abs() < 1e-7,
+            "dv/dx {} vs {fx}",
+            got(&dvdx)
+        );
+        assert!(
+            (got(&dvdk) - fk).abs() < 1e-7,
+            "dv/dk {} vs {fk}",
+            got(&dvdk)
+        );
+    }
+}

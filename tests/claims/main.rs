@@ -12,5 +12,6 @@ mod lemmas;
 mod partials;
 mod proof_hints;
 mod sign_cases;
+mod splits;
 mod support;
 mod verdict_rules;

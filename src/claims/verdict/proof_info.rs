@@ -40,6 +40,10 @@ pub struct ProofInfo {
     pub terms: usize,
     /// Wall time in milliseconds.
     pub ms: f64,
+    /// The steps the certificate format does not record, when the proof has any (it then
+    /// has no certificate).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub uncertified: Vec<String>,
     /// The certificate (SymPy-recheckable), when requested.
     #[serde(skip)]
     pub certificate: Option<String>,
@@ -60,6 +64,7 @@ impl ProofInfo {
             cases: Vec::new(),
             terms: 0,
             ms: 0.0,
+            uncertified: Vec::new(),
             certificate: None,
         }
     }

@@ -70,13 +70,13 @@ use std::time::Instant;
 /// taken for constant only when every point falls on one side (for an even split,
 /// probability 2⁻⁴ with five points; with eight points no verdict of the catalogue
 /// changes, and the run takes 10 % longer).
-const POINTS: usize = 5;
+pub(super) const POINTS: usize = 5;
 /// Draws spent looking for points of every case.
-const MAX_DRAWS: usize = 256;
+pub(super) const MAX_DRAWS: usize = 256;
 
 /// How a sampled variable enters the proof.
 #[derive(Clone, Debug, PartialEq)]
-enum Role {
+pub(super) enum Role {
     /// An indeterminate (per component).
     Free,
     /// Finitely many values, enumerated as cases.
@@ -264,15 +264,7 @@ fn case_points(ctx: Ctx<'_>, roles: &[(String, (Role, usize))]) -> Result<Cases,
     let mut cases = Cases::new();
     for _ in 0..MAX_DRAWS {
         let p = sampler.draw()?;
-        let key: Vec<String> = case_vars
-            .iter()
-            .map(|n| {
-                let v = p
-                    .get(n)
-                    .map_or(String::new(), |v| v.render(17, Layout::Inline));
-                format!("{n} = {v}")
-            })
-            .collect();
+        let key = case_key(&p, &case_vars);
         let group = cases.entry(key).or_default();
         if group.len() < POINTS {
             group.push(p);
@@ -295,6 +287,18 @@ fn case_points(ctx: Ctx<'_>, roles: &[(String, (Role, usize))]) -> Result<Cases,
         ));
     }
     Ok(cases)
+}
+
+/// The case of a point: the values of the case variables.
+pub(super) fn case_key(p: &Point, case_vars: &[&String]) -> Vec<String> {
+    (case_vars.iter())
+        .map(|n| {
+            let v = p
+                .get(n)
+                .map_or(String::new(), |v| v.render(17, Layout::Inline));
+            format!("{n} = {v}")
+        })
+        .collect()
 }
 
 /// The shadow values of one scalar component across the points.
@@ -824,7 +828,7 @@ fn stated_value(
 
 /// One case: the zero test of every component (the prover restarts when the elliptic
 /// bases must be refined, and expands named quantities if the first test is not 0).
-fn prove_case(
+pub(super) fn prove_case(
     ctx: Ctx<'_>,
     roles: &[(String, Role, &PExpr)],
     points: &[Point],
@@ -871,9 +875,9 @@ fn prove_case(
 
 /// How the proof decides signs: the domain's parametrization, and whether every sign
 /// must be proved with it (a claim that states a condition).
-struct Signs {
+pub(super) struct Signs {
     positivity: Option<std::sync::Arc<crate::algebra::positivity::Parametrization>>,
-    strict: bool,
+    pub(super) strict: bool,
 }
 
 /// Attempts a symbolic proof of `lhs = rhs` on the claim's domain.
@@ -925,20 +929,27 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
     info.reason = None;
     info.method = ProofMethod::Symbolic;
     let mut hints = Vec::new();
+    let input = super::split::CaseInput {
+        ctx,
+        roles: &roles,
+        sides: (lhs, rhs),
+        certificate,
+        signs: &signs,
+    };
     for (key, points) in &cases {
         // the cases differ in signs only: the bases that served one serve the next
-        let p = prove_case(
-            ctx,
-            &roles,
-            points,
-            (lhs, rhs),
-            (certificate, &signs),
-            hints,
-        );
-        hints = p.base_hints.clone();
-        merge(&mut info, key, p);
-        if !info.is_proved() {
-            break;
+        match super::split::prove_parts(&input, key, points.clone(), hints.clone()) {
+            Ok(parts) => {
+                for (label, p) in parts {
+                    hints = p.base_hints.clone();
+                    merge(&mut info, &label, p);
+                }
+            }
+            Err(part) => {
+                let (label, p) = *part;
+                merge(&mut info, &label, p);
+                break;
+            }
         }
     }
     info.ms = t0.elapsed().as_secs_f64() * 1e3;
@@ -1042,6 +1053,7 @@ fn merge(info: &mut ProofInfo, key: &[String], p: Proof) {
     add(&mut info.relations, p.relations.clone());
     add(&mut info.notes, p.notes.clone());
     add(&mut info.proved_signs, p.proved_signs.clone());
+    add(&mut info.uncertified, p.uncertified.clone());
     if info.parametrization.is_none() {
         info.parametrization = p.parametrization.clone();
     }

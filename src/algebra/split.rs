@@ -1,0 +1,111 @@
+//! A sign that differs between domain points, kept so that a prover can split the
+//! domain by it and prove each part on its own (`X > 0` and `X < 0`).
+//!
+//! Only a value of the claim's indeterminates can serve: the parts must be drawn anew,
+//! so the sign must be computable at any point from the point's values alone.
+//!
+//! ```
+//! use eulertop::algebra::{Ring, RingOptions};
+//! let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
+//! let x = ring.indeterminate_f64("x", &[1.0, -1.0]).unwrap();
+//! assert!(x.sign().is_err()); // +1 at one point, −1 at the other
+//! let split = ring.undecided_sign().unwrap();
+//! assert_eq!(split.sign_at(&|n: &str| (n == "x").then_some(-0.5)), Some(-1));
+//! ```
+
+use super::flint::Poly;
+use super::ring::{Ring, VarKind};
+use super::sym::Sym;
+use rug::ops::Pow;
+use rug::Float;
+
+/// A rational function of the claim's indeterminates whose sign is not constant on the
+/// domain.
+#[derive(Clone, Debug)]
+pub struct SignSplit {
+    /// The value as the prover renders it.
+    pub what: String,
+    num: Poly,
+    den: Poly,
+    /// The names of the context's variables (indeterminates by name, others empty).
+    names: Vec<String>,
+}
+
+/// Precision of the evaluation of a split's sign at a point.
+const PREC: u32 = 128;
+
+impl SignSplit {
+    /// The sign at a point given by the values of the indeterminates; `None` when a
+    /// value is missing or the value is too close to 0 to tell.
+    pub fn sign_at(&self, value: &dyn Fn(&str) -> Option<f64>) -> Option<i32> {
+        let n = self.eval(&self.num, value)?;
+        let d = self.eval(&self.den, value)?;
+        let (sn, sd) = (n.0.cmp0()?, d.0.cmp0()?);
+        // a value within rounding of 0 does not tell its side
+        if n.0.clone().abs() <= n.1 || d.0.clone().abs() <= d.1 {
+            return None;
+        }
+        let s = |o: std::cmp::Ordering| o as i32;
+        Some(s(sn) * s(sd))
+    }
+
+    /// The value of a polynomial and a bound on its rounding error.
+    fn eval(&self, p: &Poly, value: &dyn Fn(&str) -> Option<f64>) -> Option<(Float, Float)> {
+        let mut sum = Float::new(PREC);
+        let mut size = Float::new(PREC);
+        let mut missing = false;
+        p.for_each_term(|c, e| {
+            let mut t = Float::with_val(PREC, c);
+            for (i, &k) in e.iter().enumerate() {
+                if k > 0 {
+                    match self
+                        .names
+                        .get(i)
+                        .filter(|n| !n.is_empty())
+                        .and_then(|n| value(n))
+                    {
+                        Some(x) => t *= Float::with_val(PREC, x).pow(k as u32),
+                        None => missing = true,
+                    }
+                }
+            }
+            size += t.clone().abs();
+            sum += t;
+        });
+        if missing {
+            return None;
+        }
+        Some((sum, size >> (PREC as i32 - 16)))
+    }
+}
+
+impl Sym {
+    /// The split of the domain by this value's sign, when the value depends on the
+    /// claim's indeterminates only.
+    pub(crate) fn split(&self) -> Option<SignSplit> {
+        let inner = &self.ring.inner;
+        let st = self.ring.state();
+        let mut names = vec![String::new(); inner.ctx.nvars()];
+        for (j, v) in st.vars.iter().enumerate() {
+            if matches!(v.kind, VarKind::Indeterminate) {
+                names[inner.kvar(j)] = v.name.clone();
+            }
+        }
+        drop(st);
+        let known = |p: &Poly| p.used_vars().iter().all(|&i| !names[i].is_empty());
+        (known(&self.val.num) && known(&self.val.den)).then(|| SignSplit {
+            what: self.render_short(160),
+            num: self.val.num.clone(),
+            den: self.val.den.clone(),
+            names,
+        })
+    }
+}
+
+impl Ring {
+    /// The first sign that differed between domain points in this ring, when it can
+    /// split the domain (see [`SignSplit`]).
+    pub fn undecided_sign(&self) -> Option<SignSplit> {
+        self.state().undecided.clone()
+    }
+}

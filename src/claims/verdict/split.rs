@@ -1,0 +1,128 @@
+//! Proofs by parts of the domain: when a sign that the proof must decide differs
+//! between domain points (the regime `E/M² ≷ 1/B` of a point of phase space, say), the
+//! case is split by that sign, each part is drawn afresh and proved on its own, and the
+//! claim is proved when every part is.  The parts cover the domain except where the
+//! sign's value is 0.  At most [`MAX_SPLITS`] nested splits per case; a claim that
+//! states a condition is not split (its signs must be proved, never assumed per part).
+
+use super::context::Ctx;
+use super::symbolic::{case_key, prove_case, Role, Signs, MAX_DRAWS, POINTS};
+use crate::algebra::split::SignSplit;
+use crate::algebra::{BaseHint, Proof};
+use crate::claims::catalogue::PExpr;
+use crate::claims::sampler::{Point, Stream};
+use crate::claims::value::Value;
+
+/// The most nested splits of one case.
+const MAX_SPLITS: usize = 3;
+
+/// A part of the domain with its proof: the labels of its case and of its signs.
+pub(super) type Part = (Vec<String>, Proof);
+
+/// What a case's parts are proved from.
+pub(super) struct CaseInput<'a, 'c> {
+    pub ctx: Ctx<'c>,
+    pub roles: &'a [(String, Role, &'c PExpr)],
+    pub sides: (&'a PExpr, &'a PExpr),
+    pub certificate: bool,
+    pub signs: &'a Signs,
+}
+
+/// Proves one case, splitting it by signs that differ between its points; `Ok` with
+/// every part when all are proved, else the first part that is not (boxed: a proof is
+/// large).
+pub(super) fn prove_parts(
+    input: &CaseInput<'_, '_>,
+    case: &[String],
+    points: Vec<Point>,
+    hints: Vec<BaseHint>,
+) -> Result<Vec<Part>, Box<Part>> {
+    parts(input, case, case.to_vec(), points, hints, &[])
+}
+
+fn parts(
+    input: &CaseInput<'_, '_>,
+    case: &[String],
+    label: Vec<String>,
+    points: Vec<Point>,
+    hints: Vec<BaseHint>,
+    conds: &[(SignSplit, i32)],
+) -> Result<Vec<Part>, Box<Part>> {
+    let ctx = input.ctx;
+    let p = prove_case(
+        ctx,
+        input.roles,
+        &points,
+        input.sides,
+        (input.certificate, input.signs),
+        hints.clone(),
+    );
+    if p.is_proved() {
+        return Ok(vec![(label, p)]);
+    }
+    let split = match &p.split {
+        Some(s) if conds.len() < MAX_SPLITS && !input.signs.strict => s.clone(),
+        _ => return Err(Box::new((label, p))),
+    };
+    let mut out = Vec::new();
+    for sign in [1, -1] {
+        let mut c = conds.to_vec();
+        c.push((split.clone(), sign));
+        let Ok(pts) = draw(input, case, &c) else {
+            return Err(Box::new((label, p)));
+        };
+        let mut l = label.clone();
+        l.push(format!(
+            "{} {} 0",
+            split.what,
+            if sign > 0 { ">" } else { "<" }
+        ));
+        out.extend(parts(input, case, l, pts, hints.clone(), &c)?);
+    }
+    Ok(out)
+}
+
+/// [`POINTS`] points of the case on which every sign condition holds.
+fn draw(
+    input: &CaseInput<'_, '_>,
+    case: &[String],
+    conds: &[(SignSplit, i32)],
+) -> Result<Vec<Point>, String> {
+    let mut sampler = input
+        .ctx
+        .sampler(Stream::Proof)
+        .map_err(|c| c.to_string())?;
+    let case_vars: Vec<&String> = (input.roles.iter())
+        .filter(|(_, r, _)| *r == Role::Case)
+        .map(|(n, _, _)| n)
+        .collect();
+    let mut out = Vec::new();
+    for _ in 0..MAX_DRAWS * 4 {
+        let p = sampler.draw()?;
+        if case_key(&p, &case_vars) != case {
+            continue;
+        }
+        let on = |n: &str| value_of(&p, n);
+        if conds.iter().all(|(c, s)| c.sign_at(&on) == Some(*s)) {
+            out.push(p);
+            if out.len() >= POINTS {
+                return Ok(out);
+            }
+        }
+    }
+    Err("too few points on a part of the domain".into())
+}
+
+/// The value of an indeterminate at a point: a real variable, or a component `M2` of a
+/// vector variable `M`.
+fn value_of(p: &Point, name: &str) -> Option<f64> {
+    if let Some(Value::Real(x)) = p.get(name) {
+        return Some(*x);
+    }
+    let (head, last) = name.split_at(name.len().checked_sub(1)?);
+    let j: usize = last.parse().ok()?;
+    match p.get(head) {
+        Some(Value::Vec3(v)) if (1..=3).contains(&j) => Some(*v.get(j - 1)),
+        _ => None,
+    }
+}
