@@ -33,7 +33,7 @@ impl Sym {
         if ring.options().strict_signs {
             return self.proved_sign().ok_or_else(|| self.unproved_sign());
         }
-        if let Some(s) = self.proved_sign() {
+        if let Some(s) = self.proved_sign().or_else(|| self.hypothesis_sign()) {
             return Ok(s);
         }
         let prec = ring.precision();
@@ -54,10 +54,7 @@ impl Sym {
                 ))
             })?;
             if sign != 0 && s != sign {
-                if ring.state().undecided.is_none() {
-                    let split = self.split();
-                    ring.state().undecided = split;
-                }
+                ring.note_undecided(self);
                 return Err(AlgebraError::CannotDecide(format!(
                     "the sign of {what}: it differs between domain points"
                 )));

@@ -46,6 +46,9 @@ pub struct RingOptions {
     /// Every sign and every comparison must be proved with [`RingOptions::positivity`],
     /// never taken at domain points: for a claim whose statement is a condition.
     pub strict_signs: bool,
+    /// The signs that define the part of the domain the proof is on (module
+    /// [`super::split`]): a value equal to one of them, or to its negative, has that sign.
+    pub hypotheses: Vec<(super::split::SignSplit, i32)>,
 }
 
 /// The largest numerator plus denominator, in terms, that the prover works with at
@@ -68,6 +71,7 @@ impl Default for RingOptions {
             base_hints: Vec::new(),
             positivity: None,
             strict_signs: false,
+            hypotheses: Vec::new(),
         }
     }
 }

@@ -167,12 +167,18 @@ impl Scalar for Sym {
         if let Some(q) = self.as_rational() {
             return Ok(if q < 0 { -1 } else { 1 });
         }
+        if let Some(s) = self.hypothesis_sign() {
+            return Ok(s);
+        }
         match self.proved_sign() {
             Some(s) => Ok(s),
-            None => Err(format!(
+            None => Err({
+                self.ring.note_undecided(self);
+                format!(
                 "the sign of {} is neither exact nor proved on the domain: sign and abs in a claim's formulas are decided only exactly (a sign taken at domain points would be the condition the formula states)",
                 self.render_short(80)
-            )),
+            )
+            }),
         }
     }
     fn test_zero(&self) -> bool {

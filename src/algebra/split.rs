@@ -23,8 +23,10 @@ use rug::Float;
 /// domain.
 #[derive(Clone, Debug)]
 pub struct SignSplit {
-    /// The value as the prover renders it.
+    /// The value as the prover renders it (cut to a readable length).
     pub what: String,
+    /// The whole rendering, by which a later ring recognises the value.
+    text: String,
     num: Poly,
     den: Poly,
     /// The names of the context's variables (indeterminates by name, others empty).
@@ -95,6 +97,7 @@ impl Sym {
         let known = |p: &Poly| p.used_vars().iter().all(|&i| !names[i].is_empty());
         (known(&self.val.num) && known(&self.val.den)).then(|| SignSplit {
             what: self.render_short(160),
+            text: self.render(),
             num: self.val.num.clone(),
             den: self.val.den.clone(),
             names,
@@ -107,5 +110,35 @@ impl Ring {
     /// split the domain (see [`SignSplit`]).
     pub fn undecided_sign(&self) -> Option<SignSplit> {
         self.state().undecided.clone()
+    }
+
+    /// Remembers the first undecided sign of the ring, when it can split the domain.
+    pub(crate) fn note_undecided(&self, x: &Sym) {
+        if self.state().undecided.is_none() {
+            let split = x.split();
+            self.state().undecided = split;
+        }
+    }
+}
+
+impl Sym {
+    /// The sign of this value by a hypothesis of the ring (the condition of the part of
+    /// the domain the proof is on, [`super::RingOptions::hypotheses`]).
+    pub(crate) fn hypothesis_sign(&self) -> Option<i32> {
+        let hyps = &self.ring.options().hypotheses;
+        if hyps.is_empty() {
+            return None;
+        }
+        let text = self.render();
+        let neg = self.negate().render();
+        hyps.iter().find_map(|(h, s)| {
+            if h.text == text {
+                Some(*s)
+            } else if h.text == neg {
+                Some(-*s)
+            } else {
+                None
+            }
+        })
     }
 }

@@ -56,6 +56,7 @@ fn parts(
         input.sides,
         (input.certificate, input.signs),
         hints.clone(),
+        conds,
     );
     if p.is_proved() {
         return Ok(vec![(label, p)]);

@@ -835,6 +835,7 @@ pub(super) fn prove_case(
     sides_of: (&PExpr, &PExpr),
     (certificate, signs): (bool, &Signs),
     base_hints: Vec<BaseHint>,
+    hypotheses: &[(crate::algebra::split::SignSplit, i32)],
 ) -> Proof {
     let opts = RingOptions {
         points: points.len(),
@@ -842,6 +843,7 @@ pub(super) fn prove_case(
         base_hints,
         positivity: signs.positivity.clone(),
         strict_signs: signs.strict,
+        hypotheses: hypotheses.to_vec(),
         ..RingOptions::default()
     };
     let hint = ctx.claim.hint.as_ref();
@@ -1008,7 +1010,7 @@ fn prove_signs_jointly(
             (n.clone(), r, *p)
         })
         .collect();
-    let p = prove_case(ctx, &joint, &points, sides, certificate, Vec::new());
+    let p = prove_case(ctx, &joint, &points, sides, certificate, Vec::new(), &[]);
     if !matches!(p.outcome, Outcome::Proved) {
         return None;
     }
