@@ -155,6 +155,10 @@ impl Ring {
         for (a, b) in claims {
             let _ = writeln!(out, "claim t{a} = t{b}");
         }
+        for (h, s) in &self.inner.opts.hypotheses {
+            let rel = if *s > 0 { ">" } else { "<" };
+            let _ = writeln!(out, "# part of the domain (hypothesis): {} {rel} 0", h.what);
+        }
         for a in self.assumptions() {
             let _ = writeln!(out, "# assumption ({:?}): {}", a.origin, a.statement);
         }
