@@ -23,6 +23,9 @@ This script:
     of the bases: sn, cn, dn of that argument are recomputed and must equal the values, so
     the symbol equals the argument modulo 4K, and it is replaced by it inside sn, cn, dn
     (period 4K) before an argument is compared with its combination;
+  * an `inverse` line gives an opaque symbol v the values s, c, d of its sn, cn, dn at
+    modulus k (s^2 + c^2 = 1 and d^2 + k^2 s^2 = 1 are checked) and, where k varies, the
+    symbol Z = E(am v, k) - k'^2 v; its derivative must satisfy c d v' + (dsn/dk) k' = s';
   * derivatives: recomputed by the chain rule from the `dvar` table, whose entries are
     checked (roots: 2 r r' = a'; sn: s' = c d u' (+ the modulus terms); indeterminates;
     a `param`, a parameter of the proof's chart such as a phase step, has derivative 0
@@ -244,6 +247,7 @@ class Cert:
         self.periods = {}
         self.dvar = {}
         self.equiv = {}  # symbol -> the argument with its sn, cn, dn (equal modulo 4K)
+        self.inverse = {}  # symbol -> its prescribed k, s, c, d and Z symbol (or None)
         self.vals = {}
         self.params = []  # (name, kind) of the domain's parametrization
         self.pring = None
@@ -730,6 +734,24 @@ class Cert:
             self.need(self.eq(got, self.vals[kv[key]]), f"{f} of the argument of {name} is not its prescribed value")
         self.equiv[name] = u
 
+    def inverse_of_sn(self, rest):
+        """inverse NAME k=NF s=NF c=NF d=NF z=Z|none: the symbol NAME stands for an argument
+        with sn = s, cn = c, dn = d at modulus k (the prover's inverse of sn, cn, dn); the
+        values must satisfy s^2 + c^2 = 1 and d^2 + k^2 s^2 = 1; Z names E(am NAME, k) - k'^2 NAME
+        for the derivative in a varying modulus."""
+        name, vals = self.keyed(rest, ["k", "s", "c", "d", "z"])
+        self.need(self.kinds.get(name) == "opaque", f"inverse of {name}, which is not an opaque symbol")
+        k, s, c, d = (self.frac(vals[key]) for key in ("k", "s", "c", "d"))
+        one = self.one
+        self.need(self.eq(self.add(self.mul(s, s), self.mul(c, c)), one), f"{name}: sn^2 + cn^2 != 1")
+        self.need(self.eq(self.add(self.mul(d, d), self.mul(self.mul(k, k), self.mul(s, s))), one),
+                  f"{name}: dn^2 + k^2 sn^2 != 1")
+        z = vals.get("z", "none")
+        if z != "none":
+            self.need(self.kinds.get(z) == "opaque", f"{name}: Z symbol {z} is not declared")
+        self.inverse[name] = (k, s, c, d, None if z == "none" else z)
+        self.checked += 2
+
     # ---- derivatives --------------------------------------------------------------
     def dpoly(self, e, x):
         out = self.zero
@@ -786,6 +808,20 @@ class Cert:
                     part = self.add(self.div(t, kp2), self.mul(k, u))
                 along = self.add(along, self.mul(part, dk))
             self.need(self.eq(val, along), f"d{v}/d{x} is not the derivative of sn/Z")
+        elif kind == "opaque" and v in self.inverse:
+            # sn(v, k) = s: c d v' + (dsn/dk)(v) k' = s', dsn/dk = k s c^2/k'^2 - c d Z/(k k'^2)
+            k, s, c, d, z = self.inverse[v]
+            cd, dk = self.mul(c, d), self.dfrac(k, x)
+            rhs = self.dfrac(s, x)
+            if dk.num:
+                self.need(z is not None, f"{v}: modulus varies but no Z symbol")
+                k2 = self.mul(k, k)
+                kp2 = self.add(one, k2, -1)
+                zf = Frac(self.symbol(z), self.ring.one)
+                part = self.add(self.div(self.mul(self.mul(k, s), self.mul(c, c)), kp2),
+                                self.div(self.mul(cd, zf), self.mul(k, kp2)), -1)
+                rhs = self.add(rhs, self.mul(part, dk), -1)
+            self.need(self.eq(self.mul(cd, val), rhs), f"d{v}/d{x} is not the derivative of the inverse of sn")
         elif kind in ("K", "Kp"):
             self.need(self.eq(val, self.const(0)), f"d{v}/d{x} must be 0")
         elif kind == "param" and v != x:
@@ -867,6 +903,8 @@ class Cert:
             self.node(rest)
         elif word == "equiv":
             self.equivalence(rest)
+        elif word == "inverse":
+            self.inverse_of_sn(rest)
         elif word == "param":
             name, kind = rest.split()
             if (name, kind) not in self.params:  # a later case of the proof repeats them

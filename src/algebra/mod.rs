@@ -77,7 +77,7 @@
 //! * Half periods: multiples of `K/2` and `iK'/2` only; the derivative of `K(k)` in a
 //!   varying modulus is refused (it would need `E(k)`).  The derivative of an inverse of
 //!   sn, cn, dn in a varying modulus takes one more symbol `Z = E(am v, k) − k'²v` per
-//!   inverse; such a proof has no certificate (the format does not record that rule).
+//!   inverse (certificates give it in the inverse's `inverse` line).
 //! * Decisions from the shadows are assumptions of the proof.  A claim whose statement
 //!   *is* such a condition (an inequality, an indicator) is proved only with
 //!   [`RingOptions::strict_signs`]: every sign is then proved by [`positivity`] (a

@@ -144,9 +144,7 @@ impl Sym {
                 d,
                 "the inverse of sn, cn, dn has the given values as its sn, cn, dn (DLMF 22.15.11-12); they satisfy sn^2 + cn^2 = 1 and dn^2 + k^2 sn^2 = 1 identically, and dn > 0",
             )?;
-            if equivalent.is_none() {
-                ring.mark_uncertified("the inverse of sn, cn, dn without an equivalent argument");
-            }
+
             if let Some(u) = equivalent {
                 ring.set_equivalent(&v, &u);
                 ring.note(format!(
