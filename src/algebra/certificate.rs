@@ -177,7 +177,7 @@ impl Ring {
                 .map(|v| v.name.clone())
                 .collect();
             let roots: Vec<String> = (st.roots.iter())
-                .filter(|r| r.values.iter().all(super::positivity::positive_real))
+                .filter(|r| r.is_positive())
                 .map(|r| r.name.clone())
                 .collect();
             (st.proved_signs.clone(), vars, roots)

@@ -32,7 +32,7 @@
 use super::flint::{Ctx, Poly};
 use super::ring::{Ring, VarKind};
 use super::sym::Sym;
-use rug::{Complex, Float, Rational};
+use rug::{Float, Rational};
 use std::collections::BTreeMap;
 use std::sync::Arc;
 
@@ -400,18 +400,27 @@ impl Ring {
     /// and whose values at the domain points are positive.
     fn sign_images<'p>(&self, par: &'p Parametrization, num: &Poly) -> Option<Vec<Image<'p>>> {
         let max_roots = self.inner.opts.max_roots;
+        let used_roots: Vec<usize> = (num.used_vars().into_iter())
+            .filter(|&i| i < max_roots)
+            .map(|i| max_roots - 1 - i)
+            .collect();
+        // only the roots the value uses and those their radicands use, in order
         let (vars, roots) = {
             let st = self.state();
             let vars: Vec<Option<String>> = (st.vars.iter())
                 .map(|v| matches!(v.kind, VarKind::Indeterminate).then(|| v.name.clone()))
                 .collect();
-            let roots: Vec<(Poly, bool, Vec<usize>)> = (st.roots.iter())
-                .map(|r| {
-                    (
-                        r.radicand.clone(),
-                        r.values.iter().all(positive_real),
-                        r.closure.clone(),
-                    )
+            let mut needed: Vec<usize> = (used_roots.iter())
+                .filter_map(|&i| st.roots.get(i))
+                .flat_map(|r| r.closure.iter().copied())
+                .collect();
+            needed.sort_unstable();
+            needed.dedup();
+            let roots: Vec<(usize, Poly, bool)> = (needed.into_iter())
+                .filter_map(|i| {
+                    st.roots
+                        .get(i)
+                        .map(|r| (i, r.radicand.clone(), r.is_positive()))
                 })
                 .collect();
             (vars, roots)
@@ -424,20 +433,8 @@ impl Ring {
                 }
             }
         }
-        let mut needed: Vec<usize> = (num.used_vars().into_iter())
-            .filter(|&i| i < max_roots)
-            .flat_map(|i| {
-                roots
-                    .get(max_roots - 1 - i)
-                    .map(|r| r.2.clone())
-                    .unwrap_or_default()
-            })
-            .collect();
-        needed.sort_unstable();
-        needed.dedup();
-        for i in needed {
-            let (radicand, positive, _) = roots.get(i)?;
-            if *positive && par.poly_sign(radicand, &images) == Some(1) {
+        for (i, radicand, positive) in roots {
+            if positive && par.poly_sign(&radicand, &images) == Some(1) {
                 images[max_roots - 1 - i] = Image::Root(i);
             }
         }
@@ -445,10 +442,16 @@ impl Ring {
     }
 }
 
-/// Is a shadow value a positive real number?
-pub(crate) fn positive_real(z: &Complex) -> bool {
-    let (re, im) = (z.real(), z.imag());
-    *re > 0 && (im.is_zero() || Float::with_val(64, im.abs_ref()) < Float::with_val(64, re) >> 100)
+impl super::ring::RootInfo {
+    /// Is the root positive at every domain point (a positive real value at each)?
+    pub(crate) fn is_positive(&self) -> bool {
+        self.values.iter().all(|z| {
+            let (re, im) = (z.real(), z.imag());
+            *re > 0
+                && (im.is_zero()
+                    || Float::with_val(64, im.abs_ref()) < Float::with_val(64, re) >> 100)
+        })
+    }
 }
 
 #[cfg(test)]
