@@ -23,6 +23,8 @@ fn fresh_k(i: usize) -> f64 {
 }
 
 fn main() {
+    // GMP's kernels for this processor, before any other thread runs
+    eulertop::numbers::gmp_kernels::select();
     let a: Vec<String> = std::env::args().collect();
     let arg = |i: usize, d: usize| a.get(i).and_then(|s| s.parse().ok()).unwrap_or(d);
     let (bits, n, reps) = (arg(1, 53) as u32, arg(2, 1000), arg(3, 5).max(1));

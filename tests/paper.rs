@@ -85,6 +85,8 @@ fn check_environments(cat: &Catalogue) -> Result<(), Failed> {
 
 fn main() {
     let args = Arguments::from_args();
+    // GMP's kernels for this processor, before any other thread runs
+    eulertop::numbers::gmp_kernels::select();
     let cat = match load_dir(
         Path::new("identities"),
         eulertop::bindings::euler_top::registry().expect("the model's registry"),

@@ -26,6 +26,7 @@
 mod complex;
 mod dual;
 mod float64;
+pub mod gmp_kernels;
 mod mpfr;
 mod rational;
 
