@@ -700,13 +700,20 @@ class Cert:
                 arg = self.add(arg, self.mul(half, self.mul(self.const(hk), p["K"])))
             if hkp:
                 arg = self.add(arg, self.mul(half, self.mul(self.const(hkp), self.mul(p["i"], p["Kp"]))))
-        self.need(self.eq(arg, self.substitute_equivalents(argv)), "argument is not the stated combination of the bases")
+        argv, factor = self.substitute_equivalents(argv)
+        self.need(self.eq(arg, argv), "argument is not the stated combination of the bases")
+        if factor is not None:
+            trip = [self.mul(factor, trip[0]), self.mul(factor, trip[1]), trip[2]]
         return trip[["sn", "cn", "dn"].index(f)]
 
     def substitute_equivalents(self, v):
         """v with every symbol of an `equiv` line replaced by its argument (inside sn, cn,
-        dn only: they have the period 4K, and the symbol equals the argument modulo 4K)."""
-        for name, u in self.equiv.items():
+        dn only: they have the period 4K, and the symbol equals the argument modulo 4K),
+        and the factor (or None) that sn and cn take on: a symbol equal to its argument
+        plus (1 - sigma)K for a sign sigma (sigma**2 = 1) enters with an integer
+        coefficient q only, and contributes sigma**q (sn, cn change sign under 2K)."""
+        factor = None
+        for name, (u, sign) in self.equiv.items():
             g = self.syms[name]
             if v.num.degree(g) <= 0 and v.den.degree(g) <= 0:
                 continue
@@ -714,7 +721,19 @@ class Cert:
             coeff = Frac(v.num.coeff_wrt(g, 1), v.den)
             rest = Frac(v.num.coeff_wrt(g, 0), v.den)
             v = self.add(rest, self.mul(coeff, u))
-        return v
+            if sign is not None:
+                q = self.integer_of(coeff)
+                self.need(q is not None, f"{name} (equal to its argument up to a sign) enters with a coefficient that is not an integer")
+                if q % 2:
+                    factor = sign if factor is None else self.mul(factor, sign)
+        return v, factor
+
+    def integer_of(self, x):
+        """The integer that the value x is, or None."""
+        if not (x.num.is_ground and x.den.is_ground):
+            return None
+        n, d = int(x.num.LC if x.num else 0), int(x.den.LC)
+        return n // d if d != 0 and n % d == 0 else None
 
     def equivalence(self, rest):
         """equiv NAME s=tA c=tB d=tC table T combo C halfK h halfiKp q arg=NF: sn, cn, dn of
@@ -722,8 +741,14 @@ class Cert:
         prover prescribed for the symbol NAME (the inverse of sn, cn, dn): so NAME equals the
         argument modulo 4K."""
         head, argtext = rest.split(" arg=", 1)
+        sign = None
+        if " sign=" in head:
+            head, signtext = head.split(" sign=", 1)
+            sign = self.frac(signtext)
         toks = head.split()
         name = toks[0]
+        if sign is not None:
+            self.need(self.eq(self.mul(sign, sign), self.one), f"the sign of the equivalent of {name} is not a sign")
         kv = dict(t.split("=", 1) for t in toks[1:4])
         table, combo = toks[5], [c for c in toks[7].split(",") if c]
         hk, hkp = int(toks[9]), int(toks[11])
@@ -731,8 +756,10 @@ class Cert:
         u = self.frac(argtext)
         for f, key in (("sn", "s"), ("cn", "c"), ("dn", "d")):
             got = self.elliptic(f, u, table, combo, hk, hkp)
+            if sign is not None and f != "dn":
+                got = self.mul(sign, got)
             self.need(self.eq(got, self.vals[kv[key]]), f"{f} of the argument of {name} is not its prescribed value")
-        self.equiv[name] = u
+        self.equiv[name] = (u, sign)
 
     def inverse_of_sn(self, rest):
         """inverse NAME k=NF s=NF c=NF d=NF z=Z|none: the symbol NAME stands for an argument

@@ -222,9 +222,14 @@ impl Ring {
                 .map(|(i, n)| format!("b_{}_{}:{n}", t + 1, i + 1))
                 .collect();
             let name = names[self.inner.opts.max_roots + p.var].clone();
+            let sign = p
+                .equiv_sign
+                .as_ref()
+                .map(|g| format!(" sign={}", nf_text(&g.num, &g.den, names)))
+                .unwrap_or_default();
             let _ = writeln!(
                 em.out,
-                "equiv {name} s=t{a} c=t{b} d=t{e} table {} combo {} halfK {hk} halfiKp {hkp} arg={}",
+                "equiv {name} s=t{a} c=t{b} d=t{e} table {} combo {} halfK {hk} halfiKp {hkp}{sign} arg={}",
                 t + 1,
                 combo.join(","),
                 nf_text(&u.num, &u.den, names)

@@ -266,30 +266,45 @@ impl Ring {
 
     /// `val` with every symbol that has an equivalent argument (see
     /// [`Ring::seen_argument_with`]) replaced by it: valid inside sn, cn, dn, which have
-    /// the period 4K.
-    fn with_equivalents(&self, t: usize, val: &Val) -> AlgResult<Val> {
-        let eqs: Vec<(usize, Val)> = self
+    /// the period 4K.  The second value is the product of the signs `σ^q` that sn and cn
+    /// take on for symbols equivalent up to a sign (`None` when there are none).
+    fn with_equivalents(&self, t: usize, val: &Val) -> AlgResult<(Val, Option<Val>)> {
+        type Equivalent = (usize, Val, Option<Val>);
+        let eqs: Vec<Equivalent> = self
             .state()
             .prescribed
             .iter()
-            .filter_map(|p| p.equiv.clone().map(|e| (p.var, e)))
+            .filter_map(|p| p.equiv.clone().map(|e| (p.var, e, p.equiv_sign.clone())))
             .collect();
         if eqs.is_empty() {
-            return Ok(val.clone());
+            return Ok((val.clone(), None));
         }
         let inner = &self.inner;
         let split = self.split(t, val)?;
         let mut out = val.clone();
-        for (var, e) in eqs {
+        let mut factor: Option<Val> = None;
+        for (var, e, sign) in eqs {
             let vs = self.var_sym(var).val;
             for (i, q) in split.vec.iter().enumerate() {
                 if *q != 0 && inner.v_add(&self.dir_val(t, i), &vs, true)?.num.is_zero() {
                     let shift = inner.v_mul(&inner.const_val(q), &inner.v_add(&e, &vs, true)?)?;
                     out = inner.v_add(&out, &shift, false)?;
+                    let Some(sigma) = &sign else { continue };
+                    if !q.is_integer() {
+                        return Err(AlgebraError::NotAlgebraic(
+                            "a fractional multiple of a symbol equal to an argument up to a sign symbol".into(),
+                        ));
+                    }
+                    if q.numer().is_odd() {
+                        factor = Some(match factor {
+                            Some(f) => inner.v_mul(&f, sigma)?,
+                            None => sigma.clone(),
+                        });
+                    }
                 }
             }
         }
-        Ok(out)
+        Ok((out, factor))
     }
 
     /// An argument already seen at modulus `k` whose sn, cn, dn are `s`, `c`, `d` (or
@@ -300,7 +315,7 @@ impl Ring {
         s: &Sym,
         c: &Sym,
         d: &Sym,
-    ) -> AlgResult<Option<Sym>> {
+    ) -> AlgResult<Option<(Sym, Option<Sym>)>> {
         let t = self.table_of(k)?;
         let mut seen: Vec<Vec<Rational>> = Vec::new();
         for v in self.state().tables[t].seen.iter().rev() {
@@ -311,6 +326,7 @@ impl Ring {
                 break;
             }
         }
+        let signs = self.sign_products()?;
         let inner = &self.inner;
         for vec in seen {
             let mut arg = inner.const_val(&Rational::new());
@@ -326,14 +342,41 @@ impl Ring {
                 continue;
             }
             if s.try_sub(&su)?.is_exact_zero() && c.try_sub(&cu)?.is_exact_zero() {
-                return Ok(Some(u));
+                return Ok(Some((u, None)));
             }
             if s.try_add(&su)?.is_exact_zero() && c.try_add(&cu)?.is_exact_zero() {
                 let two_k = self.quarter_period(k)?.try_mul(&self.integer(2))?;
-                return Ok(Some(u.try_add(&two_k)?));
+                return Ok(Some((u.try_add(&two_k)?, None)));
+            }
+            for sigma in &signs {
+                let (ss, cs) = (su.try_mul(sigma)?, cu.try_mul(sigma)?);
+                if s.try_sub(&ss)?.is_exact_zero() && c.try_sub(&cs)?.is_exact_zero() {
+                    return Ok(Some((u, Some(sigma.clone()))));
+                }
             }
         }
         Ok(None)
+    }
+
+    /// The products of the ring's sign symbols (at most four symbols), each with
+    /// either sign, fewest factors first.
+    pub(crate) fn sign_products(&self) -> AlgResult<Vec<Sym>> {
+        let signs = self.sign_symbols();
+        let n = signs.len().min(4);
+        let mut masks: Vec<u32> = (1..1u32 << n).collect();
+        masks.sort_by_key(|m| m.count_ones());
+        let mut out = Vec::with_capacity(2 * masks.len());
+        for mask in masks {
+            let mut prod = self.integer(1);
+            for (j, s) in signs.iter().enumerate().take(n) {
+                if mask & (1 << j) != 0 {
+                    prod = prod.try_mul(s)?;
+                }
+            }
+            out.push(prod.negate());
+            out.push(prod);
+        }
+        Ok(out)
     }
 
     /// The table of modulus `k`, and `u` as a combination of its bases with half-period
@@ -352,10 +395,11 @@ impl Ring {
     }
 
     /// Records that the prescribed symbol `v` equals `u` modulo 4K.
-    pub(crate) fn set_equivalent(&self, v: &Sym, u: &Sym) {
+    pub(crate) fn set_equivalent(&self, v: &Sym, u: &Sym, sign: Option<&Sym>) {
         if let Some(var) = v.as_field_var() {
             for p in self.state().prescribed.iter_mut().filter(|p| p.var == var) {
                 p.equiv = Some(u.val.clone());
+                p.equiv_sign = sign.map(|s| s.val.clone());
             }
         }
     }
@@ -561,6 +605,7 @@ impl Ring {
             what,
             why: why.to_string(),
             equiv: None,
+            equiv_sign: None,
             nodes: match (&s.node, &c.node, &d.node) {
                 (Some(a), Some(b), Some(e)) => Some([a.clone(), b.clone(), e.clone()]),
                 _ => None,
@@ -704,7 +749,7 @@ impl Sym {
             return Err(AlgebraError::RingMismatch);
         }
         let t = ring.table_of(k)?;
-        let arg = ring.with_equivalents(t, &self.val)?;
+        let (arg, sign) = ring.with_equivalents(t, &self.val)?;
         let split = ring.split(t, &arg)?;
         {
             let mut st = ring.state();
@@ -713,7 +758,7 @@ impl Sym {
         }
         let n = ring.coordinates(t, &split.vec)?;
         let tr = super::addition::Triples { ring, t };
-        let v = tr
+        let mut v = tr
             .at(&n, split.half_k, split.half_kp)
             .map_err(|e| match e {
                 AlgebraError::DivisionByZero => {
@@ -721,6 +766,11 @@ impl Sym {
                 }
                 e => e,
             })?;
+        if let Some(sigma) = &sign {
+            // a symbol equal to an argument up to the sign σ: sn, cn carry σ^q
+            v[0] = ring.inner.v_mul(&v[0], sigma)?;
+            v[1] = ring.inner.v_mul(&v[1], sigma)?;
+        }
         let (ns, nc, nd) = ring.numeric_sncndn(&self.val.sh, &k.val.sh)?;
         let prec = ring.precision();
         for (val, num) in v.iter().zip([&ns, &nc, &nd]) {

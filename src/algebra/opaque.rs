@@ -145,13 +145,27 @@ impl Sym {
                 "the inverse of sn, cn, dn has the given values as its sn, cn, dn (DLMF 22.15.11-12); they satisfy sn^2 + cn^2 = 1 and dn^2 + k^2 sn^2 = 1 identically, and dn > 0",
             )?;
 
-            if let Some(u) = equivalent {
-                ring.set_equivalent(&v, &u);
-                ring.note(format!(
-                    "{} has the sn, cn, dn of {}: inside sn, cn, dn (period 4K) it is replaced by that argument",
-                    v.render_short(40),
-                    u.render_short(80)
-                ));
+            match equivalent {
+                Some((u, None)) => {
+                    ring.set_equivalent(&v, &u, None);
+                    ring.note(format!(
+                        "{} has the sn, cn, dn of {}: inside sn, cn, dn (period 4K) it is replaced by that argument",
+                        v.render_short(40),
+                        u.render_short(80)
+                    ));
+                }
+                Some((u, Some(sigma))) => {
+                    ring.set_equivalent(&v, &u, Some(&sigma));
+                    ring.note(format!(
+                        "{} has sn, cn = {} times those of {}, and its dn: it is that argument plus (1 - {})K, so inside sn, cn, dn (period 4K) an integer multiple q of it is replaced by q times the argument, with sn and cn multiplied by ({})^q",
+                        v.render_short(40),
+                        sigma.render_short(20),
+                        u.render_short(80),
+                        sigma.render_short(20),
+                        sigma.render_short(20)
+                    ));
+                }
+                None => {}
             }
         }
         Ok(v)

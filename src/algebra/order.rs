@@ -66,6 +66,59 @@ impl Sym {
         Ok(sign)
     }
 
+    /// The sign of a real value as a value: the constant −1 or 1 where one sign holds on
+    /// the whole domain, and otherwise `±σ`, a product of the ring's sign symbols, where
+    /// the value's sign at every point is that product's there.  The sign of `x·σ`
+    /// (constant on the domain, since `σ² = 1`) is then decided as [`Sym::sign`] decides
+    /// one, proved or recorded as an assumption; the value is `sign(x·σ)·σ`.
+    ///
+    /// ```
+    /// use eulertop::algebra::{Ring, RingOptions};
+    /// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
+    /// let s = ring.sign_symbol_f64("s", &[1.0, -1.0]).unwrap();
+    /// let x = ring.indeterminate_f64("x", &[0.5, 2.0]).unwrap();
+    /// let v = (s.clone() * x.clone()).sign_value().unwrap();
+    /// assert!(ring.prove(&v, &s).is_proved());
+    /// assert!(ring.prove(&x.sign_value().unwrap(), &ring.integer(1)).is_proved());
+    /// ```
+    pub fn sign_value(&self) -> AlgResult<Sym> {
+        let ring = &self.ring;
+        let signs = ring.sign_symbols();
+        let pattern = |v: &Sym| -> Option<Vec<i32>> {
+            let prec = ring.precision();
+            let at = |sh: &super::shadow::Shadow| {
+                (0..ring.points())
+                    .map(|p| sh.real_sign(p, prec))
+                    .collect::<Option<Vec<i32>>>()
+            };
+            at(&v.val.sh).or_else(|| at(&ring.reevaluated(&v.val)))
+        };
+        if !signs.is_empty() && !self.is_exact_zero() && self.as_rational().is_none() {
+            if let Some(own) = pattern(self) {
+                // products of sign symbols, fewest factors first (at most four symbols)
+                let n = signs.len().min(4);
+                let mut masks: Vec<u32> = (1..1u32 << n).collect();
+                masks.sort_by_key(|m| m.count_ones());
+                let constant = own.windows(2).all(|w| w[0] == w[1]);
+                for mask in masks.into_iter().filter(|_| !constant) {
+                    let mut prod = ring.integer(1);
+                    for (j, s) in signs.iter().enumerate().take(n) {
+                        if mask & (1 << j) != 0 {
+                            prod = prod.try_mul(s)?;
+                        }
+                    }
+                    let Some(pp) = pattern(&prod) else { continue };
+                    let ratio: Vec<i32> = own.iter().zip(&pp).map(|(a, b)| a * b).collect();
+                    if ratio.windows(2).all(|w| w[0] == w[1]) {
+                        let s = self.try_mul(&prod)?.sign()?;
+                        return prod.try_mul(&ring.integer(i64::from(s)));
+                    }
+                }
+            }
+        }
+        Ok(ring.integer(i64::from(self.sign()?)))
+    }
+
     /// Decides that a value whose normal form is not 0 is nonzero on the domain: it must
     /// be clearly nonzero at every domain point, and the decision is recorded as an
     /// assumption (`x - 1 ≠ 0`).  A normal form that is not 0 alone proves nothing: an

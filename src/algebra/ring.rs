@@ -164,6 +164,11 @@ pub(crate) struct Prescription {
     /// An argument with the same sn, cn, dn (so equal to the symbol modulo 4K), which
     /// replaces the symbol inside sn, cn, dn.
     pub equiv: Option<Val>,
+    /// A product `σ` of sign symbols when the values are `σ` times sn and cn of `equiv`
+    /// (and its dn): the symbol is `equiv + (1 − σ)K` modulo 4K, and an integer multiple
+    /// `q` of it inside sn, cn, dn is replaced by `q·equiv`, with sn and cn multiplied by
+    /// `σ^q` (DLMF 22.4.3: sn, cn change sign under a shift by 2K, dn does not).
+    pub equiv_sign: Option<Val>,
     /// The derivations of `s`, `c`, `d`, when the ring records them (for certificates).
     pub nodes: Option<[Arc<Node>; 3]>,
 }

@@ -310,6 +310,9 @@ impl Real for Sym {
     fn atanh(&self) -> Self {
         self.not_algebraic("atanh")
     }
+    fn signum_value(&self) -> Self {
+        Sym::or_poison(&self.ring, self.sign_value())
+    }
     fn floor(&self) -> Self {
         match self.as_rational() {
             Some(q) => self.ring.rational(&Rational::from(q.floor_ref())),

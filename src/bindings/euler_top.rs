@@ -25,7 +25,7 @@ use crate::claims::registry::{GenericFunction, Registry, RegistryError};
 use crate::claims::value::Value;
 use crate::linalg::Vec3;
 use crate::model::discretization::{step, Gamma};
-use crate::model::elliptic_coords::{m_to_phi, phi_to_m, Sector};
+use crate::model::elliptic_coords::{m_to_phase, phi_to_m, Sector};
 use crate::model::params::{EllipticParams, Regime};
 use crate::model::phase::delta;
 use crate::model::veselov_moser::{hat, j_diag, omega_matrix, vm_step};
@@ -217,8 +217,8 @@ impl GenericFunction for ModelFn {
             }
             F::EllCoords => {
                 let i = inertia(a, 1)?;
-                let c = m_to_phi(&i, &v3(&a[0])?).map_err(err)?;
-                Ok(Value::Vec3(Vec3::new(c.params.m2, c.params.e, c.phi)))
+                let (p, phi) = m_to_phase(&i, &v3(&a[0])?).map_err(err)?;
+                Ok(Value::Vec3(Vec3::new(p.m2, p.e, phi)))
             }
             F::EllInverse => ell_inverse(a),
             F::StepGamma0 | F::StepGamma1 | F::StepGamma2 | F::StepVm | F::VmOmega => self.step(a),

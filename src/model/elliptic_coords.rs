@@ -134,17 +134,59 @@ pub struct EllCoords<R> {
 /// Upper regime: `(cn φ, sn φ) = (M₁/a, M₂/b)` normalized to the unit circle; lower:
 /// `(cn φ, sn φ) = (M₃/c, M₂/b)`; then `φ` = [`jacobi_inverse`].  Separatrix:
 /// `φ = asinh((M₂/b)/(M₁/a))`.  Errors ([`ModelError::Undefined`]) at `M = 0` and on
-/// the coordinate axes, where `φ` is undefined.
+/// the coordinate axes, where `φ` is undefined.  The phase is [`m_to_phase`]'s.
 pub fn m_to_phi<R: Real>(inertia: &Inertia<R>, m: &Vec3<R>) -> Result<EllCoords<R>, ModelError> {
-    let params = EllipticParams::from_point(inertia, m)?;
+    let (params, phi) = m_to_phase(inertia, m)?;
     let sector = Sector::of(params.regime, m)?;
-    let (a, b, c) = amplitudes(&params, sector);
-    let [m1, m2c, m3] = m.0.clone();
-    let undefined = || {
-        ModelError::Undefined(
-            "elliptic coordinate phi undefined: point on a coordinate axis (fixed point)".into(),
-        )
+    Ok(EllCoords {
+        params,
+        sector,
+        phi,
+    })
+}
+
+fn undefined() -> ModelError {
+    ModelError::Undefined(
+        "elliptic coordinate phi undefined: point on a coordinate axis (fixed point)".into(),
+    )
+}
+
+/// The signed amplitudes `(a, b, c)` of the point's sector (the sign rules of the
+/// module docs), with the signs as values ([`Real::signum_value`]).  For numbers this
+/// is [`amplitudes`] of [`Sector::of`]; the prover's values may carry a sign symbol,
+/// so that one normal form covers the sectors of all its sign cases.
+fn point_amplitudes<R: Real>(p: &EllipticParams<R>, m: &Vec3<R>) -> Result<(R, R, R), ModelError> {
+    let [m1, _, m3] = &m.0;
+    let (sa, sc) = match p.regime {
+        Regime::Upper => {
+            let s = m3.signum_value();
+            (s.clone(), s)
+        }
+        Regime::Lower => {
+            let s = m1.signum_value();
+            (s.clone(), s)
+        }
+        Regime::Separatrix => (m1.signum_value(), m3.signum_value()),
     };
+    if sa.is_zero() || sc.is_zero() {
+        return Err(undefined());
+    }
+    let sb = match p.regime {
+        Regime::Separatrix => sa.clone() * sc.clone(),
+        _ => sa.one(),
+    };
+    Ok((sa * p.a2.sqrt(), sb * p.b2.sqrt(), sc * p.c2.sqrt()))
+}
+
+/// The parameters and the phase `φ` of [`m_to_phi`], without the sector as signs
+/// (so that a value standing for several sectors at once has a phase).
+pub fn m_to_phase<R: Real>(
+    inertia: &Inertia<R>,
+    m: &Vec3<R>,
+) -> Result<(EllipticParams<R>, R), ModelError> {
+    let params = EllipticParams::from_point(inertia, m)?;
+    let (a, b, c) = point_amplitudes(&params, m)?;
+    let [m1, m2c, m3] = m.0.clone();
     let phi = match params.regime {
         Regime::Separatrix => {
             if b.is_zero() || a.is_zero() {
@@ -174,11 +216,7 @@ pub fn m_to_phi<R: Real>(inertia: &Inertia<R>, m: &Vec3<R>) -> Result<EllCoords<
             jacobi_inverse(&sn, &cn, &dn, &k)?
         }
     };
-    Ok(EllCoords {
-        params,
-        sector,
-        phi,
-    })
+    Ok((params, phi))
 }
 
 /// The complete elliptic integral `K(k)` for the parameters (`None` on the

@@ -230,6 +230,9 @@ impl<R: Real> Real for Dual<R> {
         let df = (self.v.one() - self.v.sqr()).recip();
         self.chain(self.v.atanh(), df)
     }
+    fn signum_value(&self) -> Self {
+        Dual::constant(self.v.signum_value())
+    }
     fn floor(&self) -> Self {
         Dual::constant(self.v.floor())
     }

@@ -131,7 +131,8 @@ mod imp {
 /// let k = eulertop::numbers::gmp_kernels::select();
 /// // the results of GMP are the same either way
 /// let x = rug::Float::with_val(8192, 3).sqrt();
-/// assert!((x.clone() * &x - 3u32).abs() < 1e-2400);
+/// let err = (x.clone() * &x - 3u32).abs();
+/// assert!(err.is_zero() || err.get_exp().unwrap() < -8000);
 /// # let _ = k;
 /// ```
 pub fn select() -> Kernels {

@@ -341,6 +341,18 @@ pub trait Real: Scalar + PartialOrd {
             other.clone()
         }
     }
+    /// The sign as a value of the type: −1, 0 or 1 for numbers.  A number system whose
+    /// values stand for several signs at once (the prover's sign symbols `σ`, `σ² = 1`)
+    /// may answer a value that is not a constant, such as `σ` for `σ·x` with `x > 0`.
+    ///
+    /// ```
+    /// use eulertop::numbers::Real;
+    /// assert_eq!((-2.5f64).signum_value(), -1.0);
+    /// assert_eq!(0.0f64.signum_value(), 0.0);
+    /// ```
+    fn signum_value(&self) -> Self {
+        self.from_i64(i64::from(self.signum_i()))
+    }
     /// Sign: -1, 0 or 1.
     fn signum_i(&self) -> i32 {
         if self.is_zero() {

@@ -96,3 +96,55 @@ fn cases_are_enumerated_where_the_joint_route_cannot_decide() {
     assert!(!joint(&p));
     assert_eq!(p.cases.len(), 4, "{:?}", p.cases);
 }
+
+/// A claim of the Euler-top catalogue on the domain `ell_up` (signs `sa`, `sc` drawn by
+/// the domain), as a control.
+fn ell_control(id: &str, lhs: &str, rhs: &str) -> String {
+    format!(
+        r#"
+[[claim]]
+id = "{id}"
+environment = "Section 4"
+role = "control"
+labels = []
+location = "control: sectors as sign symbols"
+printed = 'x'
+kind = "identity"
+expect = "holds"
+domain = "ell_up"
+let = '''
+kk = kE(A, B, C, Msq, E)
+q = ell_coords(ellM(A, B, C, Msq, E, phi, sa, sc), A, B, C)
+'''
+lhs = "{lhs}"
+rhs = "{rhs}"
+"#
+    )
+}
+
+#[test]
+fn the_sector_of_a_point_is_a_sign_symbol_and_its_phase_an_argument_up_to_that_sign() {
+    // ell_coords takes sign a = sign c = sign M₃ in the upper regime (b > 0), so for
+    // ellM's signs sa, sc the phase is φ where sa·sc = 1 and φ + 2K where sa·sc = −1:
+    // sn of the phase is sa·sc·sn φ, and its dn is dn φ, in every sign case at once
+    let text = [
+        ell_control("t.sector.sn", "sn(q[3], kk)", "sa*sc*sn(phi, kk)"),
+        ell_control("t.sector.dn", "dn(q[3], kk)", "dn(phi, kk)"),
+        ell_control("t.sector.sn-unsigned", "sn(q[3], kk)", "sn(phi, kk)"),
+    ]
+    .concat();
+    let cat = with_catalogue(text);
+    for id in ["t.sector.sn", "t.sector.dn"] {
+        let p = attempt(&cat, id);
+        assert!(p.is_proved(), "{id}: {:?}", p.reason);
+        assert!(joint(&p), "{id}: not proved jointly: {:?}", p.notes);
+        assert!(
+            p.notes.iter().any(|n| n.contains("plus (1 - ")),
+            "{id}: the phase is not an argument up to a sign: {:?}",
+            p.notes
+        );
+    }
+    // without the sign the identity holds in two of the four cases only
+    let p = attempt(&cat, "t.sector.sn-unsigned");
+    assert!(!p.is_proved(), "sn of the phase = sn φ was proved");
+}
