@@ -54,15 +54,45 @@ pub fn j_diag<R: Scalar + PartialOrd>(inertia: &Inertia<R>) -> Vec3<R> {
 }
 
 /// The Cayley transform `ω = (I+V)(I−V)⁻¹` with `V = hat(v)`; always in SO(3).
+///
+/// Computed in the closed form `ω = I + 2(V + V²)/(1 + |v|²)` with
+/// `V² = v vᵀ − |v|² I`: for a skew `V`, `V³ = −|v|²V`, so multiplying the right side
+/// by `I − V` gives `I − V + 2(V − V³)/(1 + |v|²) = I + V`.  One division and products
+/// only, no matrix inverse; `1 + |v|² ≥ 1` for real `v` (a complex `v` with
+/// `1 + v·v = 0`, where `I − V` is singular, gives the identity).
+///
+/// ```
+/// use eulertop::linalg::Vec3;
+/// use eulertop::model::veselov_moser::cayley;
+/// let w = cayley(&Vec3::new(0.3, -0.2, 0.5));
+/// let id = w.clone() * w.transpose();
+/// for i in 0..3 {
+///     for j in 0..3 {
+///         let e: f64 = if i == j { 1.0 } else { 0.0 };
+///         assert!((id.0[i][j] - e).abs() < 1e-15);
+///     }
+/// }
+/// ```
 pub fn cayley<S: Scalar>(v: &Vec3<S>) -> Mat3<S> {
     let vm = hat(v);
     let one = v.0[0].one();
-    let i = Mat3::identity(&one);
-    // I − V is invertible for skew V (det = 1 + |v|²).
-    let inv = (i.clone() - vm.clone())
-        .inverse()
-        .unwrap_or_else(|| Mat3::identity(&one));
-    (i + vm) * inv
+    let [v1, v2, v3] = &v.0;
+    let n2 = v1.clone() * v1.clone() + v2.clone() * v2.clone() + v3.clone() * v3.clone();
+    let den = one.clone() + n2.clone();
+    if den.is_zero() {
+        return Mat3::identity(&one);
+    }
+    let c = (one.clone() + one.clone()) / den;
+    Mat3::from_fn(|i, j| {
+        let outer = v.0[i].clone() * v.0[j].clone();
+        let square = if i == j { outer - n2.clone() } else { outer };
+        let e = c.clone() * (vm.0[i][j].clone() + square);
+        if i == j {
+            one.clone() + e
+        } else {
+            e
+        }
+    })
 }
 
 /// The skew residual `vee(ωJ − Jωᵀ − hM̌)` of (M thru omega) at `ω = cayley(v)`, with
