@@ -12,8 +12,10 @@
 
 use super::ast::{BinOp, Binding, Expr, ExprKind, Span, UnOp};
 use super::backend::Num;
+use super::builtins::apply::{jacobi_pick, jacobi_triple};
 use super::builtins::{apply, Builtin};
 use super::cmath;
+use super::memo::{CallMemo, Callee};
 use super::registry::{HostCall, Registry, UserFn};
 use super::value::Value;
 use crate::algebra::Sym;
@@ -202,6 +204,9 @@ pub struct Evaluator<'r, T> {
     depth: usize,
     nesting: Cell<usize>,
     dcache: DCache,
+    /// The calls this evaluation has made (shared with the evaluations of function
+    /// bodies at the same precision; `None` for exact backends).
+    memo: Option<Rc<dyn Any>>,
 }
 
 /// Most nested calls of catalogue functions (a recursive definition stops here).
@@ -224,18 +229,23 @@ impl<'r, T: Backend> Evaluator<'r, T> {
             depth: 0,
             nesting: Cell::new(0),
             dcache: DCache::default(),
+            memo: CallMemo::<T>::for_backend(T::EXACT),
         }
     }
     /// An empty evaluator over another backend that continues this one's depth counts.
     fn child<U: Backend>(&self, like: U, depth: usize) -> Evaluator<'r, U> {
         Evaluator {
             reg: self.reg,
-            like,
             scope: Vec::new(),
             local_fns: Vec::new(),
             depth,
             nesting: Cell::new(self.nesting.get()),
             dcache: DCache::default(),
+            memo: match CallMemo::<U>::of(&self.memo) {
+                Some(_) if self.like.precision() == like.precision() => self.memo.clone(),
+                _ => CallMemo::<U>::for_backend(U::EXACT),
+            },
+            like,
         }
     }
     /// A scalar with the working precision.
@@ -530,6 +540,11 @@ impl<'r, T: Backend> Evaluator<'r, T> {
             return self.call_user(f, &vals, sp);
         }
         if let Some(b) = Builtin::from_name(name) {
+            if b.is_jacobi() {
+                return self
+                    .jacobi(b, &vals)
+                    .map_err(|m| EvalError::at(format!("{name}: {m}"), sp));
+            }
             return apply(b, &self.like, &vals)
                 .map_err(|m| EvalError::at(format!("{name}: {m}"), sp));
         }
@@ -550,8 +565,46 @@ impl<'r, T: Backend> Evaluator<'r, T> {
         Err(EvalError::at(format!("unknown function '{name}'"), sp))
     }
 
-    #[inline(never)]
+    /// A Jacobi built-in, its triple `[sn, cn, dn](u, k)` remembered (see [`CallMemo`]).
+    fn jacobi(&self, b: Builtin, vals: &[Value<T>]) -> Result<Value<T>, String> {
+        let memo = CallMemo::<T>::of(&self.memo);
+        let known = memo.and_then(|m| m.get(Callee::Jacobi, vals));
+        let triple: [Value<T>; 3] = match known.map(<[Value<T>; 3]>::try_from) {
+            Some(Ok(t)) => t,
+            _ => {
+                let t = jacobi_triple(vals)?;
+                if let Some(m) = memo {
+                    m.put(Callee::Jacobi, vals, t.to_vec());
+                }
+                t
+            }
+        };
+        jacobi_pick(b, vals, &triple)
+    }
+
+    /// A catalogue function, its result remembered (see [`CallMemo`]).
     fn call_user(&self, f: &UserFn, vals: &[Value<T>], sp: Span) -> Result<Value<T>, EvalError> {
+        let memo = CallMemo::<T>::of(&self.memo);
+        let callee = Callee::User(std::ptr::from_ref(f) as usize);
+        if let Some(mut r) = memo.and_then(|m| m.get(callee, vals)) {
+            if let Some(v) = r.pop() {
+                return Ok(v);
+            }
+        }
+        let v = self.call_user_body(f, vals, sp)?;
+        if let Some(m) = memo {
+            m.put(callee, vals, vec![v.clone()]);
+        }
+        Ok(v)
+    }
+
+    #[inline(never)]
+    fn call_user_body(
+        &self,
+        f: &UserFn,
+        vals: &[Value<T>],
+        sp: Span,
+    ) -> Result<Value<T>, EvalError> {
         if vals.len() != f.params.len() {
             return Err(EvalError::at(
                 format!(

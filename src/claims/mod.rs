@@ -21,6 +21,7 @@ pub mod implicit;
 pub mod kind;
 pub mod latex;
 pub mod lexer;
+mod memo;
 pub mod parser;
 pub mod registry;
 pub mod sampler;

@@ -728,3 +728,44 @@ fn jacobi_inverse_works_in_a_catalogue() {
     let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"k\", \"uniform(0.1, 0.9)\"], [\"u\", \"uniform(-1, 1)\"]]\nlhs = \"jacobi_inverse(sn(u, k), cn(u, k), dn(u, k), k)\"\nrhs = \"u\""), &LADDER);
     assert_eq!(r.verdict, Verdict::Holds, "{}", r.reason);
 }
+
+#[test]
+fn repeated_calls_give_the_results_of_fresh_ones() {
+    // an evaluation answers a repeated call of a catalogue function or a Jacobi function
+    // from its earlier result: equal arguments only, at the evaluation's precision
+    let mut reg = Registry::new();
+    for b in
+        parse_bindings("sq(x) = x*x\nphase(u, k) = sn(u, k) + 2*cn(u, k) + 3*dn(u, k)").unwrap()
+    {
+        reg.define(b).unwrap();
+    }
+    let fresh = |s: &str, bits: u32| {
+        // each sub-expression in its own evaluation: nothing to recall
+        let ev = Evaluator::new(&reg, rug::Float::new(bits));
+        ev.eval(&parse_expr(s).unwrap()).unwrap().as_real().unwrap()
+    };
+    for bits in [53u32, 8192] {
+        let ev = Evaluator::new(&reg, rug::Float::new(bits));
+        let at = |s: &str| ev.eval(&parse_expr(s).unwrap()).unwrap().as_real().unwrap();
+        // repeated and nearby arguments in one evaluation
+        let both = at("sq(3) + sq(3) + sq(3.5) + phase(0.3, 0.5) - phase(0.3, 0.6) + sq(3)");
+        let want =
+            fresh("sq(3)", bits) * 3u32 + fresh("sq(3.5)", bits) + fresh("phase(0.3, 0.5)", bits)
+                - fresh("phase(0.3, 0.6)", bits);
+        assert_eq!(both, want, "at {bits} bits");
+        // the twelve Jacobi functions share one triple, and each is still its own quotient
+        let q = at("sn(0.7, 0.8) / cn(0.7, 0.8) - sc(0.7, 0.8)");
+        assert!(q.is_zero(), "at {bits} bits");
+        assert_eq!(at("dn(0.7, 0.8)"), fresh("dn(0.7, 0.8)", bits));
+        assert_eq!(at("cd(0.7, 0.8)"), fresh("cd(0.7, 0.8)", bits));
+    }
+    // the same evaluator at another precision is another evaluation
+    let ev = Evaluator::new(&reg, rug::Float::new(53));
+    let low = ev
+        .eval(&parse_expr("sn(0.7, 0.8)").unwrap())
+        .unwrap()
+        .as_real()
+        .unwrap();
+    assert_eq!(low.prec(), 53);
+    assert_eq!(fresh("sn(0.7, 0.8)", 8192).prec(), 8192);
+}

@@ -131,10 +131,16 @@ fn complex<T: Num>(f: Builtin, a: &[Value<T>]) -> Result<Value<T>, String> {
 /// real or complex `u`: one division at the working precision; a zero denominator is a
 /// pole, reported as an error.
 fn jacobi<T: Num>(f: Builtin, a: &[Value<T>]) -> Result<Value<T>, String> {
+    let triple = jacobi_triple(a)?;
+    jacobi_pick(f, a, &triple)
+}
+
+/// `[sn, cn, dn](u, k)` for the arguments `[u, k]` of a Jacobi built-in (real or complex
+/// `u`): all twelve functions are quotients of these three.
+pub fn jacobi_triple<T: Num>(a: &[Value<T>]) -> Result<[Value<T>; 3], String> {
     arity(a, 2)?;
     let k = a[1].as_real()?;
-    let g = JacobiFn::from_name(f.name()).ok_or("not a Jacobi function")?;
-    let [s, c, d] = match &a[0] {
+    Ok(match &a[0] {
         Value::Real(u) => T::sncndn(u, &k)?.map(Value::Real),
         Value::Complex(u) => T::sncndn_complex(u, &k)?.map(Value::Complex),
         v => {
@@ -143,8 +149,20 @@ fn jacobi<T: Num>(f: Builtin, a: &[Value<T>]) -> Result<Value<T>, String> {
                 v.type_name()
             ))
         }
-    };
-    let pick = |i: Option<usize>| i.map(|i| [&s, &c, &d][i].clone());
+    })
+}
+
+/// The Jacobi built-in `f` at the arguments `a`, from `[sn, cn, dn]` there
+/// ([`jacobi_triple`]); a pole is an error.
+pub fn jacobi_pick<T: Num>(
+    f: Builtin,
+    a: &[Value<T>],
+    triple: &[Value<T>; 3],
+) -> Result<Value<T>, String> {
+    let k = a[1].as_real()?;
+    let g = JacobiFn::from_name(f.name()).ok_or("not a Jacobi function")?;
+    let [s, c, d] = triple;
+    let pick = |i: Option<usize>| i.map(|i| [s, c, d][i].clone());
     let (p, q) = g.parts();
     let num = pick(p).unwrap_or_else(|| Value::Real(k.one()));
     let Some(den) = pick(q) else {

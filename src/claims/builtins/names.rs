@@ -241,6 +241,26 @@ impl Builtin {
     pub fn is_form(self) -> bool {
         self.spec().group == Group::Form
     }
+    /// The twelve Jacobi functions (sn, cn, dn and their quotients), all computed from
+    /// one triple `[sn, cn, dn](u, k)`.
+    pub fn is_jacobi(self) -> bool {
+        use Builtin as B;
+        matches!(
+            self,
+            B::Sn
+                | B::Cn
+                | B::Dn
+                | B::Cd
+                | B::Dc
+                | B::Ns
+                | B::Nc
+                | B::Nd
+                | B::Sc
+                | B::Sd
+                | B::Cs
+                | B::Ds
+        )
+    }
 }
 
 /// The built-in table of `identities/README.md`, one row per built-in.
