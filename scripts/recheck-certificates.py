@@ -12,7 +12,8 @@ This script:
   * checks every base (c**2 = 1 - s**2, d**2 = 1 - k**2 s**2) and the quarter-period
     data (kp**2 = 1 - k**2 and the half-period values of DLMF 22.5.1 squared);
   * recomputes every node from its arguments with its own rational-function arithmetic
-    modulo the relations, and compares with the stated normal form where one is given;
+    modulo the relations, and compares with the stated normal form where one is given
+    (a `dot + tA tB - tC tD ...` node is a sum of products, formed at once);
   * square roots: the stated root squared equals the radicand (the sign is an assumption
     of the proof and is only printed);
   * sn, cn, dn: recomputed from the base symbols with the addition theorems
@@ -894,6 +895,16 @@ class Cert:
                     "*": lambda: self.mul(a, b), "/": lambda: self.div(a, b)}[toks[1]]()
         if toks[0] == "-" and len(toks) == 2:
             return self.neg(v[toks[1]])
+        if toks[0] == "dot":
+            # dot + tA tB - tC tD ...: a sum of products (signs before each product)
+            rest = toks[1:]
+            self.need(len(rest) % 3 == 0 and len(rest) > 0, "malformed dot step")
+            acc = self.zero
+            for i in range(0, len(rest), 3):
+                sign, a, b = rest[i], v[rest[i + 1]], v[rest[i + 2]]
+                self.need(sign in "+-", "malformed dot step")
+                acc = self.add(acc, self.mul(a, b), -1 if sign == "-" else 1)
+            return acc
         if toks[0] == "sqrt":
             self.need(nf is not None, "sqrt without a value")
             self.need(self.eq(self.mul(nf, nf), v[toks[1]]), "the square of a root is not its radicand")

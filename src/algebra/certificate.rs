@@ -89,6 +89,21 @@ impl Emitter<'_> {
             Op::Add => format!("{} + {}", t(0), t(1)),
             Op::Sub => format!("{} - {}", t(0), t(1)),
             Op::Mul => format!("{} * {}", t(0), t(1)),
+            Op::SumOfProducts(signs) => {
+                let terms: Vec<String> = signs
+                    .iter()
+                    .enumerate()
+                    .map(|(i, neg)| {
+                        format!(
+                            "{} {} {}",
+                            if *neg { "-" } else { "+" },
+                            t(2 * i),
+                            t(2 * i + 1)
+                        )
+                    })
+                    .collect();
+                format!("dot {}", terms.join(" "))
+            }
             Op::Div => format!("{} / {}", t(0), t(1)),
             Op::Neg => format!("- {}", t(0)),
             Op::Pow(e) => format!("{} ^ {e}", t(0)),

@@ -32,6 +32,10 @@ pub(crate) enum Op {
     },
     /// The derivative with respect to an indeterminate.
     Deriv(String),
+    /// `Σ ±xᵢyᵢ` of the arguments `x₀, y₀, x₁, y₁, …`, `true` marking a subtracted
+    /// product (summed over one common denominator, so the products themselves need
+    /// not be in lowest terms).
+    SumOfProducts(Vec<bool>),
 }
 
 /// A node of the derivation DAG: the operation, its arguments, and (for operations

@@ -397,13 +397,22 @@ impl Sym {
             .0
             .ring;
         let mut vals = Vec::with_capacity(terms.len());
+        let mut args = Vec::with_capacity(2 * terms.len());
         for (x, y, neg) in terms {
             terms[0].0.same_ring(x)?;
             terms[0].0.same_ring(y)?;
             vals.push((&x.val, &y.val, *neg));
+            if let (Some(a), Some(b)) = (&x.node, &y.node) {
+                args.push(a.clone());
+                args.push(b.clone());
+            }
         }
         let v = ring.inner.v_sum_of_products(&vals)?;
-        Ok(Sym::from_val(ring, v, None))
+        let node = (args.len() == 2 * terms.len()).then(|| {
+            let signs = terms.iter().map(|t| t.2).collect();
+            Node::with_nf(Op::SumOfProducts(signs), args, &v)
+        });
+        Ok(Sym::from_val(ring, v, node))
     }
 
     /// `self · o`, or an error.

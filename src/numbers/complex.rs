@@ -38,9 +38,12 @@ impl<R: Scalar + PartialOrd> Sub for Cplx<R> {
 }
 impl<R: Scalar + PartialOrd> Mul for Cplx<R> {
     type Output = Self;
+    /// `(ac − bd) + (ad + bc)i`, each part as one [`Scalar::det2`] (the same roundings as
+    /// the products and the sum for numbers; one common denominator for the prover's
+    /// values).
     fn mul(self, o: Self) -> Self {
-        let re = self.re.clone() * o.re.clone() - self.im.clone() * o.im.clone();
-        let im = self.re * o.im + self.im * o.re;
+        let re = R::det2(&self.re, &o.re, &self.im, &o.im);
+        let im = R::det2(&self.re, &o.im, &-self.im.clone(), &o.re);
         Cplx::new(re, im)
     }
 }
