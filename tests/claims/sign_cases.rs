@@ -3,28 +3,14 @@
 //! sign only is never proved, and where the joint route cannot decide (a square root
 //! that vanishes in one case), the cases are enumerated.
 
-use super::support::{attempt, with_catalogue};
+use super::support::{attempt, identity_claim_with, with_catalogue};
 use eulertop::claims::catalogue::Catalogue;
 use eulertop::claims::verdict::ProofInfo;
 
 fn control(id: &str, lhs: &str, rhs: &str) -> String {
-    format!(
-        r#"
-[[claim]]
-id = "{id}"
-environment = "Section 2"
-role = "control"
-labels = []
-location = "control: sign cases"
-printed = 'x'
-kind = "identity"
-expect = "holds"
-domain = "inertia"
-vars = [["s", "sign()"], ["t", "sign()"], ["x", "uniform(1, 2)"]]
-lhs = "{lhs}"
-rhs = "{rhs}"
-"#
-    )
+    let fields = r#"domain = "inertia"
+vars = [["s", "sign()"], ["t", "sign()"], ["x", "uniform(1, 2)"]]"#;
+    identity_claim_with(id, "control: sign cases", fields, lhs, rhs)
 }
 
 const CONTROLS: [(&str, &str, &str); 6] = [
@@ -100,26 +86,12 @@ fn cases_are_enumerated_where_the_joint_route_cannot_decide() {
 /// A claim of the Euler-top catalogue on the domain `ell_up` (signs `sa`, `sc` drawn by
 /// the domain), as a control.
 fn ell_control(id: &str, lhs: &str, rhs: &str) -> String {
-    format!(
-        r#"
-[[claim]]
-id = "{id}"
-environment = "Section 4"
-role = "control"
-labels = []
-location = "control: sectors as sign symbols"
-printed = 'x'
-kind = "identity"
-expect = "holds"
-domain = "ell_up"
+    let fields = r#"domain = "ell_up"
 let = '''
 kk = kE(A, B, C, Msq, E)
 q = ell_coords(ellM(A, B, C, Msq, E, phi, sa, sc), A, B, C)
-'''
-lhs = "{lhs}"
-rhs = "{rhs}"
-"#
-    )
+'''"#;
+    identity_claim_with(id, "control: sectors as sign symbols", fields, lhs, rhs)
 }
 
 #[test]

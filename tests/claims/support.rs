@@ -47,6 +47,12 @@ pub fn assert_refused(cat: &Catalogue, id: &str, words: &[&str]) -> String {
 /// A control identity claim `lhs = rhs` (expected to hold) over the variables `vars`
 /// (TOML pairs such as `["x", "uniform(1, 2)"]`), as catalogue text.
 pub fn identity_claim(id: &str, location: &str, vars: &str, lhs: &str, rhs: &str) -> String {
+    identity_claim_with(id, location, &format!("vars = [{vars}]"), lhs, rhs)
+}
+
+/// A control identity claim `lhs = rhs` (expected to hold) with the catalogue fields
+/// `fields` (TOML lines: `domain`, `vars`, `let`, …), as catalogue text.
+pub fn identity_claim_with(id: &str, location: &str, fields: &str, lhs: &str, rhs: &str) -> String {
     format!(
         r#"
 [[claim]]
@@ -58,7 +64,7 @@ location = "{location}"
 printed = 'x'
 kind = "identity"
 expect = "holds"
-vars = [{vars}]
+{fields}
 lhs = "{lhs}"
 rhs = "{rhs}"
 "#
