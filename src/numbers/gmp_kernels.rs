@@ -17,7 +17,8 @@
 //! are bit-identical either way; only the speed differs.
 //!
 //! GMP's dispatch table (`struct cpuvec_t` of GMP 6.3's `gmp-impl.h`) is written
-//! once, before any other thread uses GMP: call [`select`] at the start of `main`.
+//! once, before any other thread uses GMP: call [`select`] at the start of `main`.  A
+//! GMP other than 6.3 (by its version string) is left alone, as its table may differ.
 
 /// What [`select`] did.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -40,6 +41,7 @@ mod imp {
     }
 
     extern "C" {
+        static __gmp_version: *const std::ffi::c_char;
         static mut __gmpn_cpuvec: CpuVec;
         fn __gmpn_cpuvec_init();
         fn __gmpn_addlsh1_n_zen();
@@ -77,7 +79,17 @@ mod imp {
         (vendor, family)
     }
 
+    /// Is the linked GMP the 6.3 whose table layout this module writes?
+    fn gmp_6_3() -> bool {
+        // SAFETY: `__gmp_version` is GMP's constant, NUL-terminated version string.
+        let v = unsafe { std::ffi::CStr::from_ptr(__gmp_version) };
+        v.to_bytes().starts_with(b"6.3.")
+    }
+
     pub(super) fn select() -> Kernels {
+        if !gmp_6_3() {
+            return Kernels::Gmp;
+        }
         let (vendor, family) = vendor_family();
         let later_amd = &vendor == b"AuthenticAMD" && family > 0x19;
         if !later_amd
