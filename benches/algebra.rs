@@ -3,7 +3,7 @@
 //!
 //! `cargo bench --bench algebra`
 
-use criterion::{criterion_group, criterion_main, Criterion};
+use criterion::{criterion_group, Criterion};
 use eulertop::algebra::{prove_components, RingOptions};
 
 #[path = "../tests/algebra_identities/mod.rs"]
@@ -47,4 +47,10 @@ fn proofs(c: &mut Criterion) {
 }
 
 criterion_group!(benches, proofs);
-criterion_main!(benches);
+/// As `criterion_main!`, with GMP's kernels for this processor selected first (as the
+/// `eulertop` binary does), so that the MPFR figures are the product's.
+fn main() {
+    eulertop::numbers::gmp_kernels::select();
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+}

@@ -7,7 +7,7 @@
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
-use criterion::{criterion_group, criterion_main, Criterion};
+use criterion::{criterion_group, Criterion};
 use eulertop::bindings::euler_top::registry;
 use eulertop::claims::catalogue::{load_dir, Body, Catalogue};
 use eulertop::claims::verdict::context::Ctx;
@@ -52,4 +52,10 @@ fn proofs(c: &mut Criterion) {
 }
 
 criterion_group!(benches, proofs);
-criterion_main!(benches);
+/// As `criterion_main!`, with GMP's kernels for this processor selected first (as the
+/// `eulertop` binary does), so that the MPFR figures are the product's.
+fn main() {
+    eulertop::numbers::gmp_kernels::select();
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+}

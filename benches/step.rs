@@ -2,7 +2,7 @@
 //! Veselov–Moser matrix step, in f64 and MPFR at 256 and 1024 bits; prints the Newton
 //! iteration counts.  Run: `cargo bench --bench step`.
 
-use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use criterion::{black_box, criterion_group, Criterion};
 use eulertop::linalg::Vec3;
 use eulertop::model::discretization::{step, step_report};
 use eulertop::model::veselov_moser::vm_step;
@@ -71,4 +71,10 @@ criterion_group! {
     config = Criterion::default().sample_size(20).measurement_time(std::time::Duration::from_secs(2)).warm_up_time(std::time::Duration::from_millis(500));
     targets = bench
 }
-criterion_main!(benches);
+/// As `criterion_main!`, with GMP's kernels for this processor selected first (as the
+/// `eulertop` binary does), so that the MPFR figures are the product's.
+fn main() {
+    eulertop::numbers::gmp_kernels::select();
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+}
