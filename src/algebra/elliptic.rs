@@ -359,7 +359,7 @@ impl Ring {
     }
 
     /// The products of the ring's sign symbols (at most four symbols), each with
-    /// either sign, fewest factors first.
+    /// either sign (`+` first), fewest factors first.
     pub(crate) fn sign_products(&self) -> AlgResult<Vec<Sym>> {
         let signs = self.sign_symbols();
         let n = signs.len().min(4);
@@ -373,8 +373,9 @@ impl Ring {
                     prod = prod.try_mul(s)?;
                 }
             }
-            out.push(prod.negate());
+            let neg = prod.negate();
             out.push(prod);
+            out.push(neg);
         }
         Ok(out)
     }

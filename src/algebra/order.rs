@@ -83,7 +83,6 @@ impl Sym {
     /// ```
     pub fn sign_value(&self) -> AlgResult<Sym> {
         let ring = &self.ring;
-        let signs = ring.sign_symbols();
         let pattern = |v: &Sym| -> Option<Vec<i32>> {
             let prec = ring.precision();
             let at = |sh: &super::shadow::Shadow| {
@@ -93,20 +92,12 @@ impl Sym {
             };
             at(&v.val.sh).or_else(|| at(&ring.reevaluated(&v.val)))
         };
-        if !signs.is_empty() && !self.is_exact_zero() && self.as_rational().is_none() {
-            if let Some(own) = pattern(self) {
-                // products of sign symbols, fewest factors first (at most four symbols)
-                let n = signs.len().min(4);
-                let mut masks: Vec<u32> = (1..1u32 << n).collect();
-                masks.sort_by_key(|m| m.count_ones());
-                let constant = own.windows(2).all(|w| w[0] == w[1]);
-                for mask in masks.into_iter().filter(|_| !constant) {
-                    let mut prod = ring.integer(1);
-                    for (j, s) in signs.iter().enumerate().take(n) {
-                        if mask & (1 << j) != 0 {
-                            prod = prod.try_mul(s)?;
-                        }
-                    }
+        // products of sign symbols, fewest factors first
+        let products = ring.sign_products()?;
+        let varying = !self.is_exact_zero() && self.as_rational().is_none();
+        if let Some(own) = pattern(self).filter(|_| varying && !products.is_empty()) {
+            if own.windows(2).any(|w| w[0] != w[1]) {
+                for prod in products {
                     let Some(pp) = pattern(&prod) else { continue };
                     let ratio: Vec<i32> = own.iter().zip(&pp).map(|(a, b)| a * b).collect();
                     if ratio.windows(2).all(|w| w[0] == w[1]) {
