@@ -568,7 +568,7 @@ impl<'r, T: Backend> Evaluator<'r, T> {
     /// A Jacobi built-in, its triple `[sn, cn, dn](u, k)` remembered (see [`CallMemo`]).
     fn jacobi(&self, b: Builtin, vals: &[Value<T>]) -> Result<Value<T>, String> {
         let memo = CallMemo::<T>::of(&self.memo);
-        let known = memo.and_then(|m| m.get(Callee::Jacobi, vals));
+        let known = memo.and_then(|m| m.get(&Callee::Jacobi, vals));
         let triple: [Value<T>; 3] = match known.map(<[Value<T>; 3]>::try_from) {
             Some(Ok(t)) => t,
             _ => {
@@ -583,10 +583,15 @@ impl<'r, T: Backend> Evaluator<'r, T> {
     }
 
     /// A catalogue function, its result remembered (see [`CallMemo`]).
-    fn call_user(&self, f: &UserFn, vals: &[Value<T>], sp: Span) -> Result<Value<T>, EvalError> {
+    fn call_user(
+        &self,
+        f: &Arc<UserFn>,
+        vals: &[Value<T>],
+        sp: Span,
+    ) -> Result<Value<T>, EvalError> {
         let memo = CallMemo::<T>::of(&self.memo);
-        let callee = Callee::User(std::ptr::from_ref(f) as usize);
-        if let Some(mut r) = memo.and_then(|m| m.get(callee, vals)) {
+        let callee = Callee::User(f.clone());
+        if let Some(mut r) = memo.and_then(|m| m.get(&callee, vals)) {
             if let Some(v) = r.pop() {
                 return Ok(v);
             }

@@ -11,18 +11,31 @@
 //! one ring, on which its functions are deterministic).  Exact rational evaluation
 //! keeps no results: its calls are cheap and its values can be large to compare.
 
+use super::registry::UserFn;
 use super::value::Value;
 use std::any::Any;
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
+use std::sync::Arc;
 
 /// What a remembered call called.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone)]
 pub(crate) enum Callee {
-    /// A catalogue function (by the address of its definition).
-    User(usize),
+    /// A catalogue function, by the identity of its definition (held, so that its
+    /// address cannot be taken by another definition while the entry lives).
+    User(Arc<UserFn>),
     /// `[sn, cn, dn](u, k)`, shared by the twelve Jacobi built-ins.
     Jacobi,
+}
+
+impl PartialEq for Callee {
+    fn eq(&self, o: &Callee) -> bool {
+        match (self, o) {
+            (Callee::User(a), Callee::User(b)) => Arc::ptr_eq(a, b),
+            (Callee::Jacobi, Callee::Jacobi) => true,
+            _ => false,
+        }
+    }
 }
 
 struct Entry<T> {
@@ -59,11 +72,11 @@ impl<T: Clone + PartialEq + 'static> CallMemo<T> {
     }
 
     /// The result of an earlier call of `callee` with `args`.
-    pub(crate) fn get(&self, callee: Callee, args: &[Value<T>]) -> Option<Vec<Value<T>>> {
+    pub(crate) fn get(&self, callee: &Callee, args: &[Value<T>]) -> Option<Vec<Value<T>>> {
         self.entries
             .borrow()
             .iter()
-            .find(|e| e.callee == callee && e.args == args)
+            .find(|e| e.callee == *callee && e.args == args)
             .map(|e| e.result.clone())
     }
 
