@@ -358,28 +358,6 @@ impl Ring {
         Ok(None)
     }
 
-    /// The products of the ring's sign symbols (at most four symbols), each with
-    /// either sign (`+` first), fewest factors first.
-    pub(crate) fn sign_products(&self) -> AlgResult<Vec<Sym>> {
-        let signs = self.sign_symbols();
-        let n = signs.len().min(4);
-        let mut masks: Vec<u32> = (1..1u32 << n).collect();
-        masks.sort_by_key(|m| m.count_ones());
-        let mut out = Vec::with_capacity(2 * masks.len());
-        for mask in masks {
-            let mut prod = self.integer(1);
-            for (j, s) in signs.iter().enumerate().take(n) {
-                if mask & (1 << j) != 0 {
-                    prod = prod.try_mul(s)?;
-                }
-            }
-            let neg = prod.negate();
-            out.push(prod);
-            out.push(neg);
-        }
-        Ok(out)
-    }
-
     /// The table of modulus `k`, and `u` as a combination of its bases with half-period
     /// multiples (for certificates).
     pub(crate) fn combination(&self, k: &Val, u: &Val) -> AlgResult<Combination> {

@@ -571,17 +571,6 @@ impl Ring {
         self.leaf_sym(self.inner.kvar(j), values, &name)
     }
 
-    /// The sign symbols of the ring (roots of the radicand 1), in order of creation.
-    pub(crate) fn sign_symbols(&self) -> Vec<Sym> {
-        let idx: Vec<usize> = {
-            let st = self.state();
-            (0..st.roots.len())
-                .filter(|&i| st.roots[i].radicand.is_one())
-                .collect()
-        };
-        idx.into_iter().map(|i| self.root_sym(i)).collect()
-    }
-
     pub(crate) fn root_sym(&self, i: usize) -> Sym {
         let (values, name) = {
             let st = self.state();

@@ -86,6 +86,39 @@ impl Ring {
         let i = self.inner.add_root(name.to_string(), one, v, note)?;
         Ok(self.root_sym(i))
     }
+    /// The sign symbols of the ring (roots of the radicand 1), in order of creation.
+    pub(crate) fn sign_symbols(&self) -> Vec<Sym> {
+        let idx: Vec<usize> = {
+            let st = self.state();
+            (0..st.roots.len())
+                .filter(|&i| st.roots[i].radicand.is_one())
+                .collect()
+        };
+        idx.into_iter().map(|i| self.root_sym(i)).collect()
+    }
+
+    /// The products of the ring's sign symbols (at most four symbols), each with
+    /// either sign (`+` first), fewest factors first.
+    pub(crate) fn sign_products(&self) -> AlgResult<Vec<Sym>> {
+        let signs = self.sign_symbols();
+        let n = signs.len().min(4);
+        let mut masks: Vec<u32> = (1..1u32 << n).collect();
+        masks.sort_by_key(|m| m.count_ones());
+        let mut out = Vec::with_capacity(2 * masks.len());
+        for mask in masks {
+            let mut prod = self.integer(1);
+            for (j, s) in signs.iter().enumerate().take(n) {
+                if mask & (1 << j) != 0 {
+                    prod = prod.try_mul(s)?;
+                }
+            }
+            let neg = prod.negate();
+            out.push(prod);
+            out.push(neg);
+        }
+        Ok(out)
+    }
+
     /// A sign symbol with values given as `f64` (see [`Ring::sign_symbol`]).
     pub fn sign_symbol_f64(&self, name: &str, values: &[f64]) -> AlgResult<Sym> {
         let prec = self.precision();
