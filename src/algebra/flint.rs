@@ -531,6 +531,12 @@ impl Poly {
         d
     }
 
+    /// The total degree (−1 for the zero polynomial).
+    pub fn total_degree(&self) -> i64 {
+        // SAFETY: initialised polynomial.
+        unsafe { fm::fmpz_mpoly_total_degree_si(&self.raw, self.ctx.ptr()) }
+    }
+
     /// The degree in variable `i` (−1 for the zero polynomial).
     pub fn degree(&self, i: usize) -> i64 {
         assert!(i < self.ctx.nvars, "variable index out of range");

@@ -108,6 +108,7 @@ mod addition;
 mod base_table;
 pub mod certificate;
 mod coordinates;
+mod den_factors;
 mod derive;
 pub mod elliptic;
 mod error;

@@ -12,6 +12,7 @@
 use super::error::{AlgResult, AlgebraError};
 use super::flint::{Ctx, Poly};
 use super::gcd_memo::GcdMemo;
+use super::den_factors::DenFactors;
 use super::node::Node;
 use super::shadow::Shadow;
 use super::square_classes::FactorBasis;
@@ -236,6 +237,8 @@ pub(crate) struct Inner {
     pub state: Mutex<State>,
     /// Remembered gcds of the ring's polynomials.
     pub gcds: GcdMemo,
+    /// Remembered factorisations of the ring's denominators.
+    pub dens: DenFactors,
     /// Set with the first error: the ring's values are then meaningless, and the
     /// operators stop computing.
     pub poisoned: std::sync::atomic::AtomicBool,
@@ -300,6 +303,7 @@ impl Ring {
                 opts,
                 state: Mutex::new(state),
                 gcds: GcdMemo::default(),
+                dens: DenFactors::default(),
                 poisoned: std::sync::atomic::AtomicBool::new(false),
             }),
         }

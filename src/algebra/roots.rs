@@ -15,6 +15,7 @@
 //! tested for being a square in the tower by denesting `(a + b r)² = P + Q r`
 //! (`a² = (P ± √(P² − a_r Q²))/2`); otherwise it gets a root of its own.
 
+use super::den_factors::Factors;
 use super::error::{AlgResult, AlgebraError};
 use super::flint::{factor_integer, Poly};
 use super::node::Node;
@@ -24,6 +25,7 @@ use super::square_classes::{Bits, Factor};
 use super::sym::Sym;
 use super::val::Val;
 use rug::Complex;
+use std::sync::Arc;
 
 /// Values a new root must take at the domain points (instead of the principal branch),
 /// with its name and description.
@@ -307,16 +309,23 @@ impl Ring {
     fn assemble(&self, nd: &Poly, combo: &Bits) -> AlgResult<Val> {
         let ctx = self.inner.ctx.clone();
         let mut r = Poly::from_i64(&ctx, 1);
+        let mut fr = Factors::integer(rug::Integer::from(1));
         let roots: Vec<usize> = combo.ones();
         for &i in &roots {
-            r = r.mul(&self.state().roots[i].radicand);
+            let a = self.state().roots[i].radicand.clone();
+            fr = fr.mul(&*self.inner.dens.of(&a)?);
+            r = r.mul(&a);
         }
+        self.inner.dens.record(&r, Arc::new(fr));
         let (yn, yd) = self.inner.normalise(nd.clone(), r)?;
         let (Some(sn), Some(sd)) = (yn.sqrt(), yd.sqrt()) else {
             return Err(AlgebraError::Internal(
                 "square class mismatch in sqrt".into(),
             ));
         };
+        if let Some(f) = self.inner.dens.of(&yd)?.half() {
+            self.inner.dens.record(&sd, Arc::new(f));
+        }
         let (num, den) = self.inner.normalise(sn, sd)?;
         let sh = self.shadow_of(&num, &den);
         let mut v = Val { num, den, sh };

@@ -9,6 +9,7 @@
 //! so a value is zero exactly when `N = 0`.
 
 use super::error::{AlgResult, AlgebraError};
+use super::den_factors::{self, Factors};
 use super::flint::Poly;
 use super::node::{Node, Op};
 use super::ring::{Inner, Ring, Stored};
@@ -61,21 +62,42 @@ impl Inner {
         if num.is_zero() {
             return Ok((num, Poly::from_i64(&self.ctx, 1)));
         }
-        let (mut n, mut d) = if den.is_one() {
-            (num, den)
+        let (n, d, fd) = if den.is_one() {
+            (num, den, None)
         } else {
-            let g = self.gcds.gcd(&num, &den)?;
-            if g.is_one() {
-                (num, den)
-            } else {
-                (exact(&num, &g)?, exact(&den, &g)?)
-            }
+            let (n, d, fd) = self.cancel_den(&num, &den)?;
+            (n, d, Some(fd))
         };
-        if d.leading_coefficient() < 0 {
-            n = n.neg();
-            d = d.neg();
+        Ok(self.positive_den(n, d, fd.as_deref()))
+    }
+
+    /// `(n, d)` or `(−n, −d)`, whichever has the denominator's leading coefficient
+    /// positive; the factors `fd` of `d`, if known, are remembered for the result's.
+    fn positive_den(&self, n: Poly, d: Poly, fd: Option<&Factors>) -> (Poly, Poly) {
+        let (n, d, f) = if d.leading_coefficient() >= 0 {
+            (n, d, fd.cloned())
+        } else {
+            (n.neg(), d.neg(), fd.map(Factors::neg))
+        };
+        if let Some(f) = f {
+            self.dens.record(&d, Arc::new(f));
         }
-        Ok((n, d))
+        (n, d)
+    }
+
+    /// `(num/g, den/g)` for `g = gcd(num, den)`, found from the factors of `den`
+    /// (see [`super::den_factors`]), with the factors of `den/g`.
+    fn cancel_den(&self, num: &Poly, den: &Poly) -> AlgResult<(Poly, Poly, Arc<Factors>)> {
+        let fd = self.dens.of(den)?;
+        if num.is_zero() {
+            return Ok((num.clone(), den.clone(), fd));
+        }
+        let (n, fg) = den_factors::cancel(num, &fd)?;
+        if fg.list.is_empty() && fg.unit == 1 {
+            return Ok((n, den.clone(), fd));
+        }
+        let d = exact(den, &fg.expand(den)?)?;
+        Ok((n, d, Arc::new(fd.div(&fg)?)))
     }
 
     pub(crate) fn v_add(&self, a: &Val, b: &Val, sub: bool) -> AlgResult<Val> {
@@ -92,21 +114,31 @@ impl Inner {
         }
         // Henrici: with g = gcd(D₁, D₂), the sum N/(D₁·D₂/g) can only cancel
         // factors of g, because N₁/D₁ and N₂/D₂ are in lowest terms.
-        let g = self.gcds.gcd(&a.den, &b.den)?;
+        let (fa, fb) = (self.dens.of(&a.den)?, self.dens.of(&b.den)?);
+        let fg = fa.gcd(&fb);
+        let g = fg.expand(&a.den)?;
         let ad = exact(&a.den, &g)?;
         let bd = exact(&b.den, &g)?;
         let n = combine(a.num.mul(&bd), b.num.mul(&ad));
         let d = a.den.mul(&bd);
-        let (num, den) = if g.is_one() {
-            self.lowest_terms(n, d)?
+        let fd = fa.mul(&fb.div(&fg)?);
+        if n.is_zero() {
+            let (num, den) = self.lowest_terms(n, d)?;
+            return Ok(Val { num, den, sh });
+        }
+        let (n, d, fd) = if g.is_one() {
+            (n, d, fd)
         } else {
-            let common = if n.is_zero() {
-                g
-            } else {
-                self.gcds.gcd(&n, &g)?
-            };
-            self.lowest_terms(exact(&n, &common)?, exact(&d, &common)?)?
+            let (n, fc) = den_factors::cancel(&n, &fg)?;
+            let d = exact(&d, &fc.expand(&d)?)?;
+            let fd = fd.div(&fc)?;
+            (n, d, fd)
         };
+        let size = n.len() + d.len();
+        if size > self.opts.max_terms {
+            return Err(AlgebraError::TooLarge(size, self.opts.max_terms));
+        }
+        let (num, den) = self.positive_den(n, d, Some(&fd));
         Ok(Val { num, den, sh })
     }
 
@@ -126,35 +158,44 @@ impl Inner {
         Ok((num, den))
     }
 
-    /// `(a/g, b/g)` for `g = gcd(a, b)`.
-    fn cancel(&self, a: &Poly, b: &Poly) -> AlgResult<(Poly, Poly)> {
+    /// `(a/g, b/g)` for `g = gcd(a, b)`, where `b` is a denominator, with the factors
+    /// of `b/g`.
+    fn cancel(&self, a: &Poly, b: &Poly) -> AlgResult<(Poly, Poly, Arc<Factors>)> {
         if b.is_one() || a.is_zero() {
-            return Ok((a.clone(), b.clone()));
+            let one = Factors::integer(rug::Integer::from(1));
+            let fb = if b.is_one() { Arc::new(one) } else { self.dens.of(b)? };
+            return Ok((a.clone(), b.clone(), fb));
         }
-        let g = self.gcds.gcd(a, b)?;
-        if g.is_one() {
-            return Ok((a.clone(), b.clone()));
-        }
-        Ok((exact(a, &g)?, exact(b, &g)?))
+        self.cancel_den(a, b)
     }
 
     pub(crate) fn v_mul(&self, a: &Val, b: &Val) -> AlgResult<Val> {
         let sh = a.sh.mul(&b.sh);
         // cancel crosswise before multiplying
-        let (an, bd) = self.cancel(&a.num, &b.den)?;
-        let (bn, ad) = self.cancel(&b.num, &a.den)?;
+        let (an, bd, fbd) = self.cancel(&a.num, &b.den)?;
+        let (bn, ad, fad) = self.cancel(&b.num, &a.den)?;
         let prod = an.mul(&bn);
         let reduced = self.reduce(prod.clone());
         let changed = reduced != prod;
         let den = ad.mul(&bd);
+        let fden = fad.mul(&fbd);
         // Crosswise cancellation leaves the product in lowest terms unless the
         // root relations changed the numerator.
-        let (num, den) = if changed {
-            self.normalise(reduced, den)?
-        } else if !den.is_one() {
-            self.lowest_terms(reduced, den)?
-        } else {
+        let (num, den) = if den.is_one() {
             (reduced, den)
+        } else if changed {
+            self.dens.record(&den, Arc::new(fden));
+            self.normalise(reduced, den)?
+        } else {
+            let size = reduced.len() + den.len();
+            if size > self.opts.max_terms {
+                return Err(AlgebraError::TooLarge(size, self.opts.max_terms));
+            }
+            if reduced.is_zero() {
+                (reduced, Poly::from_i64(&self.ctx, 1))
+            } else {
+                self.positive_den(reduced, den, Some(&fden))
+            }
         };
         Ok(Val { num, den, sh })
     }
@@ -176,11 +217,16 @@ impl Inner {
             prods.push((if *neg { num.neg() } else { num }, a.den.mul(&b.den)));
         }
         let sh = sh.ok_or_else(|| AlgebraError::Internal("an empty sum of products".into()))?;
-        let mut lcm = prods[0].1.clone();
-        for (_, q) in &prods[1..] {
-            let g = self.gcds.gcd(&lcm, q)?;
-            lcm = lcm.mul(&exact(q, &g)?);
+        let mut flcm: Option<Factors> = None;
+        for (a, b, _) in terms {
+            let f = self.dens.of(&a.den)?.mul(&*self.dens.of(&b.den)?);
+            flcm = Some(match flcm {
+                None => f,
+                Some(l) => l.lcm(&f),
+            });
         }
+        let flcm = flcm.ok_or_else(|| AlgebraError::Internal("an empty sum of products".into()))?;
+        let lcm = flcm.expand(&prods[0].1)?;
         let mut num = Poly::zero(&self.ctx);
         for (p, q) in &prods {
             num = num.add(&p.mul(&exact(&lcm, q)?));
@@ -190,6 +236,7 @@ impl Inner {
             // meet: then the products and sums one at a time
             return self.sum_stepwise(terms);
         }
+        self.dens.record(&lcm, Arc::new(flcm));
         let (num, den) = self.normalise(self.reduce(num), lcm)?;
         Ok(Val { num, den, sh })
     }

@@ -1,0 +1,415 @@
+//! Denominators in factored form, remembered per ring.
+//!
+//! A normal form `N/D` needs `gcd(N, D)` after almost every operation, and a
+//! multivariate gcd of two large polynomials is the costliest step of a derivation.
+//! The denominators, however, are products: a product's denominator is the product
+//! of the operands' (after crosswise cancellation), a sum's is their least common
+//! multiple, a quotient's comes from a numerator.  So the ring remembers each
+//! denominator as `unit · Π fᵢ^eᵢ` with primitive irreducible `fᵢ` of positive
+//! leading coefficient ([`Factors`]):
+//!
+//! - arithmetic derives the factors of a result's denominator from its operands'
+//!   (products add exponents, gcds take the smaller, least common multiples the
+//!   larger), and only a denominator met for the first time is factored by FLINT;
+//! - `gcd(N, D)` is then `c · Π fᵢ^kᵢ`, where `kᵢ ≤ eᵢ` is how often `fᵢ` divides `N`
+//!   (exact trial division) and `c` the gcd of the integer contents.  As every `fᵢ` is
+//!   primitive with positive leading coefficient, this is FLINT's gcd, term for term,
+//!   so the normal forms are unchanged (see [`cancel`]).
+//!
+//! The memo is bounded by the number of terms it holds, and is emptied when full.
+
+use super::error::{AlgResult, AlgebraError};
+use super::flint::{Factored, Poly};
+use rug::Integer;
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex};
+
+/// A denominator `unit · Π factorᵢ^expᵢ`: the factors primitive, irreducible, with
+/// positive leading coefficient, and pairwise distinct.
+#[derive(Clone, Debug)]
+pub(crate) struct Factors {
+    /// The integer unit: the content, with the sign of the denominator's leading
+    /// coefficient.
+    pub unit: Integer,
+    /// The irreducible factors with their multiplicities (all ≥ 1).
+    pub list: Vec<(Poly, u64)>,
+}
+
+impl Factors {
+    /// The factorisation of an integer.
+    pub(crate) fn integer(unit: Integer) -> Factors {
+        Factors {
+            unit,
+            list: Vec::new(),
+        }
+    }
+
+    fn from_flint(f: Factored) -> Factors {
+        Factors {
+            unit: f.constant,
+            list: f.factors,
+        }
+    }
+
+    /// The factors of `self · other`.
+    pub(crate) fn mul(&self, other: &Factors) -> Factors {
+        let mut list = self.list.clone();
+        for (f, e) in &other.list {
+            match list.iter_mut().find(|(g, _)| g == f) {
+                Some((_, k)) => *k += e,
+                None => list.push((f.clone(), *e)),
+            }
+        }
+        Factors {
+            unit: Integer::from(&self.unit * &other.unit),
+            list,
+        }
+    }
+
+    /// The factors of `gcd(self, other)` (positive unit).
+    pub(crate) fn gcd(&self, other: &Factors) -> Factors {
+        let list = self
+            .list
+            .iter()
+            .filter_map(|(f, e)| {
+                let k = other.exponent_of(f).min(*e);
+                (k > 0).then(|| (f.clone(), k))
+            })
+            .collect();
+        Factors {
+            unit: self.unit.clone().gcd(&other.unit),
+            list,
+        }
+    }
+
+    /// The factors of `lcm(self, other)` (positive unit).
+    pub(crate) fn lcm(&self, other: &Factors) -> Factors {
+        let mut list = self.list.clone();
+        for (f, e) in &other.list {
+            match list.iter_mut().find(|(g, _)| g == f) {
+                Some((_, k)) => *k = (*k).max(*e),
+                None => list.push((f.clone(), *e)),
+            }
+        }
+        Factors {
+            unit: self.unit.clone().lcm(&other.unit),
+            list,
+        }
+    }
+
+    /// The factors of `self / other`, where `other` divides `self`.
+    pub(crate) fn div(&self, other: &Factors) -> AlgResult<Factors> {
+        let mut list = Vec::with_capacity(self.list.len());
+        for (f, e) in &self.list {
+            let k = other.exponent_of(f);
+            if k > *e {
+                return Err(not_a_divisor());
+            }
+            if k < *e {
+                list.push((f.clone(), e - k));
+            }
+        }
+        let (q, r) = self.unit.clone().div_rem(other.unit.clone());
+        if r != 0 || other.list.iter().any(|(f, _)| self.exponent_of(f) == 0) {
+            return Err(not_a_divisor());
+        }
+        Ok(Factors { unit: q, list })
+    }
+
+    /// The factors of the square root with positive leading coefficient, if every
+    /// exponent is even and the unit a positive square.
+    pub(crate) fn half(&self) -> Option<Factors> {
+        if self.unit < 0 || self.list.iter().any(|(_, e)| e % 2 != 0) {
+            return None;
+        }
+        let (root, rem) = self.unit.clone().sqrt_rem(Integer::new());
+        if rem != 0 {
+            return None;
+        }
+        Some(Factors {
+            unit: root,
+            list: self.list.iter().map(|(f, e)| (f.clone(), e / 2)).collect(),
+        })
+    }
+
+    /// The factors of `-self`.
+    pub(crate) fn neg(&self) -> Factors {
+        Factors {
+            unit: Integer::from(-&self.unit),
+            list: self.list.clone(),
+        }
+    }
+
+    fn exponent_of(&self, f: &Poly) -> u64 {
+        self.list
+            .iter()
+            .find(|(g, _)| g.len() == f.len() && g == f)
+            .map_or(0, |(_, e)| *e)
+    }
+
+    /// The product, multiplied out.
+    pub(crate) fn expand(&self, like: &Poly) -> AlgResult<Poly> {
+        let mut p = Poly::from_integer(like.ctx(), &self.unit);
+        for (f, e) in &self.list {
+            p = p.mul(&f.pow(*e)?);
+        }
+        Ok(p)
+    }
+
+    fn terms(&self) -> usize {
+        self.list.iter().map(|(f, _)| f.len()).sum::<usize>() + 1
+    }
+}
+
+fn not_a_divisor() -> AlgebraError {
+    AlgebraError::Internal("a factored denominator does not divide".into())
+}
+
+/// The memo is emptied when the polynomials it holds exceed this many terms.
+const CAPACITY_TERMS: usize = 2_000_000;
+
+#[derive(Default)]
+struct Entries {
+    map: HashMap<Poly, Arc<Factors>>,
+    terms: usize,
+}
+
+/// The remembered factorisations of a ring's denominators (see the module
+/// documentation).
+#[derive(Default)]
+pub(crate) struct DenFactors {
+    entries: Mutex<Entries>,
+}
+
+impl DenFactors {
+    /// The factorisation of `d` (non-zero): remembered, or computed by FLINT and
+    /// remembered.
+    pub(crate) fn of(&self, d: &Poly) -> AlgResult<Arc<Factors>> {
+        if let Some(c) = d.as_constant() {
+            return Ok(Arc::new(Factors::integer(c)));
+        }
+        if let Some(f) = self.lock().map.get(d) {
+            return Ok(f.clone());
+        }
+        let f = Arc::new(factor(d)?);
+        self.record(d, f.clone());
+        Ok(f)
+    }
+
+    /// Remembers that `d` has the factorisation `f` (derived by the caller from its
+    /// operands').
+    pub(crate) fn record(&self, d: &Poly, f: Arc<Factors>) {
+        if d.as_constant().is_some() {
+            return;
+        }
+        debug_assert!(f.expand(d).is_ok_and(|p| &p == d), "a wrong factorisation");
+        let mut entries = self.lock();
+        let size = d.len() + f.terms();
+        if entries.terms + size > CAPACITY_TERMS {
+            entries.map.clear();
+            entries.terms = 0;
+        }
+        if entries.map.insert(d.clone(), f).is_none() {
+            entries.terms += size;
+        }
+    }
+
+    fn lock(&self) -> std::sync::MutexGuard<'_, Entries> {
+        // A poisoned memo only lost an entry; its contents stay valid.
+        self.entries.lock().unwrap_or_else(|e| e.into_inner())
+    }
+}
+
+/// The factorisation of a non-constant `d`: directly for a monomial and for a
+/// polynomial of total degree 1 (irreducible after its content), recalled for a
+/// polynomial factored before in any ring (the factorisation depends on the terms
+/// alone), by FLINT otherwise.
+fn factor(d: &Poly) -> AlgResult<Factors> {
+    if d.len() == 1 {
+        let mut list = Vec::new();
+        let mut unit = Integer::new();
+        d.for_each_term(|c, e| {
+            unit = c.clone();
+            for (i, &k) in e.iter().enumerate() {
+                if k > 0 {
+                    list.push((Poly::var(d.ctx(), i), k));
+                }
+            }
+        });
+        return Ok(Factors { unit, list });
+    }
+    if d.total_degree() == 1 {
+        let c = d.integer_content();
+        let unit = if d.leading_coefficient() < 0 { -c.clone() } else { c };
+        let f = d.div_integer(&unit)?;
+        return Ok(Factors {
+            unit,
+            list: vec![(f, 1)],
+        });
+    }
+    let key = TermKey::of(d);
+    if let Some(f) = global().get(&key) {
+        return Ok(Factors {
+            unit: f.0.clone(),
+            list: f.1.iter().map(|(k, e)| (k.poly(d), *e)).collect(),
+        });
+    }
+    let f = Factors::from_flint(d.factor()?);
+    let stored = (
+        f.unit.clone(),
+        f.list.iter().map(|(p, e)| (TermKey::of(p), *e)).collect(),
+    );
+    global().insert(key, Arc::new(stored));
+    Ok(f)
+}
+
+/// A polynomial's terms, independent of its ring: the key of the factorisations
+/// remembered across rings.
+#[derive(Clone, PartialEq, Eq, Hash)]
+struct TermKey(Vec<(Integer, Vec<u64>)>);
+
+impl TermKey {
+    fn of(p: &Poly) -> TermKey {
+        let mut terms = Vec::with_capacity(p.len());
+        p.for_each_term(|c, e| terms.push((c.clone(), e.to_vec())));
+        TermKey(terms)
+    }
+
+    /// The polynomial in the ring of `like` (whose number of variables the key's
+    /// exponent vectors have).
+    fn poly(&self, like: &Poly) -> Poly {
+        Poly::from_terms(like.ctx(), self.0.iter().map(|(c, e)| (c, e.as_slice())))
+    }
+
+    fn terms(&self) -> usize {
+        self.0.len()
+    }
+}
+
+type Stored = Arc<(Integer, Vec<(TermKey, u64)>)>;
+
+/// Factorisations remembered across rings (bounded like a ring's memo).
+struct Global {
+    map: HashMap<TermKey, Stored>,
+    terms: usize,
+}
+
+struct GlobalHandle(std::sync::MutexGuard<'static, Option<Global>>);
+
+impl GlobalHandle {
+    fn get(&mut self, key: &TermKey) -> Option<Stored> {
+        self.0.as_ref().and_then(|g| g.map.get(key).cloned())
+    }
+
+    fn insert(&mut self, key: TermKey, f: Stored) {
+        let g = self.0.get_or_insert_with(|| Global {
+            map: HashMap::new(),
+            terms: 0,
+        });
+        let size = key.terms() + f.1.iter().map(|(k, _)| k.terms()).sum::<usize>();
+        if g.terms + size > CAPACITY_TERMS {
+            g.map.clear();
+            g.terms = 0;
+        }
+        g.terms += size;
+        g.map.insert(key, f);
+    }
+}
+
+static GLOBAL: Mutex<Option<Global>> = Mutex::new(None);
+
+fn global() -> GlobalHandle {
+    GlobalHandle(GLOBAL.lock().unwrap_or_else(|e| e.into_inner()))
+}
+
+/// `(n/g, g)` for `g = gcd(n, d)` (FLINT's gcd: positive leading coefficient, integer
+/// content included), where `fd` is the factorisation of `d`, with the factors of `g`.
+///
+/// Each factor of `d` is divided out of `n` as often as it divides it, at most its
+/// multiplicity in `d`; the integer contents share their gcd.
+pub(crate) fn cancel(n: &Poly, fd: &Factors) -> AlgResult<(Poly, Factors)> {
+    let mut cur = n.clone();
+    let mut list = Vec::new();
+    for (f, e) in &fd.list {
+        let mut k = 0;
+        while k < *e {
+            match cur.divides(f)? {
+                Some(q) => {
+                    cur = q;
+                    k += 1;
+                }
+                None => break,
+            }
+        }
+        if k > 0 {
+            list.push((f.clone(), k));
+        }
+    }
+    let c = if fd.unit == 1 || fd.unit == -1 {
+        Integer::from(1)
+    } else {
+        cur.integer_content().gcd(&fd.unit)
+    };
+    if c != 1 {
+        cur = cur.div_integer(&c)?;
+    }
+    Ok((cur, Factors { unit: c, list }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::flint::Ctx;
+
+    fn polys() -> (Arc<Ctx>, Poly, Poly, Poly) {
+        let ctx = Ctx::new(3);
+        let (x, y, z) = (Poly::var(&ctx, 0), Poly::var(&ctx, 1), Poly::var(&ctx, 2));
+        let one = Poly::from_i64(&ctx, 1);
+        // x − y, x·z + 1, y² + z
+        let a = x.sub(&y);
+        let b = x.mul(&z).add(&one);
+        let c = y.mul(&y).add(&z);
+        (ctx, a, b, c)
+    }
+
+    #[test]
+    fn cancelling_by_factors_is_flints_gcd() {
+        let (ctx, a, b, c) = polys();
+        let six = Poly::from_i64(&ctx, 6);
+        let four = Poly::from_i64(&ctx, 4);
+        // d = 6 a² b, n = 4 a b² c: gcd = 2 a b
+        let d = six.mul(&a).mul(&a).mul(&b);
+        let n = four.mul(&a).mul(&b).mul(&b).mul(&c);
+        let memo = DenFactors::default();
+        let fd = memo.of(&d).unwrap();
+        let (rest, fg) = cancel(&n, &fd).unwrap();
+        let g = n.gcd(&d).unwrap();
+        assert_eq!(fg.expand(&d).unwrap(), g);
+        assert_eq!(rest, n.divides(&g).unwrap().unwrap());
+        // a numerator of negative sign and coprime to d
+        let m = c.neg();
+        let (rest, fg) = cancel(&m, &fd).unwrap();
+        assert_eq!(rest, m);
+        assert!(fg.expand(&d).unwrap().is_one());
+    }
+
+    #[test]
+    fn derived_factorisations_multiply_out_to_their_polynomials() {
+        let (ctx, a, b, c) = polys();
+        let memo = DenFactors::default();
+        let two = Poly::from_i64(&ctx, 2);
+        let p = two.mul(&a).mul(&b).mul(&b);
+        let q = a.mul(&a).mul(&c).neg();
+        let (fp, fq) = (memo.of(&p).unwrap(), memo.of(&q).unwrap());
+        assert_eq!(fp.mul(&fq).expand(&p).unwrap(), p.mul(&q));
+        let g = fp.gcd(&fq);
+        assert_eq!(g.expand(&p).unwrap(), p.gcd(&q).unwrap());
+        let l = fp.lcm(&fq).expand(&p).unwrap();
+        assert_eq!(l.divides(&p).unwrap().is_some(), true);
+        assert_eq!(l.divides(&q).unwrap().is_some(), true);
+        assert_eq!(l.len(), p.mul(&q).divides(&p.gcd(&q).unwrap()).unwrap().unwrap().len());
+        assert_eq!(fp.div(&g).unwrap().expand(&p).unwrap(), p.divides(&p.gcd(&q).unwrap()).unwrap().unwrap());
+        assert!(fp.div(&fq).is_err());
+        assert_eq!(fq.neg().expand(&q).unwrap(), q.neg());
+    }
+}
