@@ -394,9 +394,9 @@ impl Poly {
     /// Algorithm: FLINT's Zippel variant `fmpz_mpoly_gcd_zippel2` (sparse
     /// interpolation with Kaltofen–Monagan scaling, exact over ℤ), and FLINT's general
     /// `fmpz_mpoly_gcd` (which picks among Brown, Zippel and Hensel) where it gives up.
-    /// On the gcds of the catalogue's proofs the Zippel variant takes 64 % of the time
-    /// of the general choice, whose dense Brown route is up to 20× slower on the
-    /// 7-variable denominators of the phase-step proofs.
+    /// On the 7-variable denominators of the phase-step proofs the Zippel variant takes
+    /// 64 % of the time of the general choice, whose dense Brown route is up to 20×
+    /// slower.  (The normal forms need few gcds: see `den_factors`.)
     ///
     /// ```
     /// use eulertop::algebra::flint::{Ctx, Poly};
@@ -529,12 +529,6 @@ impl Poly {
         // SAFETY: buffer has nvars entries.
         unsafe { fm::fmpz_mpoly_degrees_si(d.as_mut_ptr(), &self.raw, self.ctx.ptr()) };
         d
-    }
-
-    /// The total degree (−1 for the zero polynomial).
-    pub fn total_degree(&self) -> i64 {
-        // SAFETY: initialised polynomial.
-        unsafe { fm::fmpz_mpoly_total_degree_si(&self.raw, self.ctx.ptr()) }
     }
 
     /// The degree in variable `i` (−1 for the zero polynomial).

@@ -113,7 +113,6 @@ mod derive;
 pub mod elliptic;
 mod error;
 pub mod flint;
-mod gcd_memo;
 mod lattice;
 mod node;
 mod opaque;

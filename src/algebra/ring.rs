@@ -9,10 +9,9 @@
 //! transcendental symbols such as `sn` of a base argument) is variable `R + j`.  The
 //! leading monomial of `rᵢ² − aᵢ` is then `rᵢ²`, and these are pairwise coprime.
 
+use super::den_factors::DenFactors;
 use super::error::{AlgResult, AlgebraError};
 use super::flint::{Ctx, Poly};
-use super::gcd_memo::GcdMemo;
-use super::den_factors::DenFactors;
 use super::node::Node;
 use super::shadow::Shadow;
 use super::square_classes::FactorBasis;
@@ -235,8 +234,6 @@ pub(crate) struct Inner {
     pub ctx: Arc<Ctx>,
     pub opts: RingOptions,
     pub state: Mutex<State>,
-    /// Remembered gcds of the ring's polynomials.
-    pub gcds: GcdMemo,
     /// Remembered factorisations of the ring's denominators.
     pub dens: DenFactors,
     /// Set with the first error: the ring's values are then meaningless, and the
@@ -302,7 +299,6 @@ impl Ring {
                 ctx,
                 opts,
                 state: Mutex::new(state),
-                gcds: GcdMemo::default(),
                 dens: DenFactors::default(),
                 poisoned: std::sync::atomic::AtomicBool::new(false),
             }),

@@ -82,7 +82,13 @@ impl Ring {
                 constant: c,
                 factors: Vec::new(),
             },
-            None => rest.factor()?,
+            None => {
+                let f = super::den_factors::factor(&rest)?;
+                super::flint::Factored {
+                    constant: f.unit,
+                    factors: f.list,
+                }
+            }
         };
         let (sign, primes) = factor_integer(&fac.constant)?;
         let mut st = self.state();

@@ -8,8 +8,8 @@
 //! Over the field ℚ(x) and roots of pairwise independent radicands the form is unique,
 //! so a value is zero exactly when `N = 0`.
 
-use super::error::{AlgResult, AlgebraError};
 use super::den_factors::{self, Factors};
+use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
 use super::node::{Node, Op};
 use super::ring::{Inner, Ring, Stored};
@@ -163,7 +163,11 @@ impl Inner {
     fn cancel(&self, a: &Poly, b: &Poly) -> AlgResult<(Poly, Poly, Arc<Factors>)> {
         if b.is_one() || a.is_zero() {
             let one = Factors::integer(rug::Integer::from(1));
-            let fb = if b.is_one() { Arc::new(one) } else { self.dens.of(b)? };
+            let fb = if b.is_one() {
+                Arc::new(one)
+            } else {
+                self.dens.of(b)?
+            };
             return Ok((a.clone(), b.clone(), fb));
         }
         self.cancel_den(a, b)
