@@ -16,7 +16,7 @@ use super::node::Node;
 use super::shadow::Shadow;
 use super::square_classes::FactorBasis;
 use super::val::Val;
-use rug::{Complex, Float, Rational};
+use rug::{Assign, Complex, Float, Rational};
 use std::sync::{Arc, Mutex, MutexGuard};
 
 /// Options of a [`Ring`].
@@ -603,19 +603,18 @@ impl Inner {
         let prec = self.opts.precision;
         let npts = self.opts.points;
         let mut out = vec![Complex::with_val(prec, 0); npts];
+        let powers = Powers::new(p, vals, prec);
+        let mut t = Complex::new(prec);
         p.for_each_term(|c, e| {
             for (pt, acc) in out.iter_mut().enumerate() {
-                let mut t = Complex::with_val(prec, (Float::with_val(prec, c), 0));
+                t.mut_real().assign(c);
+                t.mut_imag().assign(0);
                 for (idx, &k) in e.iter().enumerate() {
                     if k > 0 {
-                        let mut pw = Complex::with_val(prec, &vals[idx][pt]);
-                        for _ in 1..k {
-                            pw *= &vals[idx][pt];
-                        }
-                        t *= pw;
+                        t *= powers.get(idx, k, pt);
                     }
                 }
-                *acc += t;
+                *acc += &t;
             }
         });
         out
@@ -632,17 +631,21 @@ impl Inner {
         let mut out = vec![Complex::with_val(prec, 0); npts];
         let mut size = vec![Float::with_val(64, 0); npts];
         let mut roundings = 1u64;
+        let mut t = Complex::new(prec);
+        let mut modulus = Float::new(64);
         p.for_each_term(|c, e| {
             roundings += 2 + e.iter().sum::<u64>();
             for (pt, acc) in out.iter_mut().enumerate() {
-                let mut t = Complex::with_val(prec, (Float::with_val(prec, c), 0));
+                t.mut_real().assign(c);
+                t.mut_imag().assign(0);
                 for (idx, &k) in e.iter().enumerate() {
                     for _ in 0..k {
                         t *= &vals[idx][pt];
                     }
                 }
-                size[pt] += Float::with_val(64, t.abs_ref());
-                *acc += t;
+                modulus.assign(t.abs_ref());
+                size[pt] += &modulus;
+                *acc += &t;
             }
         });
         let extra = (roundings as f64).log2();
@@ -672,5 +675,43 @@ impl Inner {
         need.sort_unstable();
         need.dedup();
         need.iter().map(|&i| st.roots[i].relation.clone()).collect()
+    }
+}
+
+/// The powers `vᵏ` of the variables' values at the points, each computed once as
+/// `((v·v)·v)…`, the order in which a term's evaluation would compute it.
+struct Powers {
+    /// `table[idx][k − 1][pt]`.
+    table: Vec<Vec<Vec<Complex>>>,
+}
+
+impl Powers {
+    fn new(p: &Poly, vals: &[Vec<Complex>], prec: u32) -> Powers {
+        let degs = p.degrees();
+        let table = vals
+            .iter()
+            .enumerate()
+            .map(|(idx, v)| {
+                let d = degs.get(idx).copied().unwrap_or(0).max(0) as usize;
+                let mut rows: Vec<Vec<Complex>> = Vec::with_capacity(d);
+                while rows.len() < d {
+                    let row = match rows.last() {
+                        None => v.iter().map(|x| Complex::with_val(prec, x)).collect(),
+                        Some(prev) => prev
+                            .iter()
+                            .zip(v)
+                            .map(|(a, b)| Complex::with_val(prec, a * b))
+                            .collect(),
+                    };
+                    rows.push(row);
+                }
+                rows
+            })
+            .collect();
+        Powers { table }
+    }
+
+    fn get(&self, idx: usize, k: u64, pt: usize) -> &Complex {
+        &self.table[idx][k as usize - 1][pt]
     }
 }
