@@ -56,6 +56,7 @@ criterion_group!(benches, proofs);
 /// `eulertop` binary does), so that the MPFR figures are the product's.
 fn main() {
     eulertop::numbers::gmp_kernels::select();
+    eulertop::allocator::small_pages();
     benches();
     Criterion::default().configure_from_args().final_summary();
 }

@@ -13,6 +13,7 @@
 #![allow(clippy::wrong_self_convention)]
 
 pub mod algebra;
+pub mod allocator;
 pub mod bindings;
 pub mod claims;
 pub mod cli;

@@ -42,6 +42,7 @@ enum Command {
 fn main() -> ExitCode {
     // before any other thread runs (see the module's documentation)
     eulertop::numbers::gmp_kernels::select();
+    eulertop::allocator::small_pages();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         // help and version (exit 0) go to standard output, usage errors (exit 2) to

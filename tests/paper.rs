@@ -87,6 +87,7 @@ fn main() {
     let args = Arguments::from_args();
     // GMP's kernels for this processor, before any other thread runs
     eulertop::numbers::gmp_kernels::select();
+    eulertop::allocator::small_pages();
     let cat = match load_dir(
         Path::new("identities"),
         eulertop::bindings::euler_top::registry().expect("the model's registry"),
