@@ -51,6 +51,18 @@ impl Factors {
         }
     }
 
+    /// Whether this is the factorisation of 1.
+    pub(crate) fn is_one(&self) -> bool {
+        self.unit == 1 && self.list.is_empty()
+    }
+
+    /// Whether `self` and `other` are the same product (the same unit and factors).
+    pub(crate) fn same_as(&self, other: &Factors) -> bool {
+        self.unit == other.unit
+            && self.list.len() == other.list.len()
+            && self.list.iter().all(|(f, e)| other.exponent_of(f) == *e)
+    }
+
     /// The factors of `self · other`.
     pub(crate) fn mul(&self, other: &Factors) -> Factors {
         let mut list = self.list.clone();
@@ -316,17 +328,25 @@ fn global() -> GlobalHandle {
 /// content included), where `fd` is the factorisation of `d`, with the factors of `g`.
 ///
 /// Each factor of `d` is divided out of `n` as often as it divides it, at most its
-/// multiplicity in `d`; the integer contents share their gcd.
+/// multiplicity in `d` (a factor of higher degree than `n` in some variable is not
+/// tried); the integer contents share their gcd.
 pub(crate) fn cancel(n: &Poly, fd: &Factors) -> AlgResult<(Poly, Factors)> {
     let mut cur = n.clone();
     let mut list = Vec::new();
+    // A factor of higher degree than `cur` in some variable cannot divide it (the
+    // degrees of an exact quotient are the differences).
+    let mut degs = cur.degrees();
     for (f, e) in &fd.list {
+        let fdegs = f.degrees();
         let mut k = 0;
-        while k < *e {
+        while k < *e && fdegs.iter().zip(&degs).all(|(a, b)| a <= b) {
             match cur.divides(f)? {
                 Some(q) => {
                     cur = q;
                     k += 1;
+                    for (b, a) in degs.iter_mut().zip(&fdegs) {
+                        *b -= a;
+                    }
                 }
                 None => break,
             }

@@ -116,9 +116,19 @@ impl Inner {
         // factors of g, because N₁/D₁ and N₂/D₂ are in lowest terms.
         let (fa, fb) = (self.dens.of(&a.den)?, self.dens.of(&b.den)?);
         let fg = fa.gcd(&fb);
-        let g = fg.expand(&a.den)?;
-        let ad = exact(&a.den, &g)?;
-        let bd = exact(&b.den, &g)?;
+        let one = Poly::from_i64(&self.ctx, 1);
+        // g, a.den/g and b.den/g, without a division where g is 1 or one of them
+        let (g, ad, bd) = if fg.is_one() {
+            (one, a.den.clone(), b.den.clone())
+        } else if fg.same_as(&fa) {
+            (a.den.clone(), one, exact(&b.den, &a.den)?)
+        } else if fg.same_as(&fb) {
+            (b.den.clone(), exact(&a.den, &b.den)?, one)
+        } else {
+            let g = fg.expand(&a.den)?;
+            let (ad, bd) = (exact(&a.den, &g)?, exact(&b.den, &g)?);
+            (g, ad, bd)
+        };
         let n = combine(a.num.mul(&bd), b.num.mul(&ad));
         let d = a.den.mul(&bd);
         let fd = fa.mul(&fb.div(&fg)?);
