@@ -31,6 +31,9 @@ This script:
     checked (roots: 2 r r' = a'; sn: s' = c d u' (+ the modulus terms); indeterminates;
     a `param`, a parameter of the proof's chart such as a phase step, has derivative 0
     with respect to the other variables);
+  * a proof by parts of the domain writes one certificate per part, each from its own
+    `# eulertop certificate` header; each part is rechecked with its own symbols, as the
+    same name may stand for another root in another part;
   * a lemma's stated value (a proved step value) enters as the derivation of its value;
     the certificate names the lemma in an assumption line, and the lemma has its own
     certificate;
@@ -970,10 +973,10 @@ class Cert:
             raise CheckError(f"unknown statement '{word}'")
         return 0
 
-    def run(self, text):
+    def run(self, text, first_line=1):
         self.declare(text)
         claims = 0
-        for ln, line in enumerate(text.splitlines(), 1):
+        for ln, line in enumerate(text.splitlines(), first_line):
             line = line.split("  #", 1)[0].rstrip() if not line.startswith("#") else ""
             if not line:
                 continue
@@ -1094,19 +1097,39 @@ def files(paths):
             yield p
 
 
+def parts(text):
+    """The certificates a file holds, as (first line number, text): a proof by parts of
+    the domain writes one certificate per part, each from its own header on, and each
+    declares its own symbols (the same name may stand for another root in another part)."""
+    lines = text.splitlines()
+    starts = [i for i, ln in enumerate(lines) if ln.startswith(HEADER)] or [0]
+    if starts[0] != 0:
+        starts.insert(0, 0)
+    ends = starts[1:] + [len(lines)]
+    return [(a + 1, "\n".join(lines[a:b])) for a, b in zip(starts, ends)]
+
+
+HEADER = "# eulertop certificate "
+
+
 def check_text(name, text):
-    """(True, summary) when the certificate text rechecks, else (False, reason)."""
-    cert = Cert(name)
-    try:
-        claims = cert.run(text)
-        return True, f"{claims} claim(s), {cert.checked} equalities checked"
-    except (CheckError, KeyError, ValueError, IndexError) as e:
-        return False, f"{type(e).__name__ + ' ' if not isinstance(e, CheckError) else ''}{e}"
+    """(True, summary) when every certificate of the text rechecks, each with symbols of
+    its own, else (False, reason)."""
+    claims = checked = 0
+    for first, part in parts(text):
+        cert = Cert(name)
+        try:
+            claims += cert.run(part, first)
+            checked += cert.checked
+        except (CheckError, KeyError, ValueError, IndexError) as e:
+            return False, f"{type(e).__name__ + ' ' if not isinstance(e, CheckError) else ''}{e}"
+    return True, f"{claims} claim(s), {checked} equalities checked"
 
 
 def corruptions(text):
     """Corrupted copies of a certificate, as (what, text) pairs: one coefficient of the
-    last product node's stated normal form, the first root's radicand (+ 1), the first
+    last product node's stated normal form, the first root's radicand (+ 1), in a
+    certificate of several parts the last part's last radicand (+ 1), the first
     equivalent argument of an inverse of sn, cn, dn (+ 1, where there is one), the first
     proved sign (flipped, where there is one), the first claim's right-hand side (+ 1)."""
     lines = text.splitlines()
@@ -1123,10 +1146,13 @@ def corruptions(text):
         first = f"{m.group(1)}{int(m.group(2)) + 1}*{nf[m.end():]}" if m else re.sub(r"^(-?)", r"\g<1>2*", nf)
         swap(i, [f"{head}-> ({first}"], "one coefficient of the stated normal form changed")
     roots = [i for i, ln in enumerate(lines) if ln.startswith("root ")]
-    if roots:
-        i = roots[0]
+    last_part = max((i for i, ln in enumerate(lines) if ln.startswith(HEADER)), default=0)
+    later = [i for i in roots if i > last_part]
+    for i, what in ([(roots[0], "radicand + 1")] if roots else []) + (
+        [(later[-1], "the last part's last radicand + 1 (a part has roots of its own)")] if last_part and later else []
+    ):
         head, rad = lines[i].split("  #", 1)[0].split("=", 1)
-        swap(i, [f"{head}= {rad.strip()} + 1"], "radicand + 1")
+        swap(i, [f"{head}= {rad.strip()} + 1"], what)
     equivs = [i for i, ln in enumerate(lines) if ln.startswith("equiv ") and " arg=(" in ln]
     if equivs:
         i = equivs[0]

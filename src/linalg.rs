@@ -200,13 +200,16 @@ impl<S: Scalar> Neg for Mat3<S> {
         Self::from_fn(|i, j| -self.0[i][j].clone())
     }
 }
+/// The matrix product, each entry one [`Scalar::dot3`]: numbers round as `a·b + c·d + e·f`
+/// always did, and the prover forms each entry over one common denominator.
 impl<S: Scalar> Mul for Mat3<S> {
     type Output = Self;
     fn mul(self, o: Self) -> Self {
         Self::from_fn(|i, j| {
-            self.0[i][0].clone() * o.0[0][j].clone()
-                + self.0[i][1].clone() * o.0[1][j].clone()
-                + self.0[i][2].clone() * o.0[2][j].clone()
+            S::dot3(
+                [&self.0[i][0], &self.0[i][1], &self.0[i][2]],
+                [&o.0[0][j], &o.0[1][j], &o.0[2][j]],
+            )
         })
     }
 }
