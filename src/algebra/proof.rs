@@ -241,12 +241,17 @@ fn overflow<T>(ring: &Ring, built: &AlgResult<T>) -> Option<usize> {
 /// explode, such as written-out iterations, do not).
 fn more_room(ring: &Ring, opts: &mut RingOptions, rebases: &mut usize, size: usize) -> bool {
     let hints = ring.rebase_hints();
+    let just_beyond = opts.max_terms == MAX_TERMS && size < 2 * MAX_TERMS;
     if *rebases < 3 && hints != opts.base_hints {
         *rebases += 1;
         opts.base_hints = hints;
+        if just_beyond {
+            // the next attempt may need the room too: one attempt less when it does
+            opts.max_terms = 2 * MAX_TERMS;
+        }
         return true;
     }
-    if opts.max_terms == MAX_TERMS && size < 2 * MAX_TERMS {
+    if just_beyond {
         opts.max_terms = 2 * MAX_TERMS;
         return true;
     }
