@@ -180,6 +180,10 @@ fn not_a_divisor() -> AlgebraError {
 /// The memo is emptied when the polynomials it holds exceed this many terms.
 const CAPACITY_TERMS: usize = 2_000_000;
 
+/// The factorisations remembered across rings are forgotten beyond this many terms
+/// (a term takes some tens of bytes: a coefficient and a few exponents).
+const GLOBAL_CAPACITY_TERMS: usize = 500_000;
+
 #[derive(Default)]
 struct Entries {
     map: HashMap<Poly, Arc<Factors>>,
@@ -266,25 +270,42 @@ pub(crate) fn factor(d: &Poly) -> AlgResult<Factors> {
 }
 
 /// A polynomial's terms, independent of its ring: the key of the factorisations
-/// remembered across rings.
+/// remembered across rings.  The number of variables, then each term's coefficient and
+/// its non-zero exponents as (variable, exponent).
 #[derive(Clone, PartialEq, Eq, Hash)]
-struct TermKey(Vec<(Integer, Vec<u64>)>);
+struct TermKey(usize, Vec<(Integer, Vec<(u32, u64)>)>);
 
 impl TermKey {
     fn of(p: &Poly) -> TermKey {
         let mut terms = Vec::with_capacity(p.len());
-        p.for_each_term(|c, e| terms.push((c.clone(), e.to_vec())));
-        TermKey(terms)
+        p.for_each_term(|c, e| {
+            let sparse = (0u32..)
+                .zip(e)
+                .filter(|(_, &k)| k > 0)
+                .map(|(i, &k)| (i, k));
+            terms.push((c.clone(), sparse.collect()));
+        });
+        TermKey(p.ctx().nvars(), terms)
     }
 
-    /// The polynomial in the ring of `like` (whose number of variables the key's
-    /// exponent vectors have).
+    /// The polynomial in the ring of `like`, which has the key's number of variables.
     fn poly(&self, like: &Poly) -> Poly {
-        Poly::from_terms(like.ctx(), self.0.iter().map(|(c, e)| (c, e.as_slice())))
+        let full: Vec<(Integer, Vec<u64>)> = self
+            .1
+            .iter()
+            .map(|(c, sparse)| {
+                let mut e = vec![0u64; self.0];
+                for &(i, k) in sparse {
+                    e[i as usize] = k;
+                }
+                (c.clone(), e)
+            })
+            .collect();
+        Poly::from_terms(like.ctx(), full.iter().map(|(c, e)| (c, e.as_slice())))
     }
 
     fn terms(&self) -> usize {
-        self.0.len()
+        self.1.len()
     }
 }
 
@@ -309,7 +330,7 @@ impl GlobalHandle {
             terms: 0,
         });
         let size = key.terms() + f.1.iter().map(|(k, _)| k.terms()).sum::<usize>();
-        if g.terms + size > CAPACITY_TERMS {
+        if g.terms + size > GLOBAL_CAPACITY_TERMS {
             g.map.clear();
             g.terms = 0;
         }
