@@ -446,4 +446,46 @@ mod tests {
         assert!(fp.div(&fq).is_err());
         assert_eq!(fq.neg().expand(&q).unwrap(), q.neg());
     }
+
+    use proptest::prelude::*;
+
+    /// A polynomial in three variables from (coefficient, exponents) terms.
+    fn poly(ctx: &Arc<Ctx>, terms: &[(i64, [u64; 3])]) -> Poly {
+        let cs: Vec<Integer> = terms.iter().map(|(c, _)| Integer::from(*c)).collect();
+        Poly::from_terms(ctx, cs.iter().zip(terms).map(|(c, (_, e))| (c, &e[..])))
+    }
+
+    fn terms() -> impl Strategy<Value = Vec<(i64, [u64; 3])>> {
+        let coefficient = (1i64..=3, any::<bool>()).prop_map(|(c, neg)| if neg { -c } else { c });
+        prop::collection::vec((coefficient, [0u64..3, 0u64..3, 0u64..3]), 1..4)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
+
+        /// Cancelling `n/d` by the factors of `d` divides out FLINT's gcd, and the
+        /// factorisations derived for products, gcds and quotients multiply out to the
+        /// polynomials FLINT computes.
+        #[test]
+        fn factored_cancellation_is_flints_gcd(a in terms(), b in terms(), c in terms(), e in 1u64..3) {
+            let ctx = Ctx::new(3);
+            let (a, b, c) = (poly(&ctx, &a), poly(&ctx, &b), poly(&ctx, &c));
+            prop_assume!(!a.is_zero() && !b.is_zero() && !c.is_zero());
+            let d = a.mul(&b.pow(e).unwrap());
+            let n = b.mul(&c);
+            let memo = DenFactors::default();
+            let fd = memo.of(&d).unwrap();
+            let (rest, fg) = cancel(&n, &fd).unwrap();
+            let g = n.gcd(&d).unwrap();
+            let mine = fg.expand(&d).unwrap();
+            prop_assert_eq!(&mine, &g);
+            prop_assert_eq!(rest, n.divides(&g).unwrap().unwrap());
+            let fq = fd.div(&fg).unwrap();
+            prop_assert_eq!(fq.expand(&d).unwrap(), d.divides(&g).unwrap().unwrap());
+            let fc = memo.of(&c).unwrap();
+            prop_assert_eq!(fd.mul(&fc).expand(&d).unwrap(), d.mul(&c));
+            let common = fd.gcd(&fc).expand(&d).unwrap();
+            prop_assert_eq!(common, d.gcd(&c).unwrap());
+        }
+    }
 }
