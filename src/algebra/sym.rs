@@ -132,11 +132,7 @@ impl Inner {
         let n = combine(a.num.mul(&bd), b.num.mul(&ad));
         let d = a.den.mul(&bd);
         let fd = fa.mul(&fb.div(&fg)?);
-        if n.is_zero() {
-            let (num, den) = self.lowest_terms(n, d)?;
-            return Ok(Val { num, den, sh });
-        }
-        let (n, d, fd) = if g.is_one() {
+        let (n, d, fd) = if g.is_one() || n.is_zero() {
             (n, d, fd)
         } else {
             let (n, fc) = den_factors::cancel(&n, &fg)?;
@@ -144,17 +140,24 @@ impl Inner {
             let fd = fd.div(&fc)?;
             (n, d, fd)
         };
-        let size = n.len() + d.len();
-        if size > self.opts.max_terms {
-            return Err(AlgebraError::TooLarge(size, self.opts.max_terms));
-        }
-        let (num, den) = self.positive_den(n, d, Some(&fd));
+        let (num, den) = self.lowest_terms_factored(n, d, Some(&fd))?;
         Ok(Val { num, den, sh })
     }
 
     /// `num/den` already in lowest terms: checks the size bound and makes the
     /// denominator's leading coefficient positive, without a gcd.
     pub(crate) fn lowest_terms(&self, num: Poly, den: Poly) -> AlgResult<(Poly, Poly)> {
+        self.lowest_terms_factored(num, den, None)
+    }
+
+    /// [`Self::lowest_terms`], remembering the factors `fd` of `den` (if given) for the
+    /// result's denominator.
+    fn lowest_terms_factored(
+        &self,
+        num: Poly,
+        den: Poly,
+        fd: Option<&Factors>,
+    ) -> AlgResult<(Poly, Poly)> {
         let size = num.len() + den.len();
         if size > self.opts.max_terms {
             return Err(AlgebraError::TooLarge(size, self.opts.max_terms));
@@ -162,10 +165,7 @@ impl Inner {
         if num.is_zero() {
             return Ok((num, Poly::from_i64(&self.ctx, 1)));
         }
-        if den.leading_coefficient() < 0 {
-            return Ok((num.neg(), den.neg()));
-        }
-        Ok((num, den))
+        Ok(self.positive_den(num, den, fd))
     }
 
     /// `(a/g, b/g)` for `g = gcd(a, b)`, where `b` is a denominator, with the factors
@@ -195,21 +195,13 @@ impl Inner {
         let fden = fad.mul(&fbd);
         // Crosswise cancellation leaves the product in lowest terms unless the
         // root relations changed the numerator.
-        let (num, den) = if den.is_one() {
-            (reduced, den)
-        } else if changed {
+        let (num, den) = if changed {
             self.dens.record(&den, Arc::new(fden));
             self.normalise(reduced, den)?
+        } else if den.is_one() {
+            (reduced, den)
         } else {
-            let size = reduced.len() + den.len();
-            if size > self.opts.max_terms {
-                return Err(AlgebraError::TooLarge(size, self.opts.max_terms));
-            }
-            if reduced.is_zero() {
-                (reduced, Poly::from_i64(&self.ctx, 1))
-            } else {
-                self.positive_den(reduced, den, Some(&fden))
-            }
+            self.lowest_terms_factored(reduced, den, Some(&fden))?
         };
         Ok(Val { num, den, sh })
     }
