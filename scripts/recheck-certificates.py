@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Rechecks eulertop's algebraic certificates with SymPy, independently of FLINT.
 
-Usage: scripts/recheck-certificates.py PATH...   (files, or directories of *.cert / *.txt)
+Usage: scripts/recheck-certificates.py [--jobs N] PATH...   (files, or directories of *.cert / *.txt)
        scripts/recheck-certificates.py --self-test CERT   (three corruptions must fail)
 
 A certificate (written by the algebra layer, src/algebra/certificate.rs) declares the
@@ -65,6 +65,7 @@ radicand, a claim's right-hand side) fails.  Optional; not run by CI.
 """
 
 import heapq
+import multiprocessing
 import os
 import random
 import re
@@ -1190,6 +1191,18 @@ def self_test(path):
     return 0 if good else 1
 
 
+def check_path(path):
+    """(path, ok, reason, seconds) for one certificate file."""
+    start = time.perf_counter()
+    try:
+        with open(path, encoding="utf-8") as fh:
+            text = fh.read()
+    except (OSError, UnicodeDecodeError) as e:
+        return path, False, f"cannot read it: {e}", 0.0
+    ok, why = check_text(path, text)
+    return path, ok, why, time.perf_counter() - start
+
+
 def main(argv):
     if len(argv) < 2:
         print(__doc__.strip().splitlines()[2], file=sys.stderr)
@@ -1199,16 +1212,22 @@ def main(argv):
             print(__doc__.strip().splitlines()[3], file=sys.stderr)
             return 2
         return self_test(argv[2])
+    args = argv[1:]
+    jobs = os.cpu_count() or 1
+    if args[:1] == ["--jobs"]:
+        if len(args) < 3 or not args[1].isdigit() or int(args[1]) < 1:
+            print("--jobs takes a positive integer and is followed by paths", file=sys.stderr)
+            return 2
+        jobs, args = int(args[1]), args[2:]
+    paths = list(files(args))
     bad = 0
     n = 0
-    for path in files(argv[1:]):
-        n += 1
-        start = time.perf_counter()
-        with open(path, encoding="utf-8") as fh:
-            ok, why = check_text(path, fh.read())
-        secs = time.perf_counter() - start
-        bad += not ok
-        print(f"{'OK  ' if ok else 'FAIL'}  {path}: {why} ({secs:.2f} s)", flush=True)
+    # certificates are independent: several processes, results printed in path order
+    with multiprocessing.Pool(min(jobs, max(len(paths), 1))) as pool:
+        for path, ok, why, secs in pool.imap(check_path, paths):
+            n += 1
+            bad += not ok
+            print(f"{'OK  ' if ok else 'FAIL'}  {path}: {why} ({secs:.2f} s)", flush=True)
     print(f"{n - bad} of {n} certificates recheck")
     return 1 if bad else 0
 
