@@ -1104,8 +1104,7 @@ def parts(text):
     declares its own symbols (the same name may stand for another root in another part)."""
     lines = text.splitlines()
     starts = [i for i, ln in enumerate(lines) if ln.startswith(HEADER)] or [0]
-    if starts[0] != 0:
-        starts.insert(0, 0)
+    starts[0] = 0  # lines before the first header belong to the first certificate
     ends = starts[1:] + [len(lines)]
     return [(a + 1, "\n".join(lines[a:b])) for a, b in zip(starts, ends)]
 

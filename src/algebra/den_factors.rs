@@ -65,17 +65,22 @@ impl Factors {
 
     /// The factors of `self · other`.
     pub(crate) fn mul(&self, other: &Factors) -> Factors {
+        Factors {
+            unit: Integer::from(&self.unit * &other.unit),
+            list: self.merged(other, |a, b| a + b),
+        }
+    }
+
+    /// The factors of both lists, a factor in both with the exponent `join` of its two.
+    fn merged(&self, other: &Factors, join: fn(u64, u64) -> u64) -> Vec<(Poly, u64)> {
         let mut list = self.list.clone();
         for (f, e) in &other.list {
             match list.iter_mut().find(|(g, _)| g == f) {
-                Some((_, k)) => *k += e,
+                Some((_, k)) => *k = join(*k, *e),
                 None => list.push((f.clone(), *e)),
             }
         }
-        Factors {
-            unit: Integer::from(&self.unit * &other.unit),
-            list,
-        }
+        list
     }
 
     /// The factors of `gcd(self, other)` (positive unit).
@@ -96,16 +101,9 @@ impl Factors {
 
     /// The factors of `lcm(self, other)` (positive unit).
     pub(crate) fn lcm(&self, other: &Factors) -> Factors {
-        let mut list = self.list.clone();
-        for (f, e) in &other.list {
-            match list.iter_mut().find(|(g, _)| g == f) {
-                Some((_, k)) => *k = (*k).max(*e),
-                None => list.push((f.clone(), *e)),
-            }
-        }
         Factors {
             unit: self.unit.clone().lcm(&other.unit),
-            list,
+            list: self.merged(other, u64::max),
         }
     }
 
@@ -184,17 +182,43 @@ const CAPACITY_TERMS: usize = 2_000_000;
 /// (a term takes some tens of bytes: a coefficient and a few exponents).
 const GLOBAL_CAPACITY_TERMS: usize = 500_000;
 
-#[derive(Default)]
-struct Entries {
-    map: HashMap<Poly, Arc<Factors>>,
+/// A map emptied when the sizes of its entries (in terms) would exceed `capacity`.
+struct Bounded<K, V> {
+    map: HashMap<K, V>,
     terms: usize,
+}
+
+impl<K: std::hash::Hash + Eq, V> Default for Bounded<K, V> {
+    fn default() -> Self {
+        Bounded {
+            map: HashMap::new(),
+            terms: 0,
+        }
+    }
+}
+
+impl<K: std::hash::Hash + Eq, V> Bounded<K, V> {
+    fn insert(&mut self, key: K, value: V, size: usize, capacity: usize) {
+        if self.terms + size > capacity {
+            self.map.clear();
+            self.terms = 0;
+        }
+        if self.map.insert(key, value).is_none() {
+            self.terms += size;
+        }
+    }
+}
+
+/// Locks a memo; a poisoned one only lost an entry, and its contents stay valid.
+fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(|e| e.into_inner())
 }
 
 /// The remembered factorisations of a ring's denominators (see the module
 /// documentation).
 #[derive(Default)]
 pub(crate) struct DenFactors {
-    entries: Mutex<Entries>,
+    entries: Mutex<Bounded<Poly, Arc<Factors>>>,
 }
 
 impl DenFactors {
@@ -204,7 +228,7 @@ impl DenFactors {
         if let Some(c) = d.as_constant() {
             return Ok(Arc::new(Factors::integer(c)));
         }
-        if let Some(f) = self.lock().map.get(d) {
+        if let Some(f) = lock(&self.entries).map.get(d) {
             return Ok(f.clone());
         }
         let f = Arc::new(factor(d)?);
@@ -219,20 +243,8 @@ impl DenFactors {
             return;
         }
         debug_assert!(f.expand(d).is_ok_and(|p| &p == d), "a wrong factorisation");
-        let mut entries = self.lock();
         let size = d.len() + f.terms();
-        if entries.terms + size > CAPACITY_TERMS {
-            entries.map.clear();
-            entries.terms = 0;
-        }
-        if entries.map.insert(d.clone(), f).is_none() {
-            entries.terms += size;
-        }
-    }
-
-    fn lock(&self) -> std::sync::MutexGuard<'_, Entries> {
-        // A poisoned memo only lost an entry; its contents stay valid.
-        self.entries.lock().unwrap_or_else(|e| e.into_inner())
+        lock(&self.entries).insert(d.clone(), f, size, CAPACITY_TERMS);
     }
 }
 
@@ -254,7 +266,8 @@ pub(crate) fn factor(d: &Poly) -> AlgResult<Factors> {
         return Ok(Factors { unit, list });
     }
     let key = TermKey::of(d);
-    if let Some(f) = global().get(&key) {
+    let known = lock(&GLOBAL).map.get(&key).cloned();
+    if let Some(f) = known {
         return Ok(Factors {
             unit: f.0.clone(),
             list: f.1.iter().map(|(k, e)| (k.poly(d), *e)).collect(),
@@ -263,9 +276,13 @@ pub(crate) fn factor(d: &Poly) -> AlgResult<Factors> {
     let f = Factors::from_flint(d.factor()?);
     let stored = (
         f.unit.clone(),
-        f.list.iter().map(|(p, e)| (TermKey::of(p), *e)).collect(),
+        f.list
+            .iter()
+            .map(|(p, e)| (TermKey::of(p), *e))
+            .collect::<Vec<_>>(),
     );
-    global().insert(key, Arc::new(stored));
+    let size = key.terms() + stored.1.iter().map(|(k, _)| k.terms()).sum::<usize>();
+    lock(&GLOBAL).insert(key, Arc::new(stored), size, GLOBAL_CAPACITY_TERMS);
     Ok(f)
 }
 
@@ -309,41 +326,12 @@ impl TermKey {
     }
 }
 
+/// A factorisation remembered across rings: the unit and the factors' terms.
 type Stored = Arc<(Integer, Vec<(TermKey, u64)>)>;
 
-/// Factorisations remembered across rings (bounded like a ring's memo).
-struct Global {
-    map: HashMap<TermKey, Stored>,
-    terms: usize,
-}
-
-struct GlobalHandle(std::sync::MutexGuard<'static, Option<Global>>);
-
-impl GlobalHandle {
-    fn get(&mut self, key: &TermKey) -> Option<Stored> {
-        self.0.as_ref().and_then(|g| g.map.get(key).cloned())
-    }
-
-    fn insert(&mut self, key: TermKey, f: Stored) {
-        let g = self.0.get_or_insert_with(|| Global {
-            map: HashMap::new(),
-            terms: 0,
-        });
-        let size = key.terms() + f.1.iter().map(|(k, _)| k.terms()).sum::<usize>();
-        if g.terms + size > GLOBAL_CAPACITY_TERMS {
-            g.map.clear();
-            g.terms = 0;
-        }
-        g.terms += size;
-        g.map.insert(key, f);
-    }
-}
-
-static GLOBAL: Mutex<Option<Global>> = Mutex::new(None);
-
-fn global() -> GlobalHandle {
-    GlobalHandle(GLOBAL.lock().unwrap_or_else(|e| e.into_inner()))
-}
+/// Factorisations remembered across rings, by the terms of the factored polynomial.
+static GLOBAL: std::sync::LazyLock<Mutex<Bounded<TermKey, Stored>>> =
+    std::sync::LazyLock::new(|| Mutex::new(Bounded::default()));
 
 /// `(n/g, g)` for `g = gcd(n, d)` (FLINT's gcd: positive leading coefficient, integer
 /// content included), where `fd` is the factorisation of `d`, with the factors of `g`.

@@ -169,18 +169,13 @@ impl Inner {
     }
 
     /// `(a/g, b/g)` for `g = gcd(a, b)`, where `b` is a denominator, with the factors
-    /// of `b/g`.
-    fn cancel(&self, a: &Poly, b: &Poly) -> AlgResult<(Poly, Poly, Arc<Factors>)> {
+    /// of `b/g`; none where `b` is 1 or `a` is 0 (a product with `a` is then 0).
+    fn cancel(&self, a: &Poly, b: &Poly) -> AlgResult<(Poly, Poly, Option<Arc<Factors>>)> {
         if b.is_one() || a.is_zero() {
-            let one = Factors::integer(rug::Integer::from(1));
-            let fb = if b.is_one() {
-                Arc::new(one)
-            } else {
-                self.dens.of(b)?
-            };
-            return Ok((a.clone(), b.clone(), fb));
+            return Ok((a.clone(), b.clone(), None));
         }
-        self.cancel_den(a, b)
+        let (n, d, fd) = self.cancel_den(a, b)?;
+        Ok((n, d, Some(fd)))
     }
 
     pub(crate) fn v_mul(&self, a: &Val, b: &Val) -> AlgResult<Val> {
@@ -192,16 +187,26 @@ impl Inner {
         let reduced = self.reduce(prod.clone());
         let changed = reduced != prod;
         let den = ad.mul(&bd);
-        let fden = fad.mul(&fbd);
         // Crosswise cancellation leaves the product in lowest terms unless the
         // root relations changed the numerator.
-        let (num, den) = if changed {
-            self.dens.record(&den, Arc::new(fden));
-            self.normalise(reduced, den)?
-        } else if den.is_one() {
+        let (num, den) = if den.is_one() && !changed {
             (reduced, den)
+        } else if reduced.is_zero() {
+            self.lowest_terms(reduced, den)?
         } else {
-            self.lowest_terms_factored(reduced, den, Some(&fden))?
+            // a non-zero product: both numerators are non-zero, so a missing
+            // factorisation is that of 1
+            let fden = match (fad, fbd) {
+                (Some(x), Some(y)) => x.mul(&y),
+                (Some(x), None) | (None, Some(x)) => (*x).clone(),
+                (None, None) => Factors::integer(rug::Integer::from(1)),
+            };
+            if changed {
+                self.dens.record(&den, Arc::new(fden));
+                self.normalise(reduced, den)?
+            } else {
+                self.lowest_terms_factored(reduced, den, Some(&fden))?
+            }
         };
         Ok(Val { num, den, sh })
     }
