@@ -3,25 +3,27 @@
 //!
 //! `cargo bench --bench algebra`
 
-use criterion::{criterion_group, Criterion};
-use eulertop::algebra::{prove_components, RingOptions};
+use criterion::{Criterion, criterion_group};
+use eulertop::algebra::{RingOptions, prove_components};
 
 #[path = "../tests/algebra_identities/mod.rs"]
 mod algebra_identities;
 
-use algebra_identities::{g0g1, g1_alphabeta, mm, Regime, Variant};
+use algebra_identities::{Regime, Variant, g0g1, g1_alphabeta, mm};
 
 fn proofs(c: &mut Criterion) {
     let mut g = c.benchmark_group("algebra");
     g.sample_size(10);
     g.bench_function("M-M 1-3 from phi, phih (upper regime)", |b| {
         b.iter(|| {
-            assert!(prove_components(RingOptions::default(), "M-M", |r| mm(
-                r,
-                Regime::Upper,
-                true
-            ))
-            .is_proved())
+            assert!(
+                prove_components(RingOptions::default(), "M-M", |r| mm(
+                    r,
+                    Regime::Upper,
+                    true
+                ))
+                .is_proved()
+            )
         })
     });
     g.bench_function("(G0G1) with named k, nu (upper regime)", |b| {

@@ -1,13 +1,13 @@
 //! Criterion benchmarks of the claim engine: parsing, evaluating one expression at 53 and
 //! 256 bits, and verifying one background claim on the default ladder.
 
-use criterion::{black_box, criterion_group, BatchSize, Criterion};
+use criterion::{BatchSize, Criterion, black_box, criterion_group};
 use eulertop::claims::catalogue::load_sources;
 use eulertop::claims::eval::Evaluator;
 use eulertop::claims::parser::parse_expr;
 use eulertop::claims::registry::Registry;
 use eulertop::claims::value::Value;
-use eulertop::claims::verdict::{run_claim, Options};
+use eulertop::claims::verdict::{Options, run_claim};
 
 const ADDITION: &str = "(sn(u, k) * cn(v, k) * dn(v, k) + sn(v, k) * cn(u, k) * dn(u, k)) / (1 - k^2 * sn(u, k)^2 * sn(v, k)^2) - sn(u + v, k)";
 

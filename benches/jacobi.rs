@@ -4,7 +4,7 @@
 //! modulus on every call ("fresh k"), plus complex f64.
 //! `cargo bench --bench jacobi`.
 
-use criterion::{black_box, criterion_group, Criterion, Throughput};
+use criterion::{Criterion, Throughput, black_box, criterion_group};
 use eulertop::numbers::C64;
 use eulertop::special::{sncndn, sncndn_complex, sncndn_many};
 use rug::Float;

@@ -7,9 +7,9 @@
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
-use criterion::{criterion_group, Criterion};
+use criterion::{Criterion, criterion_group};
 use eulertop::bindings::euler_top::registry;
-use eulertop::claims::catalogue::{load_dir, Body, Catalogue};
+use eulertop::claims::catalogue::{Body, Catalogue, load_dir};
 use eulertop::claims::verdict::context::Ctx;
 use eulertop::claims::verdict::independence::derivative_sides;
 use eulertop::claims::verdict::symbolic::prove;

@@ -2,7 +2,7 @@
 //! Veselov–Moser matrix step, in f64 and MPFR at 256 and 1024 bits; prints the Newton
 //! iteration counts.  Run: `cargo bench --bench step`.
 
-use criterion::{black_box, criterion_group, Criterion};
+use criterion::{Criterion, black_box, criterion_group};
 use eulertop::linalg::Vec3;
 use eulertop::model::discretization::{step, step_report};
 use eulertop::model::veselov_moser::vm_step;

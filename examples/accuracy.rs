@@ -3,9 +3,9 @@
 //!
 //! `cargo run --release --example accuracy > reports/accuracy.md`
 
-use eulertop::numbers::{Cplx, C64};
+use eulertop::numbers::{C64, Cplx};
 use eulertop::special::{
-    ellipf, ellipk, ellipkp, jacobi, jacobi_m, sncndn, sncndn_complex, JacobiFn,
+    JacobiFn, ellipf, ellipk, ellipkp, jacobi, jacobi_m, sncndn, sncndn_complex,
 };
 use rug::Float;
 use std::collections::BTreeMap;
@@ -233,7 +233,9 @@ fn twelve() {
 /// Huge arguments: 600 points u = ±K·2^e·(1+f)/2, e from 8 to 49.9, f64 against the
 /// 256-bit path.
 fn huge_sweep() {
-    println!("## Huge arguments: f64 sn, cn, dn (absolute error / ε), 600 points with |u|/K from 2^7 to 2^49.9\n");
+    println!(
+        "## Huge arguments: f64 sn, cn, dn (absolute error / ε), 600 points with |u|/K from 2^7 to 2^49.9\n"
+    );
     println!("| k | max error | at |u|/K |");
     println!("|---|---|---|");
     for k in [0.1, 0.5, 0.8, 0.9, 0.99, 1.0 - 1e-6, 1.0 - 1e-12] {

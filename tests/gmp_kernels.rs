@@ -8,7 +8,7 @@
 //! thread uses GMP, so this test is its own process with a single thread
 //! (`harness = false`).
 
-use eulertop::numbers::gmp_kernels::{select, Kernels};
+use eulertop::numbers::gmp_kernels::{Kernels, select};
 use rug::{Float, Integer};
 
 /// A deterministic integer of `limbs` 64-bit limbs (a linear congruential stream).

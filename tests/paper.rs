@@ -13,9 +13,9 @@
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
-use eulertop::claims::catalogue::{load_dir, Catalogue, Claim};
-use eulertop::claims::structure::{place, Environment, Role, ENVIRONMENTS};
-use eulertop::claims::verdict::{run_claim, ClaimResult, Options, Verdict};
+use eulertop::claims::catalogue::{Catalogue, Claim, load_dir};
+use eulertop::claims::structure::{ENVIRONMENTS, Environment, Role, place};
+use eulertop::claims::verdict::{ClaimResult, Options, Verdict, run_claim};
 use libtest_mimic::{Arguments, Failed, Trial};
 use std::path::Path;
 use std::sync::Arc;

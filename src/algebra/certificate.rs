@@ -25,7 +25,7 @@
 use super::base_table::Table;
 use super::flint::Poly;
 use super::node::{Node, Op};
-use super::ring::{describe_kind, Ring, VarKind};
+use super::ring::{Ring, VarKind, describe_kind};
 use super::sym::Sym;
 use super::val::Val;
 

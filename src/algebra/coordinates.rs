@@ -104,10 +104,10 @@ impl Sym {
     /// value, such as a function parameter bound to an expression.)
     pub fn is_symbol_of_claim(&self) -> bool {
         let same = |y: &Sym| y.try_sub(self).map(|d| d.is_exact_zero()).unwrap_or(false);
-        if let Some(c) = self.ring.change_of_variables() {
-            if c.coords.iter().any(same) || c.params.iter().any(same) {
-                return true;
-            }
+        if let Some(c) = self.ring.change_of_variables()
+            && (c.coords.iter().any(same) || c.params.iter().any(same))
+        {
+            return true;
         }
         self.as_field_var().is_some_and(|j| {
             matches!(

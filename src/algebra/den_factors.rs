@@ -298,7 +298,7 @@ impl TermKey {
         p.for_each_term(|c, e| {
             let sparse = (0u32..)
                 .zip(e)
-                .filter(|(_, &k)| k > 0)
+                .filter(|&(_, &k)| k > 0)
                 .map(|(i, &k)| (i, k));
             terms.push((c.clone(), sparse.collect()));
         });

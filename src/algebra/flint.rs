@@ -736,14 +736,10 @@ impl Poly {
             let mono: Vec<String> = e
                 .iter()
                 .enumerate()
-                .filter(|(_, &k)| k > 0)
+                .filter(|&(_, &k)| k > 0)
                 .map(|(i, &k)| {
                     let name = names.get(i).cloned().unwrap_or_else(|| format!("x{i}"));
-                    if k == 1 {
-                        name
-                    } else {
-                        format!("{name}**{k}")
-                    }
+                    if k == 1 { name } else { format!("{name}**{k}") }
                 })
                 .collect();
             let neg = *c < 0;

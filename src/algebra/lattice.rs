@@ -159,10 +159,10 @@ pub(crate) fn lattice_basis(vectors: &[Vec<Rational>]) -> Vec<Vec<Rational>> {
         if hnf_rows(&to_integers(&rows, &l)) != hnf {
             continue;
         }
-        if let Some(c) = cost(&rows, &distinct) {
-            if best.as_ref().is_none_or(|(b, _)| c < *b) {
-                best = Some((c, pick));
-            }
+        if let Some(c) = cost(&rows, &distinct)
+            && best.as_ref().is_none_or(|(b, _)| c < *b)
+        {
+            best = Some((c, pick));
         }
     }
     match best {

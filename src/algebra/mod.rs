@@ -131,6 +131,6 @@ mod val;
 
 pub use elliptic::BaseHint;
 pub use error::{AlgResult, AlgebraError};
-pub use proof::{prove_components, prove_identity, Outcome, Proof};
+pub use proof::{Outcome, Proof, prove_components, prove_identity};
 pub use ring::{Assumption, Origin, Ring, RingOptions};
 pub use sym::Sym;

@@ -95,15 +95,15 @@ impl Sym {
         // products of sign symbols, fewest factors first
         let products = ring.sign_products()?;
         let varying = !self.is_exact_zero() && self.as_rational().is_none();
-        if let Some(own) = pattern(self).filter(|_| varying && !products.is_empty()) {
-            if own.windows(2).any(|w| w[0] != w[1]) {
-                for prod in products {
-                    let Some(pp) = pattern(&prod) else { continue };
-                    let ratio: Vec<i32> = own.iter().zip(&pp).map(|(a, b)| a * b).collect();
-                    if ratio.windows(2).all(|w| w[0] == w[1]) {
-                        let s = self.try_mul(&prod)?.sign()?;
-                        return prod.try_mul(&ring.integer(i64::from(s)));
-                    }
+        if let Some(own) = pattern(self).filter(|_| varying && !products.is_empty())
+            && own.windows(2).any(|w| w[0] != w[1])
+        {
+            for prod in products {
+                let Some(pp) = pattern(&prod) else { continue };
+                let ratio: Vec<i32> = own.iter().zip(&pp).map(|(a, b)| a * b).collect();
+                if ratio.windows(2).all(|w| w[0] == w[1]) {
+                    let s = self.try_mul(&prod)?.sign()?;
+                    return prod.try_mul(&ring.integer(i64::from(s)));
                 }
             }
         }

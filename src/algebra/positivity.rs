@@ -427,10 +427,10 @@ impl Ring {
         };
         let mut images = vec![Image::None; num.ctx().nvars()];
         for (j, name) in vars.iter().enumerate() {
-            if let (Some(n), Some(slot)) = (name, images.get_mut(max_roots + j)) {
-                if let Some(img) = par.image(n) {
-                    *slot = Image::Var(img);
-                }
+            if let (Some(n), Some(slot)) = (name, images.get_mut(max_roots + j))
+                && let Some(img) = par.image(n)
+            {
+                *slot = Image::Var(img);
             }
         }
         for (i, radicand, positive) in roots {

@@ -9,7 +9,7 @@
 
 use super::elliptic::BaseHint;
 use super::error::{AlgResult, AlgebraError};
-use super::ring::{Assumption, Ring, RingOptions, VarKind, MAX_TERMS};
+use super::ring::{Assumption, MAX_TERMS, Ring, RingOptions, VarKind};
 use super::sym::Sym;
 use std::time::Instant;
 
@@ -171,13 +171,19 @@ impl Ring {
                 p + 1
             ),
             None => {
-                let named = self.state().vars.iter().any(|v| matches!(v.kind, VarKind::Named(_)));
+                let named = self
+                    .state()
+                    .vars
+                    .iter()
+                    .any(|v| matches!(v.kind, VarKind::Named(_)));
                 let why = if named {
                     "named quantities may need their definitions"
                 } else {
                     "the tower may have zero divisors, or the identity needs a relation the prover does not know"
                 };
-                format!("the normal form of lhs - rhs has {n} terms but vanishes numerically at every domain point ({why})")
+                format!(
+                    "the normal form of lhs - rhs has {n} terms but vanishes numerically at every domain point ({why})"
+                )
             }
         };
         Ok(Outcome::NotProved(reason))
@@ -296,10 +302,10 @@ where
                 attempts,
             );
         }
-        if let Some(size) = overflow(&ring, &built) {
-            if more_room(&ring, &mut opts, &mut rebases, size) {
-                continue;
-            }
+        if let Some(size) = overflow(&ring, &built)
+            && more_room(&ring, &mut opts, &mut rebases, size)
+        {
+            continue;
         }
         let pairs = match built {
             Ok(p) => p,

@@ -17,7 +17,7 @@
 
 use super::den_factors::Factors;
 use super::error::{AlgResult, AlgebraError};
-use super::flint::{factor_integer, Poly};
+use super::flint::{Poly, factor_integer};
 use super::node::Node;
 use super::ring::Ring;
 use super::shadow::Shadow;

@@ -167,9 +167,9 @@ impl Scalar for Sym {
             None => Err({
                 self.ring.note_undecided(self);
                 format!(
-                "the sign of {} is neither exact nor proved on the domain: sign and abs in a claim's formulas are decided only exactly (a sign taken at domain points would be the condition the formula states)",
-                self.render_short(80)
-            )
+                    "the sign of {} is neither exact nor proved on the domain: sign and abs in a claim's formulas are decided only exactly (a sign taken at domain points would be the condition the formula states)",
+                    self.render_short(80)
+                )
             }),
         }
     }

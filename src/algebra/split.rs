@@ -16,8 +16,8 @@
 use super::flint::Poly;
 use super::ring::{Ring, VarKind};
 use super::sym::Sym;
-use rug::ops::Pow;
 use rug::Float;
+use rug::ops::Pow;
 
 /// A rational function of the claim's indeterminates whose sign is not constant on the
 /// domain.

@@ -24,12 +24,12 @@ use crate::claims::implicit::Implicit;
 use crate::claims::registry::{GenericFunction, Registry, RegistryError};
 use crate::claims::value::Value;
 use crate::linalg::Vec3;
-use crate::model::discretization::{step, Gamma};
-use crate::model::elliptic_coords::{m_to_phase, phi_to_m, Sector};
+use crate::model::discretization::{Gamma, step};
+use crate::model::elliptic_coords::{Sector, m_to_phase, phi_to_m};
 use crate::model::params::{EllipticParams, Regime};
 use crate::model::phase::delta;
 use crate::model::veselov_moser::{hat, j_diag, omega_matrix, vm_step};
-use crate::model::{lax, Inertia, ModelError};
+use crate::model::{Inertia, ModelError, lax};
 use crate::numbers::{Cplx, Real};
 
 /// The declaration of a model function.
@@ -272,7 +272,7 @@ impl GenericFunction for ModelFn {
                     "{} is not available in {}",
                     other.name(),
                     S::ARITHMETIC
-                ))
+                ));
             }
         })
     }

@@ -17,18 +17,18 @@
 //!   elliptic base argument with its own `sn`, `cn`, `dn`); the master equation is
 //!   affine in `h`, which is solved from it.  Eliminated: `h`.
 
-use super::euler_top::{err, inertia, params, v3, ModelFn};
+use super::euler_top::{ModelFn, err, inertia, params, v3};
 use crate::algebra::Sym;
 use crate::claims::implicit::{Implicit, Parametrized};
 use crate::claims::registry::GenericFunction;
 use crate::claims::value::Value;
 use crate::linalg::{Mat3, Vec3};
-use crate::model::discretization::{residual, residual_cleared, residual_vm_squared, Gamma};
+use crate::model::Inertia;
+use crate::model::discretization::{Gamma, residual, residual_cleared, residual_vm_squared};
 use crate::model::elliptic_coords::sncndn_params;
 use crate::model::params::EllipticParams;
 use crate::model::phase::{master12_equation, mv_master_equation};
 use crate::model::veselov_moser::{cayley, hat, j_diag, omega_residual, vm_conjugate, vm_step};
-use crate::model::Inertia;
 use crate::numbers::Scalar;
 use rug::{Complex, Float};
 
@@ -189,7 +189,7 @@ fn master<'a>(
     i: &'a Inertia<Sym>,
     p: &'a EllipticParams<Sym>,
     delta: &Sym,
-) -> Result<impl Fn(&Sym) -> Sym + 'a, String> {
+) -> Result<impl Fn(&Sym) -> Sym + 'a + use<'a>, String> {
     let (sn, cn, dn) = sncndn_params(delta, p).map_err(err)?;
     let (a, b) = match f {
         ModelFn::Delta1 => (p.alpha1(), delta.zero()),

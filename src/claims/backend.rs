@@ -95,10 +95,11 @@ pub trait Num: Scalar + PartialOrd {
     /// rounded at the working precision otherwise).
     fn lit(&self, s: &str) -> Result<Self, String> {
         // integers (the common case) exactly, without a string conversion
-        if s.len() <= 15 && s.bytes().all(|b| b.is_ascii_digit()) {
-            if let Ok(n) = s.parse::<i64>() {
-                return Ok(self.from_i64(n));
-            }
+        if s.len() <= 15
+            && s.bytes().all(|b| b.is_ascii_digit())
+            && let Ok(n) = s.parse::<i64>()
+        {
+            return Ok(self.from_i64(n));
         }
         self.parse_like(s).map_err(|e| e.to_string())
     }
@@ -290,9 +291,11 @@ mod tests {
             "Exp is not available in exact rational arithmetic"
         );
         assert!(q.constant(Constant::Pi).is_err());
-        assert!(Rational::ellipk(&q)
-            .unwrap_err()
-            .starts_with("K is not available"));
+        assert!(
+            Rational::ellipk(&q)
+                .unwrap_err()
+                .starts_with("K is not available")
+        );
     }
 
     #[test]

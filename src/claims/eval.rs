@@ -13,7 +13,7 @@
 use super::ast::{BinOp, Binding, Expr, ExprKind, Span, UnOp};
 use super::backend::Num;
 use super::builtins::apply::{jacobi_pick, jacobi_triple};
-use super::builtins::{apply, Builtin};
+use super::builtins::{Builtin, apply};
 use super::cmath;
 use super::memo::{CallMemo, Callee};
 use super::registry::{HostCall, Registry, UserFn};
@@ -135,7 +135,7 @@ impl Differentiate for Sym {
             _ => {
                 return Err(EvalError::new(format!(
                     "d(..., {var}): not a real variable or a vec3 component"
-                )))
+                )));
             }
         };
         // in a function body `var` is a parameter, and d() is the partial derivative of
@@ -316,7 +316,9 @@ impl<'r, T: Backend> Evaluator<'r, T> {
         let n = self.nesting.get();
         if n >= MAX_NESTING {
             return Err(EvalError::limit(
-                format!("expression nested too deeply to evaluate (more than {MAX_NESTING} levels, function bodies included)"),
+                format!(
+                    "expression nested too deeply to evaluate (more than {MAX_NESTING} levels, function bodies included)"
+                ),
                 e.span,
             ));
         }
@@ -483,7 +485,10 @@ impl<'r, T: Backend> Evaluator<'r, T> {
             .map(|x| self.eval(x))
             .collect::<Result<_, _>>()?;
         let err = || {
-            EvalError::at("a list must be [a, b, c] (reals), [[..],[..],[..]] (3×3 real) or [[a, b],[c, d]] (2×2)", sp)
+            EvalError::at(
+                "a list must be [a, b, c] (reals), [[..],[..],[..]] (3×3 real) or [[a, b],[c, d]] (2×2)",
+                sp,
+            )
         };
         if vals.len() == 3 && vals.iter().all(|v| matches!(v, Value::Real(_))) {
             let r: Vec<T> = vals.iter().filter_map(|v| v.as_real().ok()).collect();
@@ -591,10 +596,10 @@ impl<'r, T: Backend> Evaluator<'r, T> {
     ) -> Result<Value<T>, EvalError> {
         let memo = CallMemo::<T>::of(&self.memo);
         let callee = Callee::User(f.clone());
-        if let Some(mut r) = memo.and_then(|m| m.get(&callee, vals)) {
-            if let Some(v) = r.pop() {
-                return Ok(v);
-            }
+        if let Some(mut r) = memo.and_then(|m| m.get(&callee, vals))
+            && let Some(v) = r.pop()
+        {
+            return Ok(v);
         }
         let v = self.call_user_body(f, vals, sp)?;
         if let Some(m) = memo {

@@ -3,7 +3,7 @@
 //! with the byte span of the offending text.
 
 use super::ast::{BinOp, Binding, Expr, ExprKind, Span, UnOp};
-use super::lexer::{lex, SyntaxError, Tok, Token};
+use super::lexer::{SyntaxError, Tok, Token, lex};
 
 const KEYWORDS: [&str; 6] = ["if", "then", "else", "and", "or", "not"];
 /// Most nested brackets, calls and prefix operators (bounds the parser's recursion).

@@ -81,10 +81,10 @@ impl<G: GenericFunction> ExtFunction for G {
         self.call_algebraic(a)
     }
     fn call_sym(&self, a: &[Value<Sym>]) -> Result<Value<Sym>, String> {
-        if self.implicit().is_some() {
-            if let Some(v) = super::implicit::recall(self.name_for_proofs(), a) {
-                return Ok(v);
-            }
+        if self.implicit().is_some()
+            && let Some(v) = super::implicit::recall(self.name_for_proofs(), a)
+        {
+            return Ok(v);
         }
         // after the prover's first error the values are meaningless (and the model's
         // checks would misname them): that error is the reason

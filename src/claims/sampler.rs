@@ -238,8 +238,8 @@ impl<'c> Sampler<'c> {
             Primitive::Normal => {
                 self.stats.nonuniform = true;
                 // Box–Muller
-                let u1: f64 = 1.0 - self.rng.gen::<f64>();
-                let u2: f64 = self.rng.gen::<f64>();
+                let u1: f64 = 1.0 - self.rng.r#gen::<f64>();
+                let u2: f64 = self.rng.r#gen::<f64>();
                 (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
             }
             Primitive::Randint => {
@@ -256,11 +256,7 @@ impl<'c> Sampler<'c> {
             }
             Primitive::Sign => {
                 self.set_size(2);
-                if self.rng.gen::<bool>() {
-                    1.0
-                } else {
-                    -1.0
-                }
+                if self.rng.r#gen::<bool>() { 1.0 } else { -1.0 }
             }
             Primitive::Choice => {
                 if a.is_empty() {

@@ -227,11 +227,7 @@ impl<T: Num> Value<T> {
             b: X,
             minus: bool,
         ) -> X {
-            if minus {
-                a - b
-            } else {
-                a + b
-            }
+            if minus { a - b } else { a + b }
         }
         Ok(match (self, o) {
             (Value::Real(a), Value::Real(b)) => Value::Real(pm(a.clone(), b.clone(), minus)),
@@ -246,7 +242,7 @@ impl<T: Num> Value<T> {
                     "cannot apply '{op}' to a {} and a {}",
                     self.type_name(),
                     o.type_name()
-                ))
+                ));
             }
         })
     }

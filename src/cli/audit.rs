@@ -2,9 +2,9 @@
 //! the fitted slope (bits of agreement gained per bit of precision) and the verdict.
 
 use super::verify::{fmt_log2, load, parse_bits};
-use super::{stdout, write_error, CliError};
+use super::{CliError, stdout, write_error};
 use crate::claims::catalogue::{Catalogue, Claim};
-use crate::claims::verdict::{run_claim, Options, Rung};
+use crate::claims::verdict::{Options, Rung, run_claim};
 use crate::stats::ls_slope;
 use clap::Parser;
 use std::io::{IsTerminal, Write};

@@ -14,7 +14,7 @@
 
 use super::CliError;
 use crate::numbers::{Cplx, Real};
-use crate::special::{jacobi, jacobi_complex, jacobi_m, JacobiFn, SpecialError};
+use crate::special::{JacobiFn, SpecialError, jacobi, jacobi_complex, jacobi_m};
 use std::io::{BufRead, Read, Write};
 
 /// Longest accepted input line in bytes.

@@ -13,10 +13,10 @@
 //! exit status 2.
 
 pub use super::orbit_row::Row;
-use super::step::{check_bits, digits_for, iterates, parse, write_point, Problem};
-use super::{stdout, write_error, CliError};
+use super::step::{Problem, check_bits, digits_for, iterates, parse, write_point};
+use super::{CliError, stdout, write_error};
 use crate::linalg::Vec3;
-use crate::model::elliptic_coords::{m_to_phi, phi_near, EllCoords};
+use crate::model::elliptic_coords::{EllCoords, m_to_phi, phi_near};
 use crate::model::phase::delta;
 use crate::model::solution::continuous_from;
 use crate::numbers::Real;

@@ -5,11 +5,11 @@
 //! form — with `--certificate FILE` a script of polynomial equalities that SymPy rechecks
 //! (`scripts/recheck-certificates.py`).
 
-use super::{stdout, write_error, CliError};
+use super::{CliError, stdout, write_error};
 use crate::claims::catalogue::Body;
 use crate::claims::verdict::context::Ctx;
 use crate::claims::verdict::independence::derivative_sides;
-use crate::claims::verdict::symbolic::{prove, ProofInfo};
+use crate::claims::verdict::symbolic::{ProofInfo, prove};
 use clap::Parser;
 use std::io::Write;
 
@@ -80,7 +80,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
                 "claim '{}' is a {}, and only identities and independence claims are proved symbolically",
                 claim.id,
                 claim.kind.name()
-            )))
+            )));
         }
     };
     let p = prove(

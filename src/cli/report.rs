@@ -2,10 +2,10 @@
 //! pages of the paper's environments, figures, errata and conventions into `reports/`
 //! (deterministic output).
 
-use super::verify::{load, parse_bits, run_with_progress};
 use super::CliError;
+use super::verify::{load, parse_bits, run_with_progress};
 use crate::claims::verdict::{ClaimResult, Options};
-use crate::report::{write_reports, Convention, ReportInput, Section};
+use crate::report::{Convention, ReportInput, Section, write_reports};
 use clap::Parser;
 use std::collections::BTreeMap;
 use std::io::Write;
@@ -142,14 +142,14 @@ fn check_out(out: &Path, readme: Option<&ReadmeBlock>) -> Result<(), CliError> {
         (Ok(x), Ok(y)) => x == y,
         _ => false,
     };
-    if let Some(r) = readme {
-        if same(&out.join("README.md"), &r.path) {
-            return Err(CliError(format!(
-                "--out {} would overwrite the README given by --readme {}",
-                out.display(),
-                r.path.display()
-            )));
-        }
+    if let Some(r) = readme
+        && same(&out.join("README.md"), &r.path)
+    {
+        return Err(CliError(format!(
+            "--out {} would overwrite the README given by --readme {}",
+            out.display(),
+            r.path.display()
+        )));
     }
     Ok(())
 }

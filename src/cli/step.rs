@@ -12,9 +12,9 @@
 //! line on standard error and exit status 2; rows printed before a failing step stay
 //! printed.
 
-use super::{stdout, write_error, CliError};
+use super::{CliError, stdout, write_error};
 use crate::linalg::Vec3;
-use crate::model::{orbit, EllipticParams, Gamma, Inertia, Stepper};
+use crate::model::{EllipticParams, Gamma, Inertia, Stepper, orbit};
 use crate::numbers::Real;
 use std::io::Write;
 

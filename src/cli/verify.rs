@@ -2,8 +2,8 @@
 //! (or JSON); exit 0 iff every verdict equals its `expect`.
 
 use super::CliError;
-use crate::claims::catalogue::{latex_labels, load_dir, Catalogue};
-use crate::claims::verdict::{coverage_table, verify, ClaimResult, Options, Rung, Verdict};
+use crate::claims::catalogue::{Catalogue, latex_labels, load_dir};
+use crate::claims::verdict::{ClaimResult, Options, Rung, Verdict, coverage_table, verify};
 use clap::Parser;
 use serde::Serialize;
 use std::io::{IsTerminal, Write};

@@ -24,11 +24,7 @@ use crate::numbers::Scalar;
 
 /// `|x|` from the order alone (exact for every ordered scalar).
 fn abs<T: Scalar + PartialOrd>(x: &T) -> T {
-    if *x < x.zero() {
-        -x.clone()
-    } else {
-        x.clone()
-    }
+    if *x < x.zero() { -x.clone() } else { x.clone() }
 }
 
 /// Solves `a·x = b` by Gaussian elimination with partial pivoting; `None` when a pivot

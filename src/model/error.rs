@@ -17,7 +17,9 @@ pub enum ModelError {
     #[error("{0}")]
     Undefined(String),
     /// Newton's method did not converge.
-    #[error("Newton iteration for {what} did not converge after {iterations} iterations (relative residual {residual:e}); step size h too large?")]
+    #[error(
+        "Newton iteration for {what} did not converge after {iterations} iterations (relative residual {residual:e}); step size h too large?"
+    )]
     NewtonFailed {
         /// What was being solved.
         what: String,

@@ -20,7 +20,7 @@ use super::discretization::{inf_norm, step};
 use super::elliptic_coords::{m_to_phi, phi_to_m, quarter_period};
 use super::phase::{delta, step_phases};
 use super::solution::{continuous_from, discrete_from};
-use super::{orbit, EllipticParams, Gamma, Inertia, ModelError, Regime, Sector};
+use super::{EllipticParams, Gamma, Inertia, ModelError, Regime, Sector, orbit};
 use crate::linalg::Vec3;
 
 /// The four γ of (impl spec), in the order drawn.

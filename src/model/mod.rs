@@ -46,5 +46,5 @@ pub use discretization::{Gamma, NewtonOptions, StepReport};
 pub use elliptic_coords::{EllCoords, Sector};
 pub use error::ModelError;
 pub use euler::Inertia;
-pub use orbit::{orbit, Orbit, Stepper};
+pub use orbit::{Orbit, Stepper, orbit};
 pub use params::{EllipticParams, Regime};

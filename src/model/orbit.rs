@@ -20,7 +20,7 @@
 //! assert!((pts[4].norm2() - m0.norm2()).abs() < 1e-14);
 //! ```
 
-use super::discretization::{step, Gamma};
+use super::discretization::{Gamma, step};
 use super::veselov_moser::vm_step;
 use super::{Inertia, ModelError};
 use crate::linalg::Vec3;

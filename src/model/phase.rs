@@ -10,7 +10,7 @@
 //! iterations or if the iterate leaves `(0, K)`.
 
 use super::discretization::Gamma;
-use super::elliptic_coords::{phi_near, quarter_period, sncndn_params, EllCoords};
+use super::elliptic_coords::{EllCoords, phi_near, quarter_period, sncndn_params};
 use super::params::EllipticParams;
 use super::{Inertia, ModelError};
 use crate::linalg::Vec3;
@@ -62,10 +62,11 @@ where
         if dn_ <= eps.clone() * x.abs() {
             return Ok(x);
         }
-        if let Some(pv) = &prev {
-            if dn_ >= *pv && dn_ <= eps.sqrt() * x.abs() {
-                return Ok(x);
-            }
+        if let Some(pv) = &prev
+            && dn_ >= *pv
+            && dn_ <= eps.sqrt() * x.abs()
+        {
+            return Ok(x);
         }
         prev = Some(dn_);
     }

@@ -1,6 +1,6 @@
 //! The explicit solution (sol) of (ET) and the discrete solution (discr sol).
 
-use super::elliptic_coords::{m_to_phi, phi_to_m, EllCoords};
+use super::elliptic_coords::{EllCoords, m_to_phi, phi_to_m};
 use super::{Inertia, ModelError};
 use crate::linalg::Vec3;
 use crate::numbers::Real;

@@ -87,11 +87,7 @@ pub fn cayley<S: Scalar>(v: &Vec3<S>) -> Mat3<S> {
         let outer = v.0[i].clone() * v.0[j].clone();
         let square = if i == j { outer - n2.clone() } else { outer };
         let e = c.clone() * (vm.0[i][j].clone() + square);
-        if i == j {
-            one.clone() + e
-        } else {
-            e
-        }
+        if i == j { one.clone() + e } else { e }
     })
 }
 
@@ -167,10 +163,11 @@ pub fn vm_step<R: Real>(inertia: &Inertia<R>, m: &Vec3<R>, h: &R) -> Result<VmSt
         if dn <= eps.clone() * vs.from_i64(4) * vs.clone() {
             break;
         }
-        if let Some(p) = &prev {
-            if dn >= *p && dn <= eps.sqrt() * vs {
-                break;
-            }
+        if let Some(p) = &prev
+            && dn >= *p
+            && dn <= eps.sqrt() * vs
+        {
+            break;
         }
         prev = Some(dn);
     }
@@ -212,11 +209,7 @@ pub fn det_poly<S: Scalar>(p: &[[Vec<S>; 3]; 3], like: &S) -> Vec<S> {
             .map(|i| {
                 let x = a.get(i).cloned().unwrap_or_else(|| like.zero());
                 let y = b.get(i).cloned().unwrap_or_else(|| like.zero());
-                if sign {
-                    x + y
-                } else {
-                    x - y
-                }
+                if sign { x + y } else { x - y }
             })
             .collect()
     }

@@ -40,7 +40,7 @@ mod imp {
         thresholds: [isize; 5],
     }
 
-    extern "C" {
+    unsafe extern "C" {
         static __gmp_version: *const std::ffi::c_char;
         static mut __gmpn_cpuvec: CpuVec;
         fn __gmpn_cpuvec_init();

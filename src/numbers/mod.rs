@@ -30,9 +30,9 @@ pub mod gmp_kernels;
 mod mpfr;
 mod rational;
 
-pub use complex::{Cplx, C64};
+pub use complex::{C64, Cplx};
 pub use dual::Dual;
-pub use rational::{parse_rational, Rational};
+pub use rational::{Rational, parse_rational};
 
 use std::fmt::Debug;
 use std::ops::{Add, Div, Mul, Neg, Sub};

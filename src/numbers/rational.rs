@@ -57,11 +57,7 @@ fn exact_isqrt(n: &BigInt) -> Option<BigInt> {
         return None;
     }
     let r = n.sqrt();
-    if &(&r * &r) == n {
-        Some(r)
-    } else {
-        None
-    }
+    if &(&r * &r) == n { Some(r) } else { None }
 }
 
 impl Scalar for BigRational {

@@ -1,8 +1,8 @@
 //! The small formatted pieces that every report page uses: the verdict badge, residuals,
 //! a claim's anchor and a printed excerpt as Markdown.
 
-use super::tex::{display_math, is_prose, prose};
 use super::ReportInput;
+use super::tex::{display_math, is_prose, prose};
 use crate::claims::verdict::{ClaimResult, Rung, Verdict};
 
 /// The verdict as a symbol and a word.

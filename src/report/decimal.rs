@@ -29,11 +29,7 @@ fn pow10(e: u32) -> BigInt {
 /// `r` × 10^e, exactly.
 fn scale10(r: &BigRational, e: i64) -> BigRational {
     let p = BigRational::from_integer(pow10(e.unsigned_abs() as u32));
-    if e >= 0 {
-        r * p
-    } else {
-        r / p
-    }
+    if e >= 0 { r * p } else { r / p }
 }
 
 /// Parses `digits[.digits][e[+-]digits]` exactly; `None` if malformed or the exponent is

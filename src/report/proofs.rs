@@ -18,9 +18,9 @@
 use super::cells::{anchor, best_residual, printed_markdown, verdict_badge};
 use super::decimal::round_numbers;
 use super::paper_text::to_markdown;
-use super::{stem_of, ReportInput};
+use super::{ReportInput, stem_of};
 use crate::claims::kind::Form;
-use crate::claims::structure::{Environment, Place, Role, ENVIRONMENTS};
+use crate::claims::structure::{ENVIRONMENTS, Environment, Place, Role};
 use crate::claims::verdict::{ClaimResult, Counterexample, Verdict};
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write;
@@ -645,7 +645,10 @@ pub fn page(input: &ReportInput, s: &Structure, env: &Environment) -> String {
     t.push_str(&other_section(input, s, env));
     let _ = writeln!(t, "## Dependencies\n");
     t.push_str(&mermaid(s, env));
-    let _ = writeln!(t, "\n*An arrow runs from a claim to a claim that uses it; rounded boxes are the statement, dashed boxes belong to other environments. Definitions and background facts are listed above, not drawn.*");
+    let _ = writeln!(
+        t,
+        "\n*An arrow runs from a claim to a claim that uses it; rounded boxes are the statement, dashed boxes belong to other environments. Definitions and background facts are listed above, not drawn.*"
+    );
     t
 }
 

@@ -20,13 +20,13 @@ pub fn expand_macros(src: &str, macros: &BTreeMap<String, String>) -> String {
                 while j < b.len() && b[j].is_ascii_alphabetic() {
                     j += 1;
                 }
-                if j > i + 1 {
-                    if let Some(rep) = macros.get(&s[i + 1..j]) {
-                        out.push_str(rep);
-                        changed = true;
-                        i = j;
-                        continue;
-                    }
+                if j > i + 1
+                    && let Some(rep) = macros.get(&s[i + 1..j])
+                {
+                    out.push_str(rep);
+                    changed = true;
+                    i = j;
+                    continue;
                 }
                 // copy the backslash and the following char (keeps `\\` intact)
                 out.push('\\');

@@ -1,6 +1,6 @@
 //! Complete elliptic integrals of the first kind by the arithmetic–geometric mean.
 
-use super::{check_modulus_below_one, SpecialError, GUARD};
+use super::{GUARD, SpecialError, check_modulus_below_one};
 use crate::numbers::Real;
 
 /// `AGM(a, b)` for `a, b > 0` at the precision of `a` (DLMF 19.8.1).  Quadratic

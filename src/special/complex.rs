@@ -2,7 +2,7 @@
 
 use super::jacobi::sncndn_imp;
 use super::modulus::{Modulus, Spec};
-use super::{check_finite, check_modulus_below_one, show, SpecialError, GUARD};
+use super::{GUARD, SpecialError, check_finite, check_modulus_below_one, show};
 use crate::numbers::{ComplexScalar, Real, Scalar};
 
 /// `(sn, cn, dn)(u, k)` for complex `u = x + iy` and real **modulus** `0 ≤ k < 1`.

@@ -2,7 +2,7 @@
 
 use super::agm::complementary;
 use super::reduce::reduce_dd;
-use super::{check_finite, check_modulus_below_one, show, SpecialError, GUARD};
+use super::{GUARD, SpecialError, check_finite, check_modulus_below_one, show};
 use crate::numbers::Real;
 
 /// π as an unevaluated sum of three doubles.

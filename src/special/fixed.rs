@@ -8,15 +8,15 @@
 //!   call) build their data afresh;
 //! * the 150-bit quarter periods used by the exact reduction of large arguments.
 
-use super::bottom::{sine_cases, tanh_sech, Bottom};
-use super::dd::{fast_two_sum, two_sum, with_fma, with_value, Dd};
-use super::modulus::{quadrant, untransform, Form, Modulus, Spec};
+use super::bottom::{Bottom, sine_cases, tanh_sech};
+use super::dd::{Dd, fast_two_sum, two_sum, with_fma, with_value};
+use super::modulus::{Form, Modulus, Spec, quadrant, untransform};
 use super::reduce::reduce_dd2;
-use super::theta::{Theta, SERIES_MAX_M};
-use super::{show, SpecialError};
+use super::theta::{SERIES_MAX_M, Theta};
+use super::{SpecialError, show};
 use crate::numbers::Real;
-use rug::float::Constant;
 use rug::Float;
+use rug::float::Constant;
 use std::cell::RefCell;
 
 /// Per-modulus data of the fixed-precision path (what the per-thread cache keeps): the

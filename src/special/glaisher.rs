@@ -4,7 +4,7 @@
 use super::complex::sncndn_complex;
 use super::jacobi::sncndn_imp;
 use super::modulus::{Modulus, Spec};
-use super::{check_finite, check_modulus, show, SpecialError};
+use super::{SpecialError, check_finite, check_modulus, show};
 use crate::numbers::{ComplexScalar, Real, Scalar};
 
 /// One of the twelve Jacobi elliptic functions (DLMF 22.2.4–9): `sn cn dn cd dc ns nc

@@ -1,7 +1,7 @@
 //! Inverse of the Jacobi functions: the argument from `(sn, cn, dn)`.
 
 use super::ellint::ellipf;
-use super::{check_finite, check_modulus_below_one, show, SpecialError};
+use super::{SpecialError, check_finite, check_modulus_below_one, show};
 use crate::numbers::Real;
 
 /// The real argument `u ∈ (−2K, 2K]` with `sn(u,k) = sn` and `cn(u,k) = cn`

@@ -1,11 +1,11 @@
 //! Jacobi elliptic functions sn, cn, dn and the amplitude am of a real argument: the
 //! choice of algorithm ([`sncndn_imp`]) and the public entry points.
 
-use super::bottom::{sine_cases, tanh_sech, Bottom};
+use super::bottom::{Bottom, sine_cases, tanh_sech};
 use super::fixed::{sncndn_fixed, sncndn_fixed_many};
-use super::modulus::{mp_modulus, untransform, Form, Modulus, Spec};
+use super::modulus::{Form, Modulus, Spec, mp_modulus, untransform};
 use super::multi::reduced;
-use super::{check_finite, check_modulus, show, SpecialError, GUARD};
+use super::{GUARD, SpecialError, check_finite, check_modulus, show};
 use crate::numbers::Real;
 
 /// `(sn, cn, dn)(u)` for the modulus `spec`, at working precision (at least `n` bits;

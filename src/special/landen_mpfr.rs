@@ -4,9 +4,9 @@
 //! creates a new `Float` for every intermediate result).  Chosen statically by the
 //! chain strategy of `rug::Float` (`multi::Cached`).
 
+use super::SpecialError;
 use super::landen::Chain;
 use super::sincos::sin_cos_into;
-use super::SpecialError;
 use rug::{Assign, Float};
 
 /// `log2 |x|` (`−∞` for zero), without overflow or underflow for any exponent.

@@ -110,7 +110,7 @@ mod theta;
 pub use agm::{ellipk, ellipkp};
 pub use complex::sncndn_complex;
 pub use ellint::ellipf;
-pub use glaisher::{jacobi, jacobi_complex, jacobi_m, JacobiFn};
+pub use glaisher::{JacobiFn, jacobi, jacobi_complex, jacobi_m};
 pub use inverse::jacobi_inverse;
 pub use jacobi::{am, sncndn, sncndn_m, sncndn_many};
 

@@ -2,7 +2,7 @@
 //! evaluated ([`Modulus`]), the transformations of DLMF §22.17 that take any real modulus
 //! to `κ ∈ [0, 1]` ([`Form`]), and the quadrant of an argument.
 
-use super::{show, SpecialError};
+use super::{SpecialError, show};
 use crate::numbers::Real;
 
 /// Which modulus of the pair `(k, k')` an evaluation is for: `k` itself, or its

@@ -12,8 +12,8 @@
 
 use super::agm::complementary;
 use super::landen::Chain;
-use super::modulus::{quadrant, Modulus};
-use super::{show, SpecialError, GUARD};
+use super::modulus::{Modulus, quadrant};
+use super::{GUARD, SpecialError, show};
 use crate::numbers::Real;
 use rug::Float;
 use std::cell::RefCell;

@@ -3,8 +3,8 @@
 //! `t-theta.c`): each bottom is an exact formula for every modulus, so where two of them
 //! apply they must agree to rounding.
 
-use super::bottom::tanh_sech;
 use super::bottom::Bottom;
+use super::bottom::tanh_sech;
 use super::dd::Dd;
 use super::fixed::sncndn_theta;
 use super::modulus::Modulus;

@@ -40,7 +40,7 @@
 //! `πK/(2K') = −ln(q')/2`, also in double-double ([`Dd::ln`]).
 
 use super::bottom::Bottom;
-use super::dd::{fast_two_sum, two_prod, two_sum, with_value, Dd};
+use super::dd::{Dd, fast_two_sum, two_prod, two_sum, with_value};
 use crate::numbers::Real;
 
 /// `π/2` as a double-double.
@@ -505,8 +505,8 @@ pub(crate) fn half_period_sign<R: Real>(j: i64, (s, c, d): (R, R, R)) -> (R, R, 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rug::float::Constant;
     use rug::Float;
+    use rug::float::Constant;
 
     /// The series scale `π/(2K) = AGM(1, κ')` from the nome in `f64` (where
     /// [`Theta::with_bottom`] takes it, up to `κ ≈ 0.7`) against a 256-bit AGM, to the

@@ -4,9 +4,9 @@
 use crate::algebra_identities;
 
 use crate::algebra_identities::{
-    addition, cayley, g0g1, g1_alphabeta, mm, sol_et, Regime, Variant,
+    Regime, Variant, addition, cayley, g0g1, g1_alphabeta, mm, sol_et,
 };
-use eulertop::algebra::{prove_components, Proof, RingOptions};
+use eulertop::algebra::{Proof, RingOptions, prove_components};
 
 fn opts() -> RingOptions {
     RingOptions {

@@ -6,7 +6,7 @@
 //! * a sum of products over one denominator (`Sym::try_sum_of_products`) equals the
 //!   products and sums taken one at a time, normal form and shadow.
 
-use eulertop::algebra::{prove_identity, Ring, RingOptions, Sym};
+use eulertop::algebra::{Ring, RingOptions, Sym, prove_identity};
 use proptest::prelude::*;
 use rug::{Complex, Float};
 

@@ -3,7 +3,7 @@
 //! comparisons, the addition-theorem expansion with quarter and half periods, base
 //! refinement, derivatives.  Every expected value is a mathematical identity.
 
-use eulertop::algebra::{prove_identity, AlgebraError, Origin, Ring, RingOptions, Sym};
+use eulertop::algebra::{AlgebraError, Origin, Ring, RingOptions, Sym, prove_identity};
 use eulertop::numbers::{Real, Scalar};
 use rug::{Complex, Float};
 
@@ -326,10 +326,12 @@ fn derivatives_in_the_modulus() {
     let (s, c, d) = u.sncndn(&k).unwrap();
     let dk_s = s.derivative(&k).unwrap();
     // the Pythagorean relations are constant in k
-    assert!((&(&s * &s) + &(&c * &c))
-        .derivative(&k)
-        .unwrap()
-        .is_exact_zero());
+    assert!(
+        (&(&s * &s) + &(&c * &c))
+            .derivative(&k)
+            .unwrap()
+            .is_exact_zero()
+    );
     let dn_rel = &(&d * &d) + &(&(&k * &k) * &(&s * &s));
     assert!(dn_rel.derivative(&k).unwrap().is_exact_zero());
     for (p, (uu, kk)) in [(0.3, 0.5), (-0.8, 0.9), (1.2, 0.2)].iter().enumerate() {

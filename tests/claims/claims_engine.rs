@@ -3,12 +3,12 @@
 //! known mathematically.
 
 use eulertop::claims::builtins::Builtin;
-use eulertop::claims::catalogue::{load_sources, Catalogue};
+use eulertop::claims::catalogue::{Catalogue, load_sources};
 use eulertop::claims::eval::{Backend, Evaluator};
 use eulertop::claims::parser::{parse_bindings, parse_expr};
 use eulertop::claims::registry::Registry;
 use eulertop::claims::value::Value;
-use eulertop::claims::verdict::{run_claim, Options, Verdict};
+use eulertop::claims::verdict::{Options, Verdict, run_claim};
 use eulertop::linalg::Vec3;
 use eulertop::numbers::Rational;
 use proptest::prelude::*;
@@ -21,7 +21,9 @@ fn load(src: &str) -> Result<Catalogue, String> {
 fn claim(body: &str) -> String {
     // the structure fields go last (before an inner table), so error lines stay put
     let (own, inner) = body.split_at(body.find("[claim.inner]").unwrap_or(body.len()));
-    format!("[[claim]]\nid = \"c\"\nlocation = \"test\"\nprinted = 'x'\n{own}\nenvironment = \"Section 2\"\nrole = \"statement\"\n{inner}\n")
+    format!(
+        "[[claim]]\nid = \"c\"\nlocation = \"test\"\nprinted = 'x'\n{own}\nenvironment = \"Section 2\"\nrole = \"statement\"\n{inner}\n"
+    )
 }
 
 fn verdict_of(src: &str, bits: &[u32]) -> eulertop::claims::verdict::ClaimResult {
@@ -39,7 +41,9 @@ const LADDER: [u32; 4] = [53, 128, 256, 512];
 
 #[test]
 fn syntax_error_has_file_line_column_and_underline() {
-    let src = claim("kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(0, 1)\"]]\nlhs = \"x + * 2\"\nrhs = \"x\"");
+    let src = claim(
+        "kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(0, 1)\"]]\nlhs = \"x + * 2\"\nrhs = \"x\"",
+    );
     let err = load(&src).unwrap_err();
     // line 8 is `lhs = "x + * 2"`; the '*' is at column 12
     assert!(err.starts_with("t.toml:8:12: syntax error"), "{err}");
@@ -52,7 +56,9 @@ fn syntax_error_has_file_line_column_and_underline() {
 
 #[test]
 fn multiline_let_error_points_into_the_block() {
-    let src = claim("kind = \"identity\"\nexpect = \"holds\"\nlet = '''\na = 1\nb = 2 + * 3\n'''\nlhs = \"a\"\nrhs = \"a\"");
+    let src = claim(
+        "kind = \"identity\"\nexpect = \"holds\"\nlet = '''\na = 1\nb = 2 + * 3\n'''\nlhs = \"a\"\nrhs = \"a\"",
+    );
     let err = load(&src).unwrap_err();
     assert!(err.starts_with("t.toml:9:9: syntax error"), "{err}");
 }
@@ -190,7 +196,12 @@ fn evaluator_types_and_errors() {
 #[test]
 fn true_identity_holds_with_small_loss() {
     // sin and cos are sn and cn of modulus 0 in the prover, so this is also proved
-    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"proved\"\nvars = [[\"x\", \"uniform(-3, 3)\"]]\nlhs = \"sin(x)^2 + cos(x)^2\"\nrhs = \"1\""), &LADDER);
+    let r = verdict_of(
+        &claim(
+            "kind = \"identity\"\nexpect = \"proved\"\nvars = [[\"x\", \"uniform(-3, 3)\"]]\nlhs = \"sin(x)^2 + cos(x)^2\"\nrhs = \"1\"",
+        ),
+        &LADDER,
+    );
     assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
     assert!(r.loss_bits.unwrap() <= 8.0);
     assert_eq!(r.residuals.len(), 4);
@@ -201,7 +212,12 @@ fn true_identity_holds_with_small_loss() {
 #[test]
 fn false_identity_is_refuted_with_counterexample() {
     // sin² + cos² = 1 + x²/1000 is false for every x ≠ 0 (x ≥ 1/2 here)
-    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"refuted\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\nlhs = \"sin(x)^2 + cos(x)^2\"\nrhs = \"1 + x^2/1000\""), &LADDER);
+    let r = verdict_of(
+        &claim(
+            "kind = \"identity\"\nexpect = \"refuted\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\nlhs = \"sin(x)^2 + cos(x)^2\"\nrhs = \"1 + x^2/1000\"",
+        ),
+        &LADDER,
+    );
     assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
     let c = r.counterexample.expect("counterexample");
     assert_eq!(c.point[0].name, "x");
@@ -215,14 +231,24 @@ fn false_identity_is_refuted_with_counterexample() {
 fn tiny_discrepancy_is_inconclusive_not_holds() {
     // a constant 2^-80 discrepancy: invisible at 53 bits, visible from 128 bits on, but
     // below the refutation floor 2^-30: honestly inconclusive
-    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"inconclusive\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\nlhs = \"x\"\nrhs = \"x + 2^-80\""), &LADDER);
+    let r = verdict_of(
+        &claim(
+            "kind = \"identity\"\nexpect = \"inconclusive\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\nlhs = \"x\"\nrhs = \"x + 2^-80\"",
+        ),
+        &LADDER,
+    );
     assert_eq!(r.verdict, Verdict::Inconclusive, "{}", r.reason);
     assert!(r.loss_bits.unwrap() > 24.0);
 }
 
 #[test]
 fn exact_points_are_evidence_and_the_normal_form_proves() {
-    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"uniform(-2, 2)\"], [\"b\", \"uniform(-2, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + 2*a*b + b^2\"\nexact = true\nexact_samples = 3"), &LADDER);
+    let r = verdict_of(
+        &claim(
+            "kind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"uniform(-2, 2)\"], [\"b\", \"uniform(-2, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + 2*a*b + b^2\"\nexact = true\nexact_samples = 3",
+        ),
+        &LADDER,
+    );
     assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
     let ex = r.exact.unwrap();
     assert_eq!(ex.points, 3);
@@ -236,12 +262,22 @@ fn exact_points_are_evidence_and_the_normal_form_proves() {
 
 #[test]
 fn exact_false_identity_refuted_exactly() {
-    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"refuted\"\nvars = [[\"a\", \"uniform(1, 2)\"], [\"b\", \"uniform(1, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + b^2\"\nexact = true"), &LADDER);
+    let r = verdict_of(
+        &claim(
+            "kind = \"identity\"\nexpect = \"refuted\"\nvars = [[\"a\", \"uniform(1, 2)\"], [\"b\", \"uniform(1, 2)\"]]\nlhs = \"(a + b)^2\"\nrhs = \"a^2 + b^2\"\nexact = true",
+        ),
+        &LADDER,
+    );
     assert_eq!(r.verdict, Verdict::Refuted);
     assert_eq!(r.counterexample.unwrap().bits, 0, "exact counterexample");
     // normal() gives no Schwartz–Zippel bound for the rational points, but the symbolic
     // normal form proves the identity whatever the sampling
-    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"normal()\"]]\nlhs = \"(a + 1)^2\"\nrhs = \"a^2 + 2*a + 1\"\nexact = true"), &LADDER);
+    let r = verdict_of(
+        &claim(
+            "kind = \"identity\"\nexpect = \"proved\"\nvars = [[\"a\", \"normal()\"]]\nlhs = \"(a + 1)^2\"\nrhs = \"a^2 + 2*a + 1\"\nexact = true",
+        ),
+        &LADDER,
+    );
     assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
     assert!(r.proof.is_proved());
     assert_eq!(r.exact.unwrap().set_size, None);
@@ -250,23 +286,39 @@ fn exact_false_identity_refuted_exactly() {
 #[test]
 fn unevaluable_samples_are_reported_not_counted() {
     // sqrt(x) fails for x < 0 (about half the draws): failures are listed and replaced
-    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"holds\"\nsamples = 20\nvars = [[\"x\", \"uniform(-1, 3)\"]]\nlhs = \"sqrt(x)^2\"\nrhs = \"x\""), &[53, 128]);
+    let r = verdict_of(
+        &claim(
+            "kind = \"identity\"\nexpect = \"holds\"\nsamples = 20\nvars = [[\"x\", \"uniform(-1, 3)\"]]\nlhs = \"sqrt(x)^2\"\nrhs = \"x\"",
+        ),
+        &[53, 128],
+    );
     assert_eq!(r.verdict, Verdict::Holds);
     assert_eq!(r.samples, 20);
     assert!(!r.failures.is_empty() && r.failures.len() < 20);
-    assert!(r
-        .failures
-        .iter()
-        .all(|f| f.message.contains("sqrt of negative")));
+    assert!(
+        r.failures
+            .iter()
+            .all(|f| f.message.contains("sqrt of negative"))
+    );
     // when every sample fails the claim is inconclusive
-    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"inconclusive\"\nvars = [[\"x\", \"uniform(-3, -1)\"]]\nlhs = \"sqrt(x)\"\nrhs = \"x\""), &[53]);
+    let r = verdict_of(
+        &claim(
+            "kind = \"identity\"\nexpect = \"inconclusive\"\nvars = [[\"x\", \"uniform(-3, -1)\"]]\nlhs = \"sqrt(x)\"\nrhs = \"x\"",
+        ),
+        &[53],
+    );
     assert_eq!(r.verdict, Verdict::Inconclusive);
     assert!(r.reason.contains("could not be evaluated"));
 }
 
 #[test]
 fn thin_domain_is_a_clear_inconclusive() {
-    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"inconclusive\"\nvars = [[\"x\", \"uniform(0, 1)\"]]\nwhere = [\"x > 2\"]\nlhs = \"x\"\nrhs = \"x\""), &[53]);
+    let r = verdict_of(
+        &claim(
+            "kind = \"identity\"\nexpect = \"inconclusive\"\nvars = [[\"x\", \"uniform(0, 1)\"]]\nwhere = [\"x > 2\"]\nlhs = \"x\"\nrhs = \"x\"",
+        ),
+        &[53],
+    );
     assert_eq!(r.verdict, Verdict::Inconclusive);
     assert!(
         r.reason.contains("domain too thin") && r.reason.contains("x > 2"),
@@ -296,11 +348,21 @@ fn asymptotic_slopes() {
 fn independence_existence_negation() {
     let dom = "vars = [[\"k\", \"uniform(0.1, 0.9)\"], [\"u\", \"uniform(-2, 2)\"]]\n";
     // sn² + cn² = 1: its derivative in u has the normal form 0, so it is proved
-    let r = verdict_of(&claim(&format!("kind = \"independence\"\nexpect = \"proved\"\n{dom}expr = \"sn(u, k)^2 + cn(u, k)^2\"\nwrt = \"u\"")), &LADDER);
+    let r = verdict_of(
+        &claim(&format!(
+            "kind = \"independence\"\nexpect = \"proved\"\n{dom}expr = \"sn(u, k)^2 + cn(u, k)^2\"\nwrt = \"u\""
+        )),
+        &LADDER,
+    );
     assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
     assert!(r.as_expected);
     // sn² depends on u: never proved
-    let r = verdict_of(&claim(&format!("kind = \"independence\"\nexpect = \"refuted\"\n{dom}expr = \"sn(u, k)^2\"\nwrt = \"u\"")), &LADDER);
+    let r = verdict_of(
+        &claim(&format!(
+            "kind = \"independence\"\nexpect = \"refuted\"\n{dom}expr = \"sn(u, k)^2\"\nwrt = \"u\""
+        )),
+        &LADDER,
+    );
     assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
     let r = verdict_of(
         &claim(&format!(
@@ -310,13 +372,28 @@ fn independence_existence_negation() {
     );
     assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
     // x² = a has a positive root for a in [1, 4]
-    let r = verdict_of(&claim("kind = \"existence\"\nexpect = \"holds\"\nvars = [[\"a\", \"uniform(1, 4)\"]]\nunknowns = [\"x\"]\nequations = [\"x^2 - a\"]\nstart = [\"uniform(0.5, 3)\"]\nin = \"x > 0\""), &LADDER);
+    let r = verdict_of(
+        &claim(
+            "kind = \"existence\"\nexpect = \"holds\"\nvars = [[\"a\", \"uniform(1, 4)\"]]\nunknowns = [\"x\"]\nequations = [\"x^2 - a\"]\nstart = [\"uniform(0.5, 3)\"]\nin = \"x > 0\"",
+        ),
+        &LADDER,
+    );
     assert_eq!(r.verdict, Verdict::Holds, "{}", r.reason);
     // x² = −a has no real root: Newton fails, inconclusive (never refuted)
-    let r = verdict_of(&claim("kind = \"existence\"\nexpect = \"inconclusive\"\nvars = [[\"a\", \"uniform(1, 4)\"]]\nunknowns = [\"x\"]\nequations = [\"x^2 + a\"]\nstart = [\"uniform(0.5, 3)\"]"), &[53, 128]);
+    let r = verdict_of(
+        &claim(
+            "kind = \"existence\"\nexpect = \"inconclusive\"\nvars = [[\"a\", \"uniform(1, 4)\"]]\nunknowns = [\"x\"]\nequations = [\"x^2 + a\"]\nstart = [\"uniform(0.5, 3)\"]",
+        ),
+        &[53, 128],
+    );
     assert_eq!(r.verdict, Verdict::Inconclusive);
     // negation of a false identity holds, with the inner counterexample as evidence
-    let r = verdict_of(&claim("kind = \"negation\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\n[claim.inner]\nkind = \"identity\"\nlhs = \"sin(2*x)\"\nrhs = \"2*sin(x)\""), &LADDER);
+    let r = verdict_of(
+        &claim(
+            "kind = \"negation\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\n[claim.inner]\nkind = \"identity\"\nlhs = \"sin(2*x)\"\nrhs = \"2*sin(x)\"",
+        ),
+        &LADDER,
+    );
     assert_eq!(r.verdict, Verdict::Holds, "{}", r.reason);
     assert!(r.counterexample.is_some());
 }
@@ -325,7 +402,9 @@ fn independence_existence_negation() {
 fn definitions_are_global_and_deterministic() {
     let src = format!(
         "{}[[claim]]\nid = \"d\"\nlocation = \"l\"\nprinted = 'p'\nenvironment = \"Section 2\"\nrole = \"definition\"\nkind = \"definition\"\ndefine = '''\nsq(x) = x * x\n'''\n",
-        claim("kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(-1, 1)\"]]\nlhs = \"sq(x + 1)\"\nrhs = \"x^2 + 2*x + 1\"")
+        claim(
+            "kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(-1, 1)\"]]\nlhs = \"sq(x + 1)\"\nrhs = \"x^2 + 2*x + 1\""
+        )
     );
     let mut a = verdict_of(&src, &LADDER);
     let mut b = verdict_of(&src, &LADDER);
@@ -374,7 +453,9 @@ fn a_panicking_registered_function_gives_inconclusive_not_a_crash() {
     let mut reg = Registry::new();
     reg.register("boom", 1, "panics", Boom).unwrap();
     assert!(reg.register("sin", 1, "clash", Boom).is_err());
-    let src = claim("kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(0, 1)\"]]\nlhs = \"boom(x)\"\nrhs = \"x\"");
+    let src = claim(
+        "kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(0, 1)\"]]\nlhs = \"boom(x)\"\nrhs = \"x\"",
+    );
     let cat = load_sources(&[("t.toml".into(), src)], reg).unwrap();
     let r = run_claim(&cat, &cat.claims[0], &Options::default());
     assert_eq!(r.verdict, Verdict::Inconclusive);
@@ -642,7 +723,9 @@ fn undefined_names_are_load_errors_at_their_position() {
 #[test]
 fn recursive_definitions_are_load_errors() {
     let def = |body: &str| {
-        format!("[[claim]]\nid = \"d\"\nlocation = \"l\"\nprinted = 'p'\nkind = \"definition\"\nenvironment = \"Section 2\"\nrole = \"statement\"\ndefine = '''\n{body}\n'''\n")
+        format!(
+            "[[claim]]\nid = \"d\"\nlocation = \"l\"\nprinted = 'p'\nkind = \"definition\"\nenvironment = \"Section 2\"\nrole = \"statement\"\ndefine = '''\n{body}\n'''\n"
+        )
     };
     let e = load(&def("f(M) = f(M)")).unwrap_err();
     assert!(
@@ -725,7 +808,12 @@ fn catalogue_paths_give_one_line_errors() {
 #[test]
 fn jacobi_inverse_works_in_a_catalogue() {
     // |u| < 1 < K(k): the inverse of (sn, cn, dn) is u itself
-    let r = verdict_of(&claim("kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"k\", \"uniform(0.1, 0.9)\"], [\"u\", \"uniform(-1, 1)\"]]\nlhs = \"jacobi_inverse(sn(u, k), cn(u, k), dn(u, k), k)\"\nrhs = \"u\""), &LADDER);
+    let r = verdict_of(
+        &claim(
+            "kind = \"identity\"\nexpect = \"holds\"\nvars = [[\"k\", \"uniform(0.1, 0.9)\"], [\"u\", \"uniform(-1, 1)\"]]\nlhs = \"jacobi_inverse(sn(u, k), cn(u, k), dn(u, k), k)\"\nrhs = \"u\"",
+        ),
+        &LADDER,
+    );
     assert_eq!(r.verdict, Verdict::Holds, "{}", r.reason);
 }
 

@@ -178,10 +178,10 @@ impl Gen<'_> {
             return self.leaf(t);
         }
         self.budget -= 1;
-        if self.rng.gen_bool(0.3) {
-            if let Some(s) = self.operator(t, depth) {
-                return s;
-            }
+        if self.rng.gen_bool(0.3)
+            && let Some(s) = self.operator(t, depth)
+        {
+            return s;
         }
         if t == 'r' && self.rng.gen_bool(0.15) && !self.model.is_empty() {
             // a model function: mostly real and vec3 arguments, any result type

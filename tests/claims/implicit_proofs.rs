@@ -5,7 +5,7 @@
 //! never are.
 
 use eulertop::bindings::euler_top::registry;
-use eulertop::claims::catalogue::{load_sources, read_sources, Body, Catalogue};
+use eulertop::claims::catalogue::{Body, Catalogue, load_sources, read_sources};
 use eulertop::claims::verdict::context::Ctx;
 use eulertop::claims::verdict::symbolic::prove;
 

@@ -4,10 +4,10 @@
 //! load errors that point at the hint.
 
 use eulertop::bindings::euler_top::registry;
-use eulertop::claims::catalogue::{load_sources, read_sources, Body, Catalogue};
+use eulertop::claims::catalogue::{Body, Catalogue, load_sources, read_sources};
 use eulertop::claims::verdict::context::Ctx;
 use eulertop::claims::verdict::symbolic::prove;
-use eulertop::claims::verdict::{run_claim, Options, Verdict};
+use eulertop::claims::verdict::{Options, Verdict, run_claim};
 
 /// A Proposition 4 control for γ₂ with the given hint line (empty: no hint).
 fn control(id: &str, hint: &str) -> String {

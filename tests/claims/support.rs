@@ -1,10 +1,10 @@
 //! What the proof tests share: catalogues with control claims, and one proof attempt.
 
 use eulertop::bindings::euler_top::registry;
-use eulertop::claims::catalogue::{load_sources, read_sources, Body, Catalogue};
+use eulertop::claims::catalogue::{Body, Catalogue, load_sources, read_sources};
+use eulertop::claims::verdict::ProofInfo;
 use eulertop::claims::verdict::context::Ctx;
 use eulertop::claims::verdict::symbolic::prove;
-use eulertop::claims::verdict::ProofInfo;
 
 /// The catalogue of `identities/` with the control claims `text` added.
 pub fn with_catalogue(text: String) -> Catalogue {

@@ -3,8 +3,8 @@
 //! where no component of M + M̂ vanishes, but exercised on the catalogue's own domain.
 
 use eulertop::bindings::euler_top::registry;
-use eulertop::claims::catalogue::{load_sources, Catalogue};
-use eulertop::claims::verdict::{run_claim, Options, Verdict};
+use eulertop::claims::catalogue::{Catalogue, load_sources};
+use eulertop::claims::verdict::{Options, Verdict, run_claim};
 use std::path::Path;
 
 /// The catalogue's sources, with `edit` applied to the text of the file named `file`,

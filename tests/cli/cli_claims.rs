@@ -222,9 +222,10 @@ fn coverage_lists_all_96_paper_labels() {
     let rows = v["coverage"].as_array().unwrap();
     assert_eq!(rows.len(), 96);
     assert_eq!(rows[0]["label"], "ET");
-    assert!(rows
-        .iter()
-        .all(|r| r["claims"].as_array().unwrap().is_empty()));
+    assert!(
+        rows.iter()
+            .all(|r| r["claims"].as_array().unwrap().is_empty())
+    );
 }
 
 #[test]

@@ -49,13 +49,10 @@ fn f64_and_mpfr_output() {
     assert!((sn * sn + v[1] * v[1] - 1.0).abs() < 1e-15);
     assert!((v[2] * v[2] + 0.25 * sn * sn - 1.0).abs() < 1e-15);
     // 17 significant digits per value
-    assert!(out.split_whitespace().all(|t| t
-        .split('e')
-        .next()
-        .unwrap()
-        .replace(['-', '.'], "")
-        .len()
-        == 17));
+    assert!(
+        out.split_whitespace()
+            .all(|t| t.split('e').next().unwrap().replace(['-', '.'], "").len() == 17)
+    );
 
     let (code, out, _) = run(&["--bits", "256"], b"0.75 0.5\n");
     assert_eq!(code, 0);

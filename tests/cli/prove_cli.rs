@@ -96,7 +96,8 @@ fn an_independence_claim_is_proved_by_its_derivative() {
         cert.lines().any(|l| l.starts_with("equiv phiinv")),
         "no equiv line"
     );
-    assert!(cert
-        .lines()
-        .any(|l| l == "field delta param  # opaque symbol"));
+    assert!(
+        cert.lines()
+            .any(|l| l == "field delta param  # opaque symbol")
+    );
 }

@@ -2,11 +2,11 @@
 //! measured orders near 2 (the maps are midpoint-like: γ = 1 + O(h²)), and the
 //! φ̄-independence of Δφ for the Poisson maps γ₁, γ₂, γ_VM against its failure for γ₀.
 
-use eulertop::model::experiments::{
-    fitted_orders, orbit_comparison, phase_curves, CASES, GAMMAS, ORBIT_SAMPLES, PHASE_GRID,
-    PHASE_H,
-};
 use eulertop::model::Gamma;
+use eulertop::model::experiments::{
+    CASES, GAMMAS, ORBIT_SAMPLES, PHASE_GRID, PHASE_H, fitted_orders, orbit_comparison,
+    phase_curves,
+};
 use eulertop::report::figures::model::write_all;
 use eulertop::stats::{loglog_slope, ls_slope};
 use std::path::PathBuf;

@@ -134,23 +134,25 @@ fn check_roots<R: Real>(like: &R) {
     let (sp, sm) = split_roots(&i, &st.omega).unwrap();
     // S₊ ∪ S₋ = S and S₊ = −S₋
     for z in sp.iter().chain(sm.iter()) {
-        assert!(s
-            .iter()
-            .any(|y| (y.clone() - z.clone()).abs().to_f64() < tol));
+        assert!(
+            s.iter()
+                .any(|y| (y.clone() - z.clone()).abs().to_f64() < tol)
+        );
     }
     for z in &sp {
-        assert!(sm
-            .iter()
-            .any(|y| (y.clone() + z.clone()).abs().to_f64() < tol));
+        assert!(
+            sm.iter()
+                .any(|y| (y.clone() + z.clone()).abs().to_f64() < tol)
+        );
     }
     // S₋ is real positive and O(h)-close to 1/J
     let j = j_diag(&i);
     for z in &sm {
         assert!(z.im.abs().to_f64() < tol && z.re > like.zero());
-        assert!(j
-            .0
-            .iter()
-            .any(|jj| (z.re.to_f64() - 1.0 / jj.to_f64()).abs() < 10.0 * h.to_f64()));
+        assert!(
+            j.0.iter()
+                .any(|jj| (z.re.to_f64() - 1.0 / jj.to_f64()).abs() < 10.0 * h.to_f64())
+        );
     }
 }
 

@@ -2,7 +2,7 @@
 //! (tests/data/ellint_ref.csv).
 
 use crate::common::*;
-use eulertop::special::{ellipf, ellipk, ellipkp, SpecialError};
+use eulertop::special::{SpecialError, ellipf, ellipk, ellipkp};
 use rug::Float;
 
 fn rel(got: &Float, want: &str, n: u32) -> f64 {

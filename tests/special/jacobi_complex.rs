@@ -3,8 +3,8 @@
 //! `2jK + (2l+1)iK'` and the zero of dn at `K + iK'`.
 
 use crate::common::*;
-use eulertop::numbers::{Cplx, C64};
-use eulertop::special::{sncndn_complex, SpecialError};
+use eulertop::numbers::{C64, Cplx};
+use eulertop::special::{SpecialError, sncndn_complex};
 use rug::Float;
 
 /// Error of `got` relative to max(1, |want|).

@@ -1,6 +1,6 @@
 //! jacobi_inverse: round trips u → (sn, cn, dn) → u on (−2K, 2K], f64 and MPFR.
 
-use eulertop::special::{ellipk, jacobi_inverse, sncndn, SpecialError};
+use eulertop::special::{SpecialError, ellipk, jacobi_inverse, sncndn};
 use proptest::prelude::*;
 use rug::Float;
 

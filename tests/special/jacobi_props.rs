@@ -2,7 +2,7 @@
 //! Pythagorean relations (DLMF 22.6.1), addition theorems (DLMF 22.8.1–3), periods
 //! (DLMF 22.4.3), derivatives via automatic differentiation (DLMF 22.13.1–3), amplitude.
 
-use eulertop::numbers::{Cplx, Dual, Real, C64};
+use eulertop::numbers::{C64, Cplx, Dual, Real};
 use eulertop::special::{am, ellipf, ellipk, ellipkp, sncndn, sncndn_complex};
 use proptest::prelude::*;
 use rug::Float;

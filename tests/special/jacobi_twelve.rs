@@ -5,7 +5,7 @@
 //! identities between the twelve (DLMF 22.6.1–2) as properties.
 
 use crate::common::*;
-use eulertop::special::{jacobi, jacobi_m, JacobiFn, SpecialError};
+use eulertop::special::{JacobiFn, SpecialError, jacobi, jacobi_m};
 use proptest::prelude::*;
 use rug::Float;
 

@@ -147,7 +147,7 @@ pub fn jacobi_triple<T: Num>(a: &[Value<T>]) -> Result<[Value<T>; 3], String> {
             return Err(format!(
                 "argument u must be real or complex, got a {}",
                 v.type_name()
-            ))
+            ));
         }
     })
 }
@@ -188,11 +188,7 @@ pub fn jacobi_pick<T: Num>(
         Value::Complex(z) => z.re.is_finite() && z.im.is_finite(),
         _ => true,
     };
-    if finite {
-        Ok(v)
-    } else {
-        Err(overflow())
-    }
+    if finite { Ok(v) } else { Err(overflow()) }
 }
 
 /// `u` for a message: a real or a complex number in `f64`.

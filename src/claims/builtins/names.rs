@@ -1,7 +1,7 @@
 //! The built-in functions of the language, declared once: the checker, the evaluator,
 //! the LaTeX writer and the table in `identities/README.md` all read this declaration.
 
-use super::table::{name_table, Arity};
+use super::table::{Arity, name_table};
 
 /// Which part of the language a built-in belongs to (the README groups by it).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -3,7 +3,7 @@
 //! happens, and `identities/README.md` lists them from this table.
 
 use super::names::cell;
-use super::table::{name_table, Arity};
+use super::table::{Arity, name_table};
 
 /// The declaration of a random primitive.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -250,10 +250,10 @@ impl Checker<'_> {
 fn calls_of(body: &Expr, defs: &BTreeMap<&str, usize>) -> Vec<usize> {
     let mut out = Vec::new();
     body.walk(&mut |x| {
-        if let ExprKind::Call(n, _) = &x.kind {
-            if let Some(&j) = defs.get(n.as_str()) {
-                out.push(j);
-            }
+        if let ExprKind::Call(n, _) = &x.kind
+            && let Some(&j) = defs.get(n.as_str())
+        {
+            out.push(j);
         }
     });
     out

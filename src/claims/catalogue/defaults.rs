@@ -171,9 +171,11 @@ mod tests {
             "h0 must be positive, not -1"
         );
         assert!(pick("slope_tol", Some(f64::NAN)).is_err());
-        assert!(DEFAULTS
-            .iter()
-            .all(|d| d.value >= d.min && d.value <= d.max));
+        assert!(
+            DEFAULTS
+                .iter()
+                .all(|d| d.value >= d.min && d.value <= d.max)
+        );
     }
 
     #[test]

@@ -238,8 +238,9 @@ mod tests {
         let at = f.text.find('z').unwrap();
         let e = f.error_at(at, at + 1, "unknown");
         assert_eq!((e.line, e.col, e.width), (2, 12, 1));
-        assert!(e
-            .to_string()
-            .ends_with("\n    y = \"αβ\" + z\n               ^"));
+        assert!(
+            e.to_string()
+                .ends_with("\n    y = \"αβ\" + z\n               ^")
+        );
     }
 }

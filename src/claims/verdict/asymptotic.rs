@@ -12,8 +12,8 @@
 //! The bound is one-sided, as O(·) is: a slope above the order (the expression is
 //! smaller than claimed) passes.
 
-use super::context::{at_rung, collect, eval, named, AtRung, Ctx, Sample};
-use super::ladder::{judged, Worst};
+use super::context::{AtRung, Ctx, Sample, at_rung, collect, eval, named};
+use super::ladder::{Worst, judged};
 use super::result::{Cause, Counterexample, Evidence, Failure, Rung};
 use crate::claims::catalogue::PExpr;
 use crate::claims::eval::Backend;
@@ -265,7 +265,7 @@ mod tests {
     use super::*;
     use crate::claims::catalogue::load_sources;
     use crate::claims::registry::Registry;
-    use crate::claims::verdict::{run_claim, Options};
+    use crate::claims::verdict::{Options, run_claim};
 
     /// The slopes of e(h) at h_j = h0·2^-j, j < steps.
     fn slopes(e: impl Fn(f64) -> f64, h0: f64, steps: usize) -> Slopes {

@@ -3,7 +3,7 @@
 //! proves: only the symbolic normal form does, see [`super::symbolic`]); an exact nonzero
 //! is a refutation with an exact counterexample.
 
-use super::context::{eval, named, render, Ctx};
+use super::context::{Ctx, eval, named, render};
 use super::result::{Cause, Counterexample, Evidence, ExactInfo, Failure};
 use crate::claims::catalogue::{ExactSpec, PExpr};
 use crate::claims::kind::Verdict;

@@ -4,7 +4,7 @@
 //! differentiation, and the residual enters the usual ladder.  A failure to converge is
 //! inconclusive: existence cannot be refuted numerically.
 
-use super::context::{at_rung, collect, eval, AtRung, Ctx, Sides};
+use super::context::{AtRung, Ctx, Sides, at_rung, collect, eval};
 use super::ladder;
 use super::result::{Cause, Evidence, Failure};
 use crate::claims::ast::{Expr, ExprKind, Span};
@@ -13,7 +13,7 @@ use crate::claims::eval::{Backend, Evaluator};
 use crate::claims::kind::Verdict;
 use crate::claims::sampler::{Point, Sampler, Stream};
 use crate::claims::value::Value;
-use crate::linalg::newton::{newton, Limits, System};
+use crate::linalg::newton::{Limits, System, newton};
 
 /// The existence claim's fields.
 #[derive(Clone, Copy)]

@@ -49,7 +49,9 @@ pub enum Cause {
     Panic(String),
     /// A counted condition has the same value at every sample (see
     /// [`vacuity`](super::vacuity)).
-    #[error("vacuous on domain {domain}: the condition {condition} is {value} at all {samples} samples, so the claim never meets the case it is about")]
+    #[error(
+        "vacuous on domain {domain}: the condition {condition} is {value} at all {samples} samples, so the claim never meets the case it is about"
+    )]
     Vacuous {
         /// The domain's name.
         domain: String,

@@ -12,7 +12,7 @@
 //! A hint is only a suggestion: a wrong multiplier leaves a remainder, and the claim
 //! is not proved (the other routes are not tried behind it).
 
-use super::context::{eval, Ctx};
+use super::context::{Ctx, eval};
 use crate::algebra::{AlgResult, AlgebraError, Ring, Sym};
 use crate::claims::ast::{Binding, ExprKind};
 use crate::claims::catalogue::{Hint, PExpr};
@@ -82,7 +82,7 @@ pub(super) fn unknown(
                 "hint: the value of '{}' is a {:?}, not a real or a vector",
                 hint.value,
                 other.map(|v| v.type_name())
-            )))
+            )));
         }
     })
 }

@@ -1,7 +1,7 @@
 //! `identity`: lhs == rhs at every sample, on the precision ladder (and exactly, see
 //! [`super::exact`]).
 
-use super::context::{at_rung, collect, eval, render, AtRung, Ctx, Sides};
+use super::context::{AtRung, Ctx, Sides, at_rung, collect, eval, render};
 use super::ladder;
 use super::result::{Cause, Evidence, Failure};
 use crate::claims::catalogue::PExpr;

@@ -4,12 +4,12 @@
 //! Proof: the symbolic normal form of `d(expr, wrt)` is 0 (then expr is constant in
 //! `wrt` on every interval of the domain on which it is defined).
 
-use super::context::{at_rung, collect, eval, render, AtRung, Ctx, Sides};
+use super::context::{AtRung, Ctx, Sides, at_rung, collect, eval, render};
 use super::ladder;
 use super::result::{Cause, Evidence, Failure};
 use crate::claims::catalogue::PExpr;
 use crate::claims::eval::Backend;
-use crate::claims::sampler::{Point, Sampler, Stream, MAX_DRAWS};
+use crate::claims::sampler::{MAX_DRAWS, Point, Sampler, Stream};
 
 /// One sample (a base point and its redraws) at one rung.
 struct At<'a> {
@@ -69,10 +69,10 @@ fn draw(
         let other = alt_sampler.draw().map_err(Cause::Sampling)?;
         let mut p = base.clone();
         for (n, v) in p.vars.iter_mut() {
-            if n == wrt {
-                if let Some(nv) = other.get(wrt) {
-                    *v = nv.clone();
-                }
+            if n == wrt
+                && let Some(nv) = other.get(wrt)
+            {
+                *v = nv.clone();
             }
         }
         if sampler.accepts(&p).unwrap_or(false) {

@@ -10,7 +10,7 @@
 //! The judged rungs — those of at least 128 bits, or all when there are none — are the
 //! same for every kind (asymptotic claims judge their slopes on them too).
 
-use super::context::{named, Sample, Sides};
+use super::context::{Sample, Sides, named};
 use super::result::{Counterexample, Evidence, FailedSample, Rung};
 use crate::claims::catalogue::Claim;
 use crate::claims::kind::Verdict;

@@ -12,7 +12,7 @@
 //! is accepted only when the lemma itself is proved symbolically: [`check`] proves it
 //! (once per catalogue) and the claim is not proved otherwise.
 
-use super::context::{eval, Ctx};
+use super::context::{Ctx, eval};
 use crate::algebra::{AlgResult, AlgebraError, Sym};
 use crate::claims::ast::{Expr, ExprKind};
 use crate::claims::catalogue::{Body, Claim, PExpr};

@@ -84,11 +84,7 @@ pub fn verify(
         .iter()
         .map(|(_, c)| {
             let again = statement_key(cat, c).is_some_and(|k| !seen.insert(k));
-            if again {
-                0
-            } else {
-                expected_cost(cat, c)
-            }
+            if again { 0 } else { expected_cost(cat, c) }
         })
         .collect();
     let mut chosen = chosen;
@@ -101,18 +97,20 @@ pub fn verify(
     let results = std::sync::Mutex::new(Vec::with_capacity(chosen.len()));
     (0..rayon::current_num_threads())
         .into_par_iter()
-        .for_each(|_| loop {
-            let j = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-            let Some((i, c)) = chosen.get(j) else { break };
-            let r = run_claim(cat, c, opts);
-            if timing {
-                eprintln!("timing {:8.1} ms  {}", r.elapsed_ms, c.id);
+        .for_each(|_| {
+            loop {
+                let j = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                let Some((i, c)) = chosen.get(j) else { break };
+                let r = run_claim(cat, c, opts);
+                if timing {
+                    eprintln!("timing {:8.1} ms  {}", r.elapsed_ms, c.id);
+                }
+                done(&r);
+                results
+                    .lock()
+                    .unwrap_or_else(|e| e.into_inner())
+                    .push((*i, r));
             }
-            done(&r);
-            results
-                .lock()
-                .unwrap_or_else(|e| e.into_inner())
-                .push((*i, r));
         });
     let mut results = results.into_inner().unwrap_or_else(|e| e.into_inner());
     results.sort_by_key(|(i, _)| *i);

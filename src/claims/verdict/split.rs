@@ -6,7 +6,7 @@
 //! states a condition is not split (its signs must be proved, never assumed per part).
 
 use super::context::Ctx;
-use super::symbolic::{case_key, prove_case, Role, Signs, MAX_DRAWS, POINTS};
+use super::symbolic::{MAX_DRAWS, POINTS, Role, Signs, case_key, prove_case};
 use crate::algebra::split::SignSplit;
 use crate::algebra::{BaseHint, Proof};
 use crate::claims::catalogue::PExpr;

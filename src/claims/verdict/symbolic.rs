@@ -45,11 +45,11 @@
 //! assert_eq!(r.proof.method, ProofMethod::Symbolic);
 //! ```
 
-use super::context::{eval, Ctx};
+use super::context::{Ctx, eval};
 pub use super::proof_info::{ProofInfo, ProofMethod};
 use super::result::Evidence;
 use crate::algebra::{
-    prove_components, AlgResult, AlgebraError, BaseHint, Outcome, Proof, Ring, RingOptions, Sym,
+    AlgResult, AlgebraError, BaseHint, Outcome, Proof, Ring, RingOptions, Sym, prove_components,
 };
 use crate::claims::ast::{Expr, ExprKind};
 use crate::claims::builtins::Primitive;
@@ -115,15 +115,15 @@ fn finite_values(name: &str, args: &[Expr]) -> Option<usize> {
 fn role_of(p: &PExpr) -> (Role, usize) {
     let (mut values, mut finite, mut continuous) = (1usize, false, false);
     p.expr.walk(&mut |e| {
-        if let ExprKind::Call(name, args) = &e.kind {
-            if Primitive::from_name(name).is_some() {
-                match finite_values(name, args) {
-                    Some(n) => {
-                        finite = true;
-                        values = values.saturating_mul(n);
-                    }
-                    None => continuous = true,
+        if let ExprKind::Call(name, args) = &e.kind
+            && Primitive::from_name(name).is_some()
+        {
+            match finite_values(name, args) {
+                Some(n) => {
+                    finite = true;
+                    values = values.saturating_mul(n);
                 }
+                None => continuous = true,
             }
         }
     });
@@ -171,10 +171,11 @@ fn not_analytic(ctx: Ctx<'_>, vars: &[(String, &PExpr)], sides: &[&PExpr]) -> Op
     let mut found = None;
     let mut look = |e: &Expr| {
         e.walk(&mut |x| {
-            if let ExprKind::Call(n, _) = &x.kind {
-                if ["re", "im", "conj", "arg"].contains(&n.as_str()) && found.is_none() {
-                    found = Some(n.clone());
-                }
+            if let ExprKind::Call(n, _) = &x.kind
+                && ["re", "im", "conj", "arg"].contains(&n.as_str())
+                && found.is_none()
+            {
+                found = Some(n.clone());
             }
         })
     };
@@ -209,10 +210,10 @@ fn iteration(ctx: Ctx<'_>, sides: &[&PExpr]) -> Option<String> {
             if found.is_none() && self_nesting(x, name) >= ITERATION_DEPTH {
                 found = Some(name.clone());
             }
-            if let Some(f) = reg.user(name) {
-                if seen.insert(name.clone()) {
-                    stack.push((&f.def.body, Some(name.as_str())));
-                }
+            if let Some(f) = reg.user(name)
+                && seen.insert(name.clone())
+            {
+                stack.push((&f.def.body, Some(name.as_str())));
             }
         });
         if let Some(n) = found {
@@ -719,7 +720,7 @@ fn bind_one(
             return Err(fail(format!(
                 "variable '{name}' of type {:?} cannot be a symbol",
                 other.map(|v| v.type_name())
-            )))
+            )));
         }
     })
 }

@@ -189,7 +189,7 @@ fn domain_name(claim: &Claim) -> String {
 mod tests {
     use crate::claims::catalogue::load_sources;
     use crate::claims::registry::Registry;
-    use crate::claims::verdict::{run_claim, ClaimResult, Options, Verdict};
+    use crate::claims::verdict::{ClaimResult, Options, Verdict, run_claim};
 
     fn run(vars: &str, lhs: &str) -> ClaimResult {
         let toml = format!(

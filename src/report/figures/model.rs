@@ -13,17 +13,29 @@
 //! are identical across runs.  Model failures are returned as an `io::Error` whose
 //! message names the figure and the model error.
 
-use crate::model::experiments::CASES;
 use crate::model::Regime;
+use crate::model::experiments::CASES;
 use std::io;
 use std::path::Path;
 
 /// The figures [`write_all`] writes, with a one-line caption each (file, caption).
 pub const FIGURES: [(&str, &str); 4] = [
-    ("dphi-vs-phibar.svg", "Δφ against φ̄ for γ0, γ1, γ2 and γ_VM at several h (upper regime): flat for the Poisson maps γ1, γ2, γ_VM, on the predicted δ; varying for γ0 (Proposition 5)."),
-    ("dphi-vs-phibar-lower.svg", "The same in the lower regime E/M² < 1/B."),
-    ("orbits.svg", "The continuous solution (sol) against the discrete iterates and (discr sol)."),
-    ("error-vs-h.svg", "Error of the discrete solution against h at fixed time, log–log, with the fitted order."),
+    (
+        "dphi-vs-phibar.svg",
+        "Δφ against φ̄ for γ0, γ1, γ2 and γ_VM at several h (upper regime): flat for the Poisson maps γ1, γ2, γ_VM, on the predicted δ; varying for γ0 (Proposition 5).",
+    ),
+    (
+        "dphi-vs-phibar-lower.svg",
+        "The same in the lower regime E/M² < 1/B.",
+    ),
+    (
+        "orbits.svg",
+        "The continuous solution (sol) against the discrete iterates and (discr sol).",
+    ),
+    (
+        "error-vs-h.svg",
+        "Error of the discrete solution against h at fixed time, log–log, with the fitted order.",
+    ),
 ];
 
 /// Every model figure as `(file name, SVG text)`, in a fixed order.

@@ -1,8 +1,8 @@
 //! The orbit figure: the continuous solution (sol) against the iterates of (discr eq)
 //! and the discrete solution (discr sol), one panel per γ.
 
-use super::style::{header, io_err, label, legend_line, model_err, Area, COLORS, LIGHT};
-use crate::model::experiments::{orbit_comparison, DiscreteRun, OrbitComparison};
+use super::style::{Area, COLORS, LIGHT, header, io_err, label, legend_line, model_err};
+use crate::model::experiments::{DiscreteRun, OrbitComparison, orbit_comparison};
 use plotters::prelude::*;
 use std::io;
 

@@ -1,9 +1,9 @@
 //! The error-against-`h` figure: one log–log panel per regime with the error of each γ
 //! at fixed time, its fitted order in the legend and a dashed reference slope 2.
 
-use super::style::{io_err, label, legend_line, model_err, regime_text, Area, COLORS, LIGHT};
+use super::style::{Area, COLORS, LIGHT, io_err, label, legend_line, model_err, regime_text};
+use crate::model::experiments::{CASES, Case, GAMMAS, INERTIA, ORDER_N, ORDER_T, OrderFit};
 use crate::model::experiments::{case_params, fitted_orders, inertia, min_max};
-use crate::model::experiments::{Case, OrderFit, CASES, GAMMAS, INERTIA, ORDER_N, ORDER_T};
 use crate::model::{EllipticParams, Inertia};
 use plotters::prelude::*;
 use std::io;

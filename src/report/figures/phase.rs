@@ -1,10 +1,10 @@
 //! The `Δφ`-against-`φ̄` figure (one per regime): 2×2 panels, one per γ, each with one
 //! curve per step size and the predicted `δ` dashed.
 
-use super::style::{header, io_err, label, legend_line, model_err, Area, H_COLORS, LIGHT};
-use crate::model::experiments::{case_params, inertia, min_max, phase_curves};
-use crate::model::experiments::{Case, PhaseCurve, GAMMAS};
+use super::style::{Area, H_COLORS, LIGHT, header, io_err, label, legend_line, model_err};
 use crate::model::Gamma;
+use crate::model::experiments::{Case, GAMMAS, PhaseCurve};
+use crate::model::experiments::{case_params, inertia, min_max, phase_curves};
 use plotters::prelude::*;
 use std::io;
 
