@@ -61,16 +61,23 @@ impl Ring {
     /// `d/dx` of a polynomial (as a value).
     fn poly_derivative(&self, p: &Poly, jx: usize) -> AlgResult<Val> {
         let inner = &self.inner;
-        let mut acc = inner.const_val(&Rational::new());
+        let mut terms = Vec::new();
         for idx in p.used_vars() {
             let dv = self.var_derivative(idx, jx)?;
             if dv.num.is_zero() {
                 continue;
             }
-            let part = self.poly_val(&p.derivative(idx));
-            acc = inner.v_add(&acc, &inner.v_mul(&part, &dv)?, false)?;
+            terms.push((self.poly_val(&p.derivative(idx)), dv));
         }
-        Ok(acc)
+        match terms.as_slice() {
+            [] => Ok(inner.const_val(&Rational::new())),
+            [(part, dv)] => inner.v_mul(part, dv),
+            _ => {
+                let refs: Vec<(&Val, &Val, bool)> =
+                    terms.iter().map(|(a, b)| (a, b, false)).collect();
+                inner.v_sum_of_products(&refs)
+            }
+        }
     }
 
     pub(crate) fn val_derivative(&self, v: &Val, jx: usize) -> AlgResult<Val> {
@@ -80,7 +87,13 @@ impl Ring {
         let n = self.poly_val(&v.num);
         let d = self.poly_val(&v.den);
         let top = inner.v_add(&inner.v_mul(&dn, &d)?, &inner.v_mul(&n, &dd)?, true)?;
-        let out = inner.v_div(&top, &inner.v_mul(&d, &d)?)?;
+        let d2 = inner.v_mul(&d, &d)?;
+        if !v.den.is_one() {
+            // the factors of D² are those of D, doubled: FLINT need not factor D²
+            let f = inner.dens.of(&v.den)?;
+            inner.dens.record(&d2.num, std::sync::Arc::new(f.mul(&f)));
+        }
+        let out = inner.v_div(&top, &d2)?;
         Ok(out)
     }
 

@@ -238,11 +238,22 @@ impl Inner {
         }
         let flcm = flcm.ok_or_else(|| AlgebraError::Internal("an empty sum of products".into()))?;
         let lcm = flcm.expand(&prods[0].1)?;
+        // A sum (or a partial sum) more than twice the bound before cancelling is an
+        // intermediate expression too large, like any other; one just beyond the
+        // bound is taken one product at a time, since cancelling may bring it within.
+        let far = |n: &Poly| n.len() + lcm.len() > 2 * self.opts.max_terms;
         let mut num = Poly::zero(&self.ctx);
         for (p, q) in &prods {
             num = num.add(&p.mul(&exact(&lcm, q)?));
+            if far(&num) {
+                return Err(AlgebraError::TooLarge(
+                    num.len() + lcm.len(),
+                    self.opts.max_terms,
+                ));
+            }
         }
-        if num.len() + lcm.len() > self.opts.max_terms {
+        let size = num.len() + lcm.len();
+        if size > self.opts.max_terms {
             // before cancelling, the sum may exceed the bound that its lowest terms
             // meet: then the products and sums one at a time
             return self.sum_stepwise(terms);
