@@ -4,7 +4,9 @@
 //! * the normal form, evaluated at the domain points from the symbols' values, equals
 //!   the expression evaluated directly in 256-bit MPFR (with `special::sncndn` for sn);
 //! * a sum of products over one denominator (`Sym::try_sum_of_products`) equals the
-//!   products and sums taken one at a time, normal form and shadow.
+//!   products and sums taken one at a time, normal form and shadow;
+//! * a sum of products just beyond the size bound before cancelling is still found in
+//!   lowest terms, and one more than twice beyond it is too large at once.
 
 use eulertop::algebra::{Ring, RingOptions, Sym, prove_identity};
 use proptest::prelude::*;
@@ -241,4 +243,63 @@ fn a_perturbed_expression_is_not_proved_equal() {
         .rational(&rug::Rational::from((1, 1_000_000_000_000_i64)));
     let b = &(&a * &(&env.ring.integer(1) + &tiny)) + &env.ring.integer(0);
     assert!(!env.ring.prove(&a, &b).is_proved());
+}
+
+/// `u·v(x+1)/((x+1)(y+1)) + x·y` as a sum of products, with `u`, `v` squares of linear
+/// forms: the products before cancelling have `uncancelled` terms (numerator over the
+/// common denominator `(x+1)(y+1)`), the sum in lowest terms fewer.
+fn sum_beyond(env: &Env) -> eulertop::algebra::AlgResult<Sym> {
+    let (x, y, z) = (&env.vars[0], &env.vars[1], &env.vars[2]);
+    let r = &env.ring;
+    let u = (&(&(x + y) + z) + &r.integer(1)).try_powi(2)?;
+    let v = (&(&(x + y) - z) + &r.integer(2)).try_powi(2)?;
+    let a = u.try_div(&(x + &r.integer(1)))?;
+    let b = v
+        .try_mul(&(x + &r.integer(1)))?
+        .try_div(&(y + &r.integer(1)))?;
+    Sym::try_sum_of_products(&[(&a, &b, false), (x, y, false)])
+}
+
+#[test]
+fn a_sum_of_products_beyond_the_size_bound() {
+    // sizes in a ring without a tight bound
+    let wide = env();
+    let (x, y, z) = (&wide.vars[0], &wide.vars[1], &wide.vars[2]);
+    let one = wide.ring.integer(1);
+    let lcm = &(x + &one) * &(y + &one);
+    let u = (&(&(x + y) + z) + &one).try_powi(2).unwrap();
+    let v = (&(&(x + y) - z) + &wide.ring.integer(2))
+        .try_powi(2)
+        .unwrap();
+    let products = &(&(&u * &v) * &(x + &one)) + &(&(x * y) * &lcm);
+    // sizes count numerator and denominator terms (`terms` counts the numerator's)
+    let uncancelled = products.terms() + lcm.terms();
+    let lowest = sum_beyond(&wide).unwrap();
+    let den = y + &one;
+    assert!((&(&lowest * &den) - &(&(&u * &v) + &(&(x * y) * &den))).is_exact_zero());
+    let within = (lowest.terms() + den.terms()).max(uncancelled.div_ceil(2));
+    assert!(within < uncancelled, "{within} {uncancelled}");
+    // just beyond the bound before cancelling: one product at a time, within it after
+    let near = env_on(Ring::new(RingOptions {
+        points: 3,
+        max_terms: within,
+        ..Default::default()
+    }));
+    let s = sum_beyond(&near).unwrap();
+    assert!(near.ring.error().is_none());
+    assert_eq!(s.render(), lowest.render());
+    // more than twice beyond it: too large at once
+    let far = (uncancelled - 1) / 2;
+    let tight = env_on(Ring::new(RingOptions {
+        points: 3,
+        max_terms: far,
+        ..Default::default()
+    }));
+    match sum_beyond(&tight) {
+        Err(eulertop::algebra::AlgebraError::TooLarge(n, bound)) => {
+            assert_eq!(bound, far);
+            assert!(n > 2 * far, "{n} terms against the bound {far}");
+        }
+        other => panic!("expected too large, got {other:?}"),
+    }
 }
