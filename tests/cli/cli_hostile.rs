@@ -256,7 +256,9 @@ fn row03_verify_json_into_head() {
     // Section 5's report (about 200 KB of JSON) is larger than a pipe's buffer, so the
     // writes after the reader has gone fail
     let mut child = bin()
-        .args(["verify", "--format", "json", "--bits", "53", "--only", "sec5"])
+        .args([
+            "verify", "--format", "json", "--bits", "53", "--only", "sec5",
+        ])
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
