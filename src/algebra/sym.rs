@@ -40,14 +40,20 @@ impl std::fmt::Debug for Sym {
 impl Inner {
     /// Reduces a polynomial modulo the root relations (only if some root has degree ≥ 2).
     pub(crate) fn reduce(&self, p: Poly) -> Poly {
+        self.reduce_changed(p).0
+    }
+
+    /// [`Self::reduce`], and whether the relations changed the polynomial: exactly when
+    /// some root has degree ≥ 2 in it, since the result has none.
+    pub(crate) fn reduce_changed(&self, p: Poly) -> (Poly, bool) {
         let degs = p.degrees();
         let needs = (0..self.opts.max_roots).any(|idx| degs[idx] >= 2);
         if !needs {
-            return p;
+            return (p, false);
         }
         let rels = self.relations_for(&p);
         let refs: Vec<&Poly> = rels.iter().map(|r| r.as_ref()).collect();
-        p.rem_ideal(&refs)
+        (p.rem_ideal(&refs), true)
     }
 
     /// Cancels the gcd and makes the denominator's leading coefficient positive.
@@ -183,9 +189,7 @@ impl Inner {
         // cancel crosswise before multiplying
         let (an, bd, fbd) = self.cancel(&a.num, &b.den)?;
         let (bn, ad, fad) = self.cancel(&b.num, &a.den)?;
-        let prod = an.mul(&bn);
-        let reduced = self.reduce(prod.clone());
-        let changed = reduced != prod;
+        let (reduced, changed) = self.reduce_changed(an.mul(&bn));
         let den = ad.mul(&bd);
         // Crosswise cancellation leaves the product in lowest terms unless the
         // root relations changed the numerator.
