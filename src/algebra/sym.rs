@@ -228,12 +228,27 @@ impl Inner {
                 Some(s) if *neg => s.sub(&p),
                 Some(s) => s.add(&p),
             });
+            if a.num.is_zero() || b.num.is_zero() {
+                // a product that is 0 adds nothing, and its denominator is not needed
+                continue;
+            }
             let num = a.num.mul(&b.num);
             prods.push((if *neg { num.neg() } else { num }, a.den.mul(&b.den)));
         }
         let sh = sh.ok_or_else(|| AlgebraError::Internal("an empty sum of products".into()))?;
+        if prods.is_empty() {
+            let zero = Poly::zero(&self.ctx);
+            return Ok(Val {
+                num: zero,
+                den: Poly::from_i64(&self.ctx, 1),
+                sh,
+            });
+        }
         let mut flcm: Option<Factors> = None;
-        for (a, b, _) in terms {
+        for (a, b, _) in terms
+            .iter()
+            .filter(|(a, b, _)| !a.num.is_zero() && !b.num.is_zero())
+        {
             let f = self.dens.of(&a.den)?.mul(&*self.dens.of(&b.den)?);
             flcm = Some(match flcm {
                 None => f,
