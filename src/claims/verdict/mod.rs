@@ -70,25 +70,12 @@ pub fn verify(
     select: &(dyn Fn(&Claim) -> bool + Sync),
     done: &(dyn Fn(&ClaimResult) + Sync),
 ) -> Vec<ClaimResult> {
-    let chosen: Vec<(usize, &Claim)> = cat
-        .claims
-        .iter()
-        .filter(|c| select(c))
-        .enumerate()
+    let selected: Vec<&Claim> = cat.claims.iter().filter(|c| select(c)).collect();
+    // results keep the catalogue's order
+    let chosen: Vec<(usize, &Claim)> = run_order(cat, &selected)
+        .into_iter()
+        .map(|i| (i, selected[i]))
         .collect();
-    // the likely slowest first, so that no core idles at the end, and a statement
-    // stated again (whose proof is then recalled) after its first statement; results
-    // keep the catalogue's order
-    let mut seen = std::collections::BTreeSet::new();
-    let costs: Vec<u8> = chosen
-        .iter()
-        .map(|(_, c)| {
-            let again = statement_key(cat, c).is_some_and(|k| !seen.insert(k));
-            if again { 0 } else { expected_cost(cat, c) }
-        })
-        .collect();
-    let mut chosen = chosen;
-    chosen.sort_by_key(|(i, _)| (std::cmp::Reverse(costs[*i]), *i));
     // Opt-in per-claim timings on standard error (never part of the results).
     let timing = std::env::var_os("EULERTOP_TIMING").is_some();
     // One shared queue in that order: each worker takes the next claim when it is
@@ -115,6 +102,23 @@ pub fn verify(
     let mut results = results.into_inner().unwrap_or_else(|e| e.into_inner());
     results.sort_by_key(|(i, _)| *i);
     results.into_iter().map(|(_, r)| r).collect()
+}
+
+/// The order in which to run `claims` (indices into it): the likely slowest first, so
+/// that no core idles at the end, and a statement stated again (whose proof is then
+/// recalled) after its first statement; otherwise the catalogue's order.
+pub fn run_order(cat: &Catalogue, claims: &[&Claim]) -> Vec<usize> {
+    let mut seen = std::collections::BTreeSet::new();
+    let costs: Vec<u8> = claims
+        .iter()
+        .map(|c| {
+            let again = statement_key(cat, c).is_some_and(|k| !seen.insert(k));
+            if again { 0 } else { expected_cost(cat, c) }
+        })
+        .collect();
+    let mut order: Vec<usize> = (0..claims.len()).collect();
+    order.sort_by_key(|&i| (std::cmp::Reverse(costs[i]), i));
+    order
 }
 
 /// The key under which an independence claim's proof is remembered (the same
