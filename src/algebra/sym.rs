@@ -219,7 +219,8 @@ impl Inner {
     /// denominators, reduced by the relations and brought to lowest terms once.
     pub(crate) fn v_sum_of_products(&self, terms: &[(&Val, &Val, bool)]) -> AlgResult<Val> {
         let mut sh: Option<Shadow> = None;
-        let mut prods: Vec<(Poly, Poly)> = Vec::with_capacity(terms.len());
+        // each non-zero product's numerator and the factors of its denominator
+        let mut prods: Vec<(Poly, Factors)> = Vec::with_capacity(terms.len());
         for (a, b, neg) in terms {
             let p = a.sh.mul(&b.sh);
             sh = Some(match sh {
@@ -233,37 +234,28 @@ impl Inner {
                 continue;
             }
             let num = a.num.mul(&b.num);
-            prods.push((if *neg { num.neg() } else { num }, a.den.mul(&b.den)));
+            let f = self.dens.of(&a.den)?.mul(&*self.dens.of(&b.den)?);
+            prods.push((if *neg { num.neg() } else { num }, f));
         }
         let sh = sh.ok_or_else(|| AlgebraError::Internal("an empty sum of products".into()))?;
-        if prods.is_empty() {
+        let Some((first, rest)) = prods.split_first() else {
             let zero = Poly::zero(&self.ctx);
             return Ok(Val {
                 num: zero,
                 den: Poly::from_i64(&self.ctx, 1),
                 sh,
             });
-        }
-        let mut flcm: Option<Factors> = None;
-        for (a, b, _) in terms
-            .iter()
-            .filter(|(a, b, _)| !a.num.is_zero() && !b.num.is_zero())
-        {
-            let f = self.dens.of(&a.den)?.mul(&*self.dens.of(&b.den)?);
-            flcm = Some(match flcm {
-                None => f,
-                Some(l) => l.lcm(&f),
-            });
-        }
-        let flcm = flcm.ok_or_else(|| AlgebraError::Internal("an empty sum of products".into()))?;
-        let lcm = flcm.expand(&prods[0].1)?;
+        };
+        let flcm = rest.iter().fold(first.1.clone(), |l, (_, f)| l.lcm(f));
+        let lcm = flcm.expand(&first.0)?;
         // A sum (or a partial sum) more than twice the bound before cancelling is an
         // intermediate expression too large, like any other; one just beyond the
         // bound is taken one product at a time, since cancelling may bring it within.
         let far = |n: &Poly| n.len() + lcm.len() > 2 * self.opts.max_terms;
         let mut num = Poly::zero(&self.ctx);
-        for (p, q) in &prods {
-            num = num.add(&p.mul(&exact(&lcm, q)?));
+        for (p, f) in &prods {
+            // lcm / (the product's denominator), from the factors
+            num = num.add(&p.mul(&flcm.div(f)?.expand(&lcm)?));
             if far(&num) {
                 return Err(AlgebraError::TooLarge(
                     num.len() + lcm.len(),
