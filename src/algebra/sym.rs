@@ -102,8 +102,9 @@ impl Inner {
         if fg.list.is_empty() && fg.unit == 1 {
             return Ok((n, den.clone(), fd));
         }
-        let d = exact(den, &fg.expand(den)?)?;
-        Ok((n, d, Arc::new(fd.div(&fg)?)))
+        let fq = fd.div(&fg)?;
+        let d = fq.expand(den)?;
+        Ok((n, d, Arc::new(fq)))
     }
 
     pub(crate) fn v_add(&self, a: &Val, b: &Val, sub: bool) -> AlgResult<Val> {
@@ -127,12 +128,12 @@ impl Inner {
         let (g, ad, bd) = if fg.is_one() {
             (one, a.den.clone(), b.den.clone())
         } else if fg.same_as(&fa) {
-            (a.den.clone(), one, exact(&b.den, &a.den)?)
+            (a.den.clone(), one, fb.div(&fa)?.expand(&b.den)?)
         } else if fg.same_as(&fb) {
-            (b.den.clone(), exact(&a.den, &b.den)?, one)
+            (b.den.clone(), fa.div(&fb)?.expand(&a.den)?, one)
         } else {
             let g = fg.expand(&a.den)?;
-            let (ad, bd) = (exact(&a.den, &g)?, exact(&b.den, &g)?);
+            let (ad, bd) = (fa.div(&fg)?.expand(&a.den)?, fb.div(&fg)?.expand(&b.den)?);
             (g, ad, bd)
         };
         let n = combine(a.num.mul(&bd), b.num.mul(&ad));
@@ -142,8 +143,8 @@ impl Inner {
             (n, d, fd)
         } else {
             let (n, fc) = den_factors::cancel(&n, &fg)?;
-            let d = exact(&d, &fc.expand(&d)?)?;
             let fd = fd.div(&fc)?;
+            let d = if fc.is_one() { d } else { fd.expand(&d)? };
             (n, d, fd)
         };
         let (num, den) = self.lowest_terms_factored(n, d, Some(&fd))?;
@@ -395,11 +396,6 @@ impl Inner {
             None => self.const_val(&rug::Rational::from(1)),
         })
     }
-}
-
-fn exact(a: &Poly, b: &Poly) -> AlgResult<Poly> {
-    a.divides(b)?
-        .ok_or_else(|| AlgebraError::Internal("gcd does not divide".into()))
 }
 
 impl Sym {
