@@ -228,6 +228,9 @@ pub(crate) struct State {
     pub undecided: Option<super::split::SignSplit>,
     /// The change of variables of a parametrization, for derivatives.
     pub coordinates: Option<Coordinates>,
+    /// [`Inner::var_values`] as last built; emptied when a variable or root is added or
+    /// a root's values change.
+    pub values_table: Option<Arc<Vec<Vec<Complex>>>>,
 }
 
 pub(crate) struct Inner {
@@ -293,6 +296,7 @@ impl Ring {
             opaque_args: std::collections::BTreeMap::new(),
             opaque_zeta: std::collections::BTreeMap::new(),
             undecided: None,
+            values_table: None,
         };
         Ring {
             inner: Arc::new(Inner {
@@ -527,6 +531,7 @@ impl Inner {
             )));
         }
         st.vars.push(VarInfo { name, kind, values });
+        st.values_table = None;
         Ok(st.vars.len() - 1)
     }
 
@@ -557,6 +562,7 @@ impl Inner {
         }
         closure.sort_unstable();
         closure.dedup();
+        st.values_table = None;
         st.roots.push(RootInfo {
             name,
             radicand,
@@ -583,9 +589,18 @@ impl Inner {
     }
 
     /// The values of every FLINT variable at every point (`[var][point]`; unused
-    /// variables are 0).
-    pub(crate) fn var_values(&self) -> Vec<Vec<Complex>> {
-        let st = self.state();
+    /// variables are 0), built once until a variable or root is added or changed.
+    pub(crate) fn var_values(&self) -> Arc<Vec<Vec<Complex>>> {
+        let mut st = self.state();
+        if let Some(t) = &st.values_table {
+            return t.clone();
+        }
+        let table = Arc::new(self.build_var_values(&st));
+        st.values_table = Some(table.clone());
+        table
+    }
+
+    fn build_var_values(&self, st: &State) -> Vec<Vec<Complex>> {
         let prec = self.opts.precision;
         let zero = Complex::with_val(prec, 0);
         let mut vals = vec![vec![zero; self.opts.points]; self.ctx.nvars()];

@@ -446,6 +446,7 @@ impl Sym {
                     st.roots[i].values[p] = z;
                 }
             }
+            st.values_table = None;
             drop(st);
             cand.sh = cand.sh.scale_by(
                 &sigma
