@@ -181,6 +181,9 @@ impl Eq for Poly {}
 /// Hashes the length and at most 16 evenly spaced terms: equal polynomials hash
 /// alike, and hashing a polynomial of thousands of terms stays cheap (equality
 /// then compares them all).
+/// The prime modulo which [`Poly`]'s hash takes coefficients (2⁶⁴ − 59).
+const HASH_PRIME: u64 = 0xFFFF_FFFF_FFFF_FFC5;
+
 impl std::hash::Hash for Poly {
     fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
         let len = self.len();
@@ -188,9 +191,15 @@ impl std::hash::Hash for Poly {
         let step = len.div_ceil(16).max(1);
         let mut exps = vec![0u64; self.ctx.nvars];
         for i in (0..len).step_by(step) {
-            self.term_coefficient(i).hash(state);
+            // the coefficient modulo a prime and the exponents folded into one word:
+            // equal polynomials hash alike, with two words per sampled term
+            // SAFETY: i < len, so `coeffs + i` is an initialised fmpz.
+            let c = unsafe { fz::fmpz_fdiv_ui(self.raw.coeffs.add(i), HASH_PRIME) };
             self.term_exponents(i, &mut exps);
-            exps.hash(state);
+            let folded = exps.iter().fold(0u64, |h, &e| {
+                h.wrapping_mul(0x100_0000_01b3).wrapping_add(e)
+            });
+            (c, folded).hash(state);
         }
     }
 }
@@ -495,11 +504,21 @@ impl Poly {
     pub fn for_each_term(&self, mut f: impl FnMut(&Integer, &[u64])) {
         let n = self.ctx.nvars;
         let mut exps = vec![0u64; n];
+        // one Integer for every coefficient in turn (an allocation only when one grows)
+        let mut c = Integer::new();
         for i in 0..self.len() {
-            let c = self.term_coefficient(i);
+            self.term_coefficient_into(i, &mut c);
             self.term_exponents(i, &mut exps);
             f(&c, &exps);
         }
+    }
+
+    /// The coefficient of term `i` into `c`.
+    fn term_coefficient_into(&self, i: usize, c: &mut Integer) {
+        assert!(i < self.len());
+        // SAFETY: i < len, so `coeffs + i` is an initialised fmpz of the polynomial;
+        // `c` is a valid mpz.
+        unsafe { fz::fmpz_get_mpz(c.as_raw_mut() as *mut __mpz_struct, self.raw.coeffs.add(i)) };
     }
 
     /// Builds a polynomial from terms (repeated monomials are added up).  Each exponent
