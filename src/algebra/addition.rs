@@ -110,8 +110,8 @@ impl Triples<'_> {
         let kp = r.with_origin(Origin::Definition("k' = sqrt(1 - k^2) > 0".into()), || {
             r.integer(1).try_sub(&k2)?.sqrt()
         })?;
-        r.state().tables[self.t].kp = Some(kp.val.clone());
-        Ok(kp.val)
+        r.state().tables[self.t].kp = Some((*kp.val).clone());
+        Ok(kp.into_val())
     }
 
     /// DLMF 22.4.3: `z ↦ z + K`.
@@ -163,12 +163,20 @@ impl Triples<'_> {
                     let k = Sym::from_val(r, r.state().tables[self.t].k.clone(), None);
                     let rk = k.sqrt()?;
                     let r1k = one.try_add(&k)?.sqrt()?;
-                    Ok([r.i()?.try_div(&rk)?.val, r1k.try_div(&rk)?.val, r1k.val])
+                    Ok([
+                        r.i()?.try_div(&rk)?.into_val(),
+                        r1k.try_div(&rk)?.into_val(),
+                        r1k.into_val(),
+                    ])
                 } else {
                     let kp = Sym::from_val(r, self.kp()?, None);
                     let rkp = kp.sqrt()?;
                     let r1 = one.try_add(&kp)?.sqrt()?;
-                    Ok([one.try_div(&r1)?.val, rkp.try_div(&r1)?.val, rkp.val])
+                    Ok([
+                        one.try_div(&r1)?.into_val(),
+                        rkp.try_div(&r1)?.into_val(),
+                        rkp.into_val(),
+                    ])
                 }
             },
         )?;

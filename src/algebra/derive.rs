@@ -202,7 +202,7 @@ impl Ring {
     fn opaque_zeta(&self, j: usize, p: &super::ring::Prescription) -> AlgResult<Val> {
         let known = self.state().opaque_zeta.get(&j).copied();
         if let Some(z) = known {
-            return Ok(self.var_sym(z).val);
+            return Ok(self.var_sym(z).into_val());
         }
         let v = self.var_sym(j).val;
         let prec = self.precision();
@@ -220,7 +220,7 @@ impl Ring {
             .inner
             .add_var(name, VarKind::Opaque { constant: false }, values)?;
         self.state().opaque_zeta.insert(j, z);
-        Ok(self.var_sym(z).val)
+        Ok(self.var_sym(z).into_val())
     }
 
     /// Is field variable `j` one of the parameters of the declared coordinates?
@@ -290,7 +290,7 @@ impl Ring {
     fn zeta_symbol(&self, table: usize, base: usize) -> AlgResult<Val> {
         let existing = self.state().tables[table].bases[base].z_var;
         if let Some(j) = existing {
-            return Ok(self.var_sym(j).val);
+            return Ok(self.var_sym(j).into_val());
         }
         let (k, arg) = {
             let st = self.state();
@@ -316,7 +316,7 @@ impl Ring {
             values,
         )?;
         self.state().tables[table].bases[base].z_var = Some(j);
-        Ok(self.var_sym(j).val)
+        Ok(self.var_sym(j).into_val())
     }
 }
 

@@ -84,7 +84,7 @@ impl Ring {
             return Ok(i);
         }
         let k2 = k.try_mul(k)?;
-        let mut t = Table::new(k.val.clone(), k2.val);
+        let mut t = Table::new((*k.val).clone(), k2.into_val());
         let mkey = (terms(&k.val.num), terms(&k.val.den));
         for h in &self.inner.opts.base_hints {
             if h.modulus == mkey {
@@ -377,8 +377,8 @@ impl Ring {
     pub(crate) fn set_equivalent(&self, v: &Sym, u: &Sym, sign: Option<&Sym>) {
         if let Some(var) = v.as_field_var() {
             for p in self.state().prescribed.iter_mut().filter(|p| p.var == var) {
-                p.equiv = Some(u.val.clone());
-                p.equiv_sign = sign.map(|s| s.val.clone());
+                p.equiv = Some((*u.val).clone());
+                p.equiv_sign = sign.map(|s| (*s.val).clone());
             }
         }
     }
@@ -550,10 +550,10 @@ impl Ring {
         st.tables[t].bases.push(Base {
             vec,
             arg,
-            s: s.val.clone(),
+            s: (*s.val).clone(),
             s_name: format!("sn_{nb}"),
-            c: c.val,
-            d: d.val,
+            c: c.into_val(),
+            d: d.into_val(),
             z_var: None,
         });
         Ok(())
@@ -577,10 +577,10 @@ impl Ring {
         let what = v.render_short(40);
         self.state().prescribed.push(Prescription {
             var,
-            k: k.val.clone(),
-            s: s.val.clone(),
-            c: c.val.clone(),
-            d: d.val.clone(),
+            k: (*k.val).clone(),
+            s: (*s.val).clone(),
+            c: (*c.val).clone(),
+            d: (*d.val).clone(),
             what,
             why: why.to_string(),
             equiv: None,

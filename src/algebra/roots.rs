@@ -575,7 +575,7 @@ impl Ring {
                 i
             }
         };
-        Ok(self.root_sym(i).val)
+        Ok(self.root_sym(i).into_val())
     }
 
     /// `√p` in the tower if `p` is a square there (no new roots), up to sign.

@@ -27,7 +27,7 @@ use std::sync::Arc;
 #[derive(Clone)]
 pub struct Sym {
     pub(crate) ring: Ring,
-    pub(crate) val: Val,
+    pub(crate) val: Arc<Val>,
     pub(crate) node: Option<Arc<Node>>,
 }
 
@@ -407,14 +407,19 @@ impl Sym {
         };
         Sym {
             ring: ring.clone(),
-            val,
+            val: Arc::new(val),
             node,
         }
     }
 
+    /// The normal form and shadow, taken out of the symbol (copied only if shared).
+    pub(crate) fn into_val(self) -> Val {
+        Arc::unwrap_or_clone(self.val)
+    }
+
     /// The value as the ring stores it (without the ring handle).
     pub(crate) fn stored(&self) -> Stored {
-        (self.val.clone(), self.node.clone())
+        ((*self.val).clone(), self.node.clone())
     }
 
     /// A stored value back on its ring.
@@ -477,7 +482,7 @@ impl Sym {
         for (x, y, neg) in terms {
             terms[0].0.same_ring(x)?;
             terms[0].0.same_ring(y)?;
-            vals.push((&x.val, &y.val, *neg));
+            vals.push((&*x.val, &*y.val, *neg));
             if let (Some(a), Some(b)) = (&x.node, &y.node) {
                 args.push(a.clone());
                 args.push(b.clone());

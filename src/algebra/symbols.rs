@@ -148,7 +148,7 @@ impl Ring {
             return Err(AlgebraError::RingMismatch);
         }
         let values = definition.val.sh.v.clone();
-        let kind = VarKind::Named(Box::new(definition.val.clone()));
+        let kind = VarKind::Named(Box::new((*definition.val).clone()));
         let j = self.inner.add_var(name.to_string(), kind, values)?;
         Ok(self.var_sym(j))
     }
