@@ -646,6 +646,7 @@ impl Inner {
         let mut out = vec![Complex::with_val(prec, 0); npts];
         let mut size = vec![Float::with_val(64, 0); npts];
         let mut roundings = 1u64;
+        let powers = Powers::new(p, vals, prec);
         let mut t = Complex::new(prec);
         let mut modulus = Float::new(64);
         p.for_each_term(|c, e| {
@@ -654,8 +655,8 @@ impl Inner {
                 t.mut_real().assign(c);
                 t.mut_imag().assign(0);
                 for (idx, &k) in e.iter().enumerate() {
-                    for _ in 0..k {
-                        t *= &vals[idx][pt];
+                    if k > 0 {
+                        t *= powers.get(idx, k, pt);
                     }
                 }
                 modulus.assign(t.abs_ref());
