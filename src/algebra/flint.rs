@@ -178,12 +178,12 @@ impl PartialEq for Poly {
 }
 impl Eq for Poly {}
 
-/// Hashes the length and at most 16 evenly spaced terms: equal polynomials hash
-/// alike, and hashing a polynomial of thousands of terms stays cheap (equality
-/// then compares them all).
 /// The prime modulo which [`Poly`]'s hash takes coefficients (2⁶⁴ − 59).
 const HASH_PRIME: u64 = 0xFFFF_FFFF_FFFF_FFC5;
 
+/// Hashes the length and at most 16 evenly spaced terms: equal polynomials hash
+/// alike, and hashing a polynomial of thousands of terms stays cheap (equality
+/// then compares them all).
 impl std::hash::Hash for Poly {
     fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
         let len = self.len();

@@ -349,6 +349,19 @@ impl Ring {
         n.div(&d)
     }
 
+    /// Negates the values of root `i` at the points where `sigma` is −1 (the table of
+    /// the variables' values is built afresh on its next use).
+    fn flip_root_values(&self, i: usize, sigma: &[i32]) {
+        let mut st = self.state();
+        for (p, s) in sigma.iter().enumerate() {
+            if *s < 0 {
+                let z = -st.roots[i].values[p].clone();
+                st.roots[i].values[p] = z;
+            }
+        }
+        st.values_table = None;
+    }
+
     /// The shadow of `v` evaluated afresh from its normal form at the points' values,
     /// with the error scale of its terms ([`Inner::eval_poly_scaled`]).
     pub(crate) fn reevaluated(&self, v: &Val) -> Shadow {
@@ -439,15 +452,7 @@ impl Sym {
         if let (Some(i), Some(_)) = (fresh, &prescribed) {
             // fix the new root's values so that the product equals the prescribed values
             let sigma = ring.pointwise_signs(&target, &cand.sh, &what)?;
-            let mut st = ring.state();
-            for (p, s) in sigma.iter().enumerate() {
-                if *s < 0 {
-                    let z = -st.roots[i].values[p].clone();
-                    st.roots[i].values[p] = z;
-                }
-            }
-            st.values_table = None;
-            drop(st);
+            ring.flip_root_values(i, &sigma);
             cand.sh = cand.sh.scale_by(
                 &sigma
                     .iter()

@@ -110,6 +110,12 @@ pub fn readme(input: &ReportInput) -> String {
             let _ = writeln!(s, "![{caption}](figures/{file})\n\n*{caption}*\n");
         }
     }
+    every_claim(&mut s, input);
+    s
+}
+
+/// The README's table of every claim, linked to its section page.
+fn every_claim(s: &mut String, input: &ReportInput) {
     let _ = writeln!(s, "\n## Every claim\n");
     let _ = writeln!(s, "| claim | location | form | verdict | best residual |");
     let _ = writeln!(s, "|---|---|---|---|---|");
@@ -128,7 +134,6 @@ pub fn readme(input: &ReportInput) -> String {
             best_residual(r)
         );
     }
-    s
 }
 
 fn printed_block(s: &mut String, input: &ReportInput, printed: &str) {
