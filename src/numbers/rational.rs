@@ -60,7 +60,31 @@ fn exact_isqrt(n: &BigInt) -> Option<BigInt> {
     if &(&r * &r) == n { Some(r) } else { None }
 }
 
+/// `Σ nᵢ/dᵢ` over the product of the denominators, reduced once (a sum and product
+/// of ratios one at a time would reduce each, with a gcd per step).
+fn sum_of_ratios(terms: &[(BigInt, BigInt)]) -> BigRational {
+    let mut num = BigInt::from(0);
+    let mut den = BigInt::from(1);
+    for (n, d) in terms {
+        num = num * d + n * &den;
+        den *= d;
+    }
+    BigRational::new(num, den)
+}
+
 impl Scalar for BigRational {
+    /// Over one denominator, reduced once.
+    fn dot3(a: [&Self; 3], b: [&Self; 3]) -> Self {
+        let terms = [0, 1, 2].map(|i| (a[i].numer() * b[i].numer(), a[i].denom() * b[i].denom()));
+        sum_of_ratios(&terms)
+    }
+    /// Over one denominator, reduced once.
+    fn det2(a: &Self, b: &Self, c: &Self, d: &Self) -> Self {
+        sum_of_ratios(&[
+            (a.numer() * b.numer(), a.denom() * b.denom()),
+            (-(c.numer() * d.numer()), c.denom() * d.denom()),
+        ])
+    }
     fn zero(&self) -> Self {
         <BigRational as Zero>::zero()
     }
@@ -129,6 +153,21 @@ impl Scalar for BigRational {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn dot3_and_det2_are_the_plain_formulas() {
+        let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+        let (a, b, c) = (q(3, 4), q(-5, 6), q(7, 10));
+        let (x, y, z) = (q(2, 9), q(4, 15), q(-1, 14));
+        let plain = &a * &x + &b * &y + &c * &z;
+        assert_eq!(BigRational::dot3([&a, &b, &c], [&x, &y, &z]), plain);
+        assert_eq!(BigRational::det2(&a, &x, &b, &y), &a * &x - &b * &y);
+        // a sum that cancels to 0 is 0/1
+        let zero = BigRational::det2(&a, &x, &x, &a);
+        assert_eq!(zero, q(0, 1));
+        assert_eq!(*zero.denom(), BigInt::from(1));
+    }
+
     #[test]
     fn parse_exact() {
         assert_eq!(
