@@ -56,13 +56,6 @@ impl Factors {
         self.unit == 1 && self.list.is_empty()
     }
 
-    /// Whether `self` and `other` are the same product (the same unit and factors).
-    pub(crate) fn same_as(&self, other: &Factors) -> bool {
-        self.unit == other.unit
-            && self.list.len() == other.list.len()
-            && self.list.iter().all(|(f, e)| other.exponent_of(f) == *e)
-    }
-
     /// The factors of `self · other`.
     pub(crate) fn mul(&self, other: &Factors) -> Factors {
         Factors {

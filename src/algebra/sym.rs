@@ -123,23 +123,17 @@ impl Inner {
         // factors of g, because N₁/D₁ and N₂/D₂ are in lowest terms.
         let (fa, fb) = (self.dens.of(&a.den)?, self.dens.of(&b.den)?);
         let fg = fa.gcd(&fb);
-        let one = Poly::from_i64(&self.ctx, 1);
-        // g, a.den/g and b.den/g, without a division where g is 1 or one of them
-        let (g, ad, bd) = if fg.is_one() {
-            (one, a.den.clone(), b.den.clone())
-        } else if fg.same_as(&fa) {
-            (a.den.clone(), one, fb.div(&fa)?.expand(&b.den)?)
-        } else if fg.same_as(&fb) {
-            (b.den.clone(), fa.div(&fb)?.expand(&a.den)?, one)
+        // a.den/g and b.den/g, expanded from the factors (as they are where g is 1)
+        let (qa, qb) = (fa.div(&fg)?, fb.div(&fg)?);
+        let (ad, bd) = if fg.is_one() {
+            (a.den.clone(), b.den.clone())
         } else {
-            let g = fg.expand(&a.den)?;
-            let (ad, bd) = (fa.div(&fg)?.expand(&a.den)?, fb.div(&fg)?.expand(&b.den)?);
-            (g, ad, bd)
+            (qa.expand(&a.den)?, qb.expand(&b.den)?)
         };
         let n = combine(a.num.mul(&bd), b.num.mul(&ad));
         let d = a.den.mul(&bd);
-        let fd = fa.mul(&fb.div(&fg)?);
-        let (n, d, fd) = if g.is_one() || n.is_zero() {
+        let fd = fa.mul(&qb);
+        let (n, d, fd) = if fg.is_one() || n.is_zero() {
             (n, d, fd)
         } else {
             let (n, fc) = den_factors::cancel(&n, &fg)?;
