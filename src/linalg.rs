@@ -157,12 +157,73 @@ impl<S: Scalar> Mat3<S> {
         if d.is_zero() {
             return None;
         }
+        // adj(A) = cof(A)ᵀ
+        let cof = self.cofactors();
+        Some(Self::from_fn(|j, i| cof.0[i][j].clone() / d.clone()))
+    }
+    /// The matrix of cofactors, `cof(A)ᵢⱼ = (−1)^(i+j)·Mᵢⱼ`: row `i` is the cross product
+    /// of rows `i+1` and `i+2` (indices mod 3), each entry one [`Scalar::det2`].
+    ///
+    /// ```
+    /// use eulertop::linalg::Mat3;
+    /// let a = Mat3([[2.0, 0.0, 1.0], [1.0, 3.0, 0.0], [0.0, 1.0, 4.0]]);
+    /// // adj(A) = cof(A)ᵀ, and A·adj(A) = det(A)·I
+    /// let p = a.clone() * a.cofactors().transpose();
+    /// assert_eq!(p, Mat3::identity(&1.0).scale(&a.det()));
+    /// ```
+    pub fn cofactors(&self) -> Self {
         let m = &self.0;
-        let c = |i: usize, j: usize| m[i % 3][j % 3].clone();
-        // adj(A)_{ji} = cofactor_{ij}
-        Some(Self::from_fn(|j, i| {
-            (c(i + 1, j + 1) * c(i + 2, j + 2) - c(i + 1, j + 2) * c(i + 2, j + 1)) / d.clone()
-        }))
+        let c = |i: usize, j: usize| &m[i % 3][j % 3];
+        Self::from_fn(|i, j| {
+            S::det2(
+                c(i + 1, j + 1),
+                c(i + 2, j + 2),
+                c(i + 1, j + 2),
+                c(i + 2, j + 1),
+            )
+        })
+    }
+    /// `self·P·selfᵀ` for an exactly antisymmetric `P`, by the identity
+    /// `A·[p]ₓ·Aᵀ = [cof(A)·p]ₓ`, where `[p]ₓ` is the matrix of `v ↦ p × v`
+    /// (`p = (P₃₂, P₁₃, P₂₁)`).  Row `k` of `cof(A)` is `aᵢ × aⱼ` for the rows `aᵢ`, `aⱼ`
+    /// of `A` with `(i, j, k)` cyclic, so `(cof(A)·p)ₖ = aᵢ·(aⱼ × p)`: 9 [`Scalar::det2`]
+    /// and 3 [`Scalar::dot3`] instead of two matrix products, and the diagonal is
+    /// exactly 0.  `None` when `P` is not antisymmetric ([`Scalar::is_zero`] of `Pᵢᵢ` and
+    /// of `Pᵢⱼ + Pⱼᵢ`).
+    ///
+    /// ```
+    /// use eulertop::linalg::Mat3;
+    /// let a = Mat3([[2.0, 0.0, 1.0], [1.0, 3.0, 0.0], [0.0, 1.0, 4.0]]);
+    /// let p = Mat3([[0.0, -3.0, 2.0], [3.0, 0.0, -1.0], [-2.0, 1.0, 0.0]]);
+    /// let plain = a.clone() * p.clone() * a.transpose();
+    /// assert_eq!(a.congruence_antisymmetric(&p), Some(plain));
+    /// assert_eq!(a.congruence_antisymmetric(&a), None);
+    /// ```
+    pub fn congruence_antisymmetric(&self, p: &Self) -> Option<Self> {
+        let e = &p.0;
+        let antisymmetric = (0..3).all(|i| {
+            e[i][i].is_zero() && (i + 1..3).all(|j| (e[i][j].clone() + e[j][i].clone()).is_zero())
+        });
+        if !antisymmetric {
+            return None;
+        }
+        let p = [&e[2][1], &e[0][2], &e[1][0]];
+        let a = &self.0;
+        // q_k = (a_i × a_j)·p = a_i·(a_j × p), (i, j, k) cyclic
+        let q: [S; 3] = std::array::from_fn(|k| {
+            let (ai, aj) = (&a[(k + 1) % 3], &a[(k + 2) % 3]);
+            let w: [S; 3] = std::array::from_fn(|c| {
+                let (c1, c2) = ((c + 1) % 3, (c + 2) % 3);
+                S::det2(&aj[c1], p[c2], &aj[c2], p[c1])
+            });
+            S::dot3([&ai[0], &ai[1], &ai[2]], [&w[0], &w[1], &w[2]])
+        });
+        let z = q[0].zero();
+        Some(Mat3([
+            [z.clone(), -q[2].clone(), q[1].clone()],
+            [q[2].clone(), z.clone(), -q[0].clone()],
+            [-q[1].clone(), q[0].clone(), z],
+        ]))
     }
     /// Commutator `[self, o] = self·o − o·self`.
     pub fn commutator(&self, o: &Self) -> Self {
@@ -327,6 +388,36 @@ mod tests {
         let e1 = Vec3::new(1.0, 0.0, 0.0);
         let e2 = Vec3::new(0.0, 1.0, 0.0);
         assert_eq!(e1.cross(&e2), Vec3::new(0.0, 0.0, 1.0));
+    }
+    /// The congruence of an antisymmetric matrix is the two products, exactly (over
+    /// the rationals), and a matrix that is not antisymmetric is refused.
+    #[test]
+    fn congruence_of_an_antisymmetric_matrix_is_the_two_products() {
+        use num_bigint::BigInt;
+        use num_rational::BigRational;
+        use proptest::prelude::*;
+        let q = |n: i64, d: i64| BigRational::new(BigInt::from(n), BigInt::from(d));
+        let entry = (-50i64..50, 1i64..20);
+        let mat = proptest::array::uniform3(proptest::array::uniform3(entry.clone()));
+        let vec = proptest::array::uniform3(entry);
+        proptest!(ProptestConfig::with_cases(200), |(a in mat, p in vec, off in 1i64..5)| {
+            let a = Mat3(a.map(|r| r.map(|(n, d)| q(n, d))));
+            let [p1, p2, p3] = p.map(|(n, d)| q(n, d));
+            let z = q(0, 1);
+            let hat = Mat3([
+                [z.clone(), -p3.clone(), p2.clone()],
+                [p3, z.clone(), -p1.clone()],
+                [-p2, p1, z],
+            ]);
+            let plain = a.clone() * hat.clone() * a.transpose();
+            prop_assert_eq!(a.congruence_antisymmetric(&hat), Some(plain));
+            let mut skewed = hat.clone();
+            skewed.0[0][1] = skewed.0[0][1].clone() + q(off, 7);
+            prop_assert_eq!(a.congruence_antisymmetric(&skewed), None);
+            let mut diagonal = hat;
+            diagonal.0[2][2] = q(off, 3);
+            prop_assert_eq!(a.congruence_antisymmetric(&diagonal), None);
+        });
     }
     #[test]
     fn pauli_algebra() {

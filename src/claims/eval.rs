@@ -420,9 +420,51 @@ impl<'r, T: Backend> Evaluator<'r, T> {
             }
             return wrap(self.eval(b)?.as_bool().map(Value::Bool));
         }
+        if op == BinOp::Mul
+            && let Some(v) = self.congruence(a, b)?
+        {
+            return Ok(Value::Mat3(v));
+        }
         let x = self.eval(a)?;
         let y = self.eval(b)?;
         wrap(binary(op, &x, &y))
+    }
+
+    /// `X * P * transpose(X)` or `transpose(X) * P * X` (`a * b`), with `X` a name and
+    /// `P` an exactly antisymmetric matrix, evaluated as one congruence
+    /// ([`Mat3::congruence_antisymmetric`]): the same matrix as the two products, with
+    /// fewer operations, the cancellation of its symmetric part left out.  `None` when
+    /// the product has another form (it is then evaluated as written).
+    fn congruence(&self, a: &Expr, b: &Expr) -> Result<Option<Mat3<T>>, EvalError> {
+        let ExprKind::Binary(BinOp::Mul, left, p) = &a.kind else {
+            return Ok(None);
+        };
+        let transposed = |e: &Expr| match &e.kind {
+            ExprKind::Call(f, args) if f == "transpose" && args.len() == 1 => match &args[0].kind {
+                ExprKind::Name(n) => Some(n.clone()),
+                _ => None,
+            },
+            _ => None,
+        };
+        let name = |e: &Expr| match &e.kind {
+            ExprKind::Name(n) => Some(n.clone()),
+            _ => None,
+        };
+        // `transpose` must be the built-in, not a function of the claim
+        if self.local_fns.iter().any(|f| f.def.name == "transpose") {
+            return Ok(None);
+        }
+        let (outer, first_transposed) = match (name(left), transposed(b), transposed(left), name(b))
+        {
+            (Some(x), Some(y), _, _) if x == y => (left.as_ref(), false),
+            (_, _, Some(x), Some(y)) if x == y => (b, true),
+            _ => return Ok(None),
+        };
+        let (Value::Mat3(x), Value::Mat3(m)) = (self.eval(outer)?, self.eval(p)?) else {
+            return Ok(None);
+        };
+        let x = if first_transposed { x.transpose() } else { x };
+        Ok(x.congruence_antisymmetric(&m))
     }
 
     #[inline(never)]

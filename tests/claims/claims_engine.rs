@@ -162,6 +162,44 @@ proptest! {
     }
 }
 
+/// `X * P * transpose(X)` and `transpose(X) * P * X` are evaluated as a congruence when
+/// `P` is antisymmetric: exactly the products in another association, and the plain
+/// products when `P` is not antisymmetric or `transpose` is a function of the claim.
+#[test]
+fn a_congruence_is_the_product_as_written() {
+    use eulertop::linalg::Mat3;
+    let reg = Registry::new();
+    let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+    let m = |e: [[i64; 3]; 3], d: i64| Mat3(e.map(|r| r.map(|n| q(n, d))));
+    let mut ev = Evaluator::new(&reg, q(0, 1));
+    ev.bind("X", Value::Mat3(m([[2, -1, 5], [7, 3, -4], [1, 6, 9]], 5)));
+    ev.bind(
+        "P",
+        Value::Mat3(m([[0, -3, 2], [3, 0, -7], [-2, 7, 0]], 11)),
+    );
+    ev.bind(
+        "S",
+        Value::Mat3(m([[1, -3, 2], [3, 0, -7], [-2, 7, 0]], 11)),
+    );
+    let ok = |s: &str| ev.eval(&parse_expr(s).unwrap()).unwrap();
+    for mid in ["P", "S"] {
+        assert_eq!(
+            ok(&format!("X * {mid} * transpose(X)")),
+            ok(&format!("X * ({mid} * transpose(X))"))
+        );
+        assert_eq!(
+            ok(&format!("transpose(X) * {mid} * X")),
+            ok(&format!("transpose(X) * ({mid} * X)"))
+        );
+    }
+    // a `transpose` of the claim's own is the one applied
+    for b in parse_bindings("transpose(Y) = 2 * Y").unwrap() {
+        ev.bind_let(&b).unwrap();
+    }
+    let ok = |s: &str| ev.eval(&parse_expr(s).unwrap()).unwrap();
+    assert_eq!(ok("X * P * transpose(X)"), ok("X * P * (2 * X)"));
+}
+
 #[test]
 fn evaluator_types_and_errors() {
     let reg = Registry::new();
