@@ -175,6 +175,13 @@ impl Ring {
             let rel = if *s > 0 { ">" } else { "<" };
             let _ = writeln!(out, "# part of the domain (hypothesis): {} {rel} 0", h.what);
         }
+        for f in &self.state().folded {
+            let _ = writeln!(
+                out,
+                "# sign symbol (definition): {} = sign({}), so {} > 0",
+                f.name, f.value, f.positive
+            );
+        }
         for a in self.assumptions() {
             let _ = writeln!(out, "# assumption ({:?}): {}", a.origin, a.statement);
         }

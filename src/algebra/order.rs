@@ -33,7 +33,10 @@ impl Sym {
         if ring.options().strict_signs {
             return self.proved_sign().ok_or_else(|| self.unproved_sign());
         }
-        if let Some(s) = self.proved_sign().or_else(|| self.hypothesis_sign()) {
+        if let Some(s) = (self.proved_sign())
+            .or_else(|| self.hypothesis_sign())
+            .or_else(|| self.defined_sign())
+        {
             return Ok(s);
         }
         let prec = ring.precision();
@@ -83,21 +86,15 @@ impl Sym {
     /// ```
     pub fn sign_value(&self) -> AlgResult<Sym> {
         let ring = &self.ring;
-        let pattern = |v: &Sym| -> Option<Vec<i32>> {
-            let prec = ring.precision();
-            let at = |sh: &super::shadow::Shadow| {
-                (0..ring.points())
-                    .map(|p| sh.real_sign(p, prec))
-                    .collect::<Option<Vec<i32>>>()
-            };
-            at(&v.val.sh).or_else(|| at(&ring.reevaluated(&v.val)))
-        };
+        let pattern = |v: &Sym| v.point_signs();
+        if let Some(sigma) = self.folded_sign()? {
+            return Ok(sigma);
+        }
+        let varying = !self.is_exact_zero() && self.as_rational().is_none();
+        let own = pattern(self).filter(|own| varying && own.windows(2).any(|w| w[0] != w[1]));
         // products of sign symbols, fewest factors first
         let products = ring.sign_products()?;
-        let varying = !self.is_exact_zero() && self.as_rational().is_none();
-        if let Some(own) = pattern(self).filter(|_| varying && !products.is_empty())
-            && own.windows(2).any(|w| w[0] != w[1])
-        {
+        if let Some(own) = own.filter(|_| !products.is_empty()) {
             for prod in products {
                 let Some(pp) = pattern(&prod) else { continue };
                 let ratio: Vec<i32> = own.iter().zip(&pp).map(|(a, b)| a * b).collect();
@@ -108,6 +105,20 @@ impl Sym {
             }
         }
         Ok(ring.integer(i64::from(self.sign()?)))
+    }
+
+    /// The sign of the value at each domain point, from its shadow (evaluated afresh
+    /// from its normal form where the shadow's error bound cannot tell); `None` where a
+    /// point cannot tell.
+    pub(crate) fn point_signs(&self) -> Option<Vec<i32>> {
+        let ring = &self.ring;
+        let prec = ring.precision();
+        let at = |sh: &super::shadow::Shadow| {
+            (0..ring.points())
+                .map(|p| sh.real_sign(p, prec))
+                .collect::<Option<Vec<i32>>>()
+        };
+        at(&self.val.sh).or_else(|| at(&ring.reevaluated(&self.val)))
     }
 
     /// Decides that a value whose normal form is not 0 is nonzero on the domain: it must

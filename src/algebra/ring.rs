@@ -49,6 +49,10 @@ pub struct RingOptions {
     /// The signs that define the part of the domain the proof is on (module
     /// [`super::split`]): a value equal to one of them, or to its negative, has that sign.
     pub hypotheses: Vec<(super::split::SignSplit, i32)>,
+    /// Values of the claim's indeterminates whose sign differs between domain points and
+    /// that the proof carries as sign symbols instead of splitting the domain by them
+    /// (see [`Sym::folded_sign`](super::Sym)).
+    pub sign_folds: Vec<super::split::SignSplit>,
 }
 
 /// The largest numerator plus denominator, in terms, that the prover works with at
@@ -72,6 +76,7 @@ impl Default for RingOptions {
             positivity: None,
             strict_signs: false,
             hypotheses: Vec::new(),
+            sign_folds: Vec::new(),
         }
     }
 }
@@ -231,6 +236,23 @@ pub(crate) struct State {
     /// [`Inner::var_values`] as last built; emptied when a variable or root is added or
     /// a root's values change.
     pub values_table: Option<Arc<Vec<Vec<Complex>>>>,
+    /// The sign symbols made for [`RingOptions::sign_folds`]: the folded value (rendered),
+    /// the symbol's name and root index, and `σ·x` rendered (positive by definition).
+    pub folded: Vec<Folded>,
+}
+
+/// A sign symbol `σ = sign(x)` made for a folded value `x` (see
+/// [`RingOptions::sign_folds`]).
+#[derive(Clone, Debug)]
+pub(crate) struct Folded {
+    /// `x`, rendered.
+    pub value: String,
+    /// The symbol's name (`sgnx`).
+    pub name: String,
+    /// The symbol's root index.
+    pub root: usize,
+    /// `σ·x`, rendered: positive at every point, by the definition of `σ`.
+    pub positive: String,
 }
 
 pub(crate) struct Inner {
@@ -297,6 +319,7 @@ impl Ring {
             opaque_zeta: std::collections::BTreeMap::new(),
             undecided: None,
             values_table: None,
+            folded: Vec::new(),
         };
         Ring {
             inner: Arc::new(Inner {

@@ -13,11 +13,12 @@
 //! assert_eq!(split.sign_at(&|n: &str| (n == "x").then_some(-0.5)), Some(-1));
 //! ```
 
+use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
-use super::ring::{Ring, VarKind};
+use super::ring::{Folded, Ring, VarKind};
 use super::sym::Sym;
-use rug::Float;
 use rug::ops::Pow;
+use rug::{Complex, Float};
 
 /// A rational function of the claim's indeterminates whose sign is not constant on the
 /// domain.
@@ -49,6 +50,33 @@ impl SignSplit {
         }
         let s = |o: std::cmp::Ordering| o as i32;
         Some(s(sn) * s(sd))
+    }
+
+    /// Whether the value is one of the claim's indeterminates, such as `M3` (a single
+    /// variable over a constant), whose sign a proof can carry as a sign symbol instead
+    /// of splitting the domain by it ([`crate::algebra::RingOptions::sign_folds`]).
+    pub fn is_indeterminate(&self) -> bool {
+        let mut linear = 0;
+        let mut terms = 0;
+        self.num.for_each_term(|_, e| {
+            terms += 1;
+            let ones: Vec<usize> = (0..e.len()).filter(|&i| e[i] != 0).collect();
+            if let [i] = ones[..]
+                && e[i] == 1
+                && self.names.get(i).is_some_and(|n| !n.is_empty())
+            {
+                linear += 1;
+            }
+        });
+        let mut constant = true;
+        self.den
+            .for_each_term(|_, e| constant &= e.iter().all(|&k| k == 0));
+        terms == 1 && linear == 1 && constant
+    }
+
+    /// Whether `other` is the same value (as the prover renders it).
+    pub fn same(&self, other: &SignSplit) -> bool {
+        self.text == other.text
     }
 
     /// The value of a polynomial and a bound on its rounding error.
@@ -122,6 +150,86 @@ impl Ring {
 }
 
 impl Sym {
+    /// `±σ` for a value `±x` whose sign the ring folds ([`RingOptions::sign_folds`]):
+    /// `σ = sign(x)` is a sign symbol (`σ² = 1`) with the signs of `x` at the domain
+    /// points as its values, made at the first call, and `σ·x > 0` holds by its
+    /// definition.  Arithmetic modulo `σ² = 1` holds for both signs, so this holds
+    /// also where the points of a part happen to share one sign.  `None` for a value
+    /// that is not folded.
+    ///
+    /// [`RingOptions::sign_folds`]: super::RingOptions::sign_folds
+    pub(crate) fn folded_sign(&self) -> AlgResult<Option<Sym>> {
+        let folds = &self.ring.options().sign_folds;
+        if folds.is_empty() {
+            return Ok(None);
+        }
+        let (text, neg) = (self.render(), self.negate().render());
+        let Some((fold, s)) = folds.iter().find_map(|f| {
+            (f.text == text)
+                .then_some((f, 1))
+                .or_else(|| (f.text == neg).then_some((f, -1)))
+        }) else {
+            return Ok(None);
+        };
+        let known = self
+            .ring
+            .state()
+            .folded
+            .iter()
+            .find(|f| f.value == fold.text)
+            .cloned();
+        let sigma = match known {
+            Some(f) => self.ring.root_sym(f.root),
+            None => {
+                let Some(own) = self.point_signs() else {
+                    return Ok(None);
+                };
+                let name = format!("sgn{}", fold.what);
+                let prec = self.ring.precision();
+                let values: Vec<Complex> = own
+                    .iter()
+                    .map(|&v| Complex::with_val(prec, v * s))
+                    .collect();
+                let sigma = self.ring.sign_symbol(&name, &values)?;
+                let x = if s > 0 { self.clone() } else { self.negate() };
+                let positive = sigma.try_mul(&x)?.render();
+                let root = (self.ring.state().roots.iter())
+                    .position(|r| r.name == name)
+                    .ok_or_else(|| {
+                        AlgebraError::Internal("a sign symbol that is not a root".into())
+                    })?;
+                self.ring.state().folded.push(Folded {
+                    value: fold.text.clone(),
+                    name: name.clone(),
+                    root,
+                    positive,
+                });
+                self.ring.note(format!(
+                    "{name} = sign({}): a sign symbol, so that one normal form covers both signs of {}",
+                    fold.what, fold.what
+                ));
+                sigma
+            }
+        };
+        Ok(Some(if s > 0 { sigma } else { sigma.negate() }))
+    }
+
+    /// `+1` for `σ·x` (or `−1` for its negative) where `σ` is the sign symbol of a folded
+    /// value `x` ([`Sym::folded_sign`]): the definition of `σ`.
+    pub(crate) fn defined_sign(&self) -> Option<i32> {
+        let st = self.ring.state();
+        if st.folded.is_empty() {
+            return None;
+        }
+        let defs: Vec<String> = st.folded.iter().map(|f| f.positive.clone()).collect();
+        drop(st);
+        let text = self.render();
+        if defs.contains(&text) {
+            return Some(1);
+        }
+        defs.contains(&self.negate().render()).then_some(-1)
+    }
+
     /// The sign of this value by a hypothesis of the ring (the condition of the part of
     /// the domain the proof is on, [`super::RingOptions::hypotheses`]).
     pub(crate) fn hypothesis_sign(&self) -> Option<i32> {

@@ -25,8 +25,8 @@ use crate::claims::registry::{GenericFunction, Registry, RegistryError};
 use crate::claims::value::Value;
 use crate::linalg::Vec3;
 use crate::model::discretization::{Gamma, step};
-use crate::model::elliptic_coords::{Sector, m_to_phase, phi_to_m};
-use crate::model::params::{EllipticParams, Regime};
+use crate::model::elliptic_coords::{m_to_phase, phi_to_m_signed};
+use crate::model::params::EllipticParams;
 use crate::model::phase::delta;
 use crate::model::veselov_moser::{hat, j_diag, omega_matrix, vm_step};
 use crate::model::{Inertia, ModelError, lax};
@@ -314,20 +314,25 @@ impl ModelFn {
 fn ell_inverse<R: Real>(a: &[Value<R>]) -> Result<Value<R>, String> {
     let i = inertia(a, 5)?;
     let (m2, en, phi) = (a[0].as_real()?, a[1].as_real()?, a[2].as_real()?);
-    let (s1, s3) = (sign_of(&a[3])?, sign_of(&a[4])?);
+    let (s1, s3) = (sign_value_of(&a[3])?, sign_value_of(&a[4])?);
     let p = EllipticParams::new(&i, &m2, &en).map_err(err)?;
-    let (sa, sb, sc) = match p.regime {
-        Regime::Upper => (s3, 1, s3),
-        Regime::Lower => (s1, 1, s1),
-        Regime::Separatrix => (s1, s1 * s3, s3),
-    };
-    let sector = Sector {
-        regime: p.regime,
-        sa,
-        sb,
-        sc,
-    };
-    Ok(Value::Vec3(phi_to_m(&p, sector, &phi).map_err(err)?))
+    Ok(Value::Vec3(
+        phi_to_m_signed(&p, &s1, &s3, &phi).map_err(err)?,
+    ))
+}
+
+/// The sign of a sector argument as a value: ±1, or for the prover a sign symbol
+/// ([`Real::signum_value`]).
+fn sign_value_of<R: Real>(v: &Value<R>) -> Result<R, String> {
+    let x = v.as_real()?;
+    if !x.is_finite() {
+        return Ok(x.from_i64(i64::from(sign_of(v)?)));
+    }
+    let s = x.signum_value();
+    if s.is_zero() {
+        return Err("sign argument must be nonzero".into());
+    }
+    Ok(s)
 }
 
 /// `w(j, u, A, B, C)`.

@@ -110,7 +110,38 @@ pub fn sncndn_params<R: Real>(u: &R, p: &EllipticParams<R>) -> Result<(R, R, R),
 /// `Φ(M², E, φ)` (ell coord) in the given sector (hyperbolic formulas on the
 /// separatrix).
 pub fn phi_to_m<R: Real>(p: &EllipticParams<R>, s: Sector, phi: &R) -> Result<Vec3<R>, ModelError> {
-    let (a, b, c) = amplitudes(p, s);
+    point_of(p, amplitudes(p, s), phi)
+}
+
+/// [`phi_to_m`] with the sector given by the signs of `M₁` and `M₃` as values
+/// (`s₁`, `s₃`, each ±1, or for the prover a sign symbol): upper regime
+/// `(a, b, c) = s₃·(|a|, |b|/s₃, |c|)`, lower `s₁·(|a|, |b|/s₁, |c|)`, separatrix
+/// `(s₁|a|, s₁s₃|b|, s₃|c|)`, as [`Sector::of`] reads them off a point.
+///
+/// ```
+/// use eulertop::model::elliptic_coords::{phi_to_m, phi_to_m_signed};
+/// use eulertop::model::{EllipticParams, Inertia, Sector};
+/// let i = Inertia::new(3.0, 2.0, 1.0).unwrap();
+/// let p = EllipticParams::new(&i, &1.0, &0.6).unwrap();
+/// let s = Sector { regime: p.regime, sa: -1, sb: 1, sc: -1 };
+/// let m = phi_to_m_signed(&p, &1.0, &-1.0, &0.4).unwrap();
+/// assert_eq!(m, phi_to_m(&p, s, &0.4).unwrap());
+/// ```
+pub fn phi_to_m_signed<R: Real>(
+    p: &EllipticParams<R>,
+    s1: &R,
+    s3: &R,
+    phi: &R,
+) -> Result<Vec3<R>, ModelError> {
+    point_of(p, signed_amplitudes(p, s1.clone(), s3.clone()), phi)
+}
+
+/// The point of phase `φ` with the signed amplitudes `(a, b, c)`.
+fn point_of<R: Real>(
+    p: &EllipticParams<R>,
+    (a, b, c): (R, R, R),
+    phi: &R,
+) -> Result<Vec3<R>, ModelError> {
     let (sn, cn, dn) = sncndn_params(phi, p)?;
     Ok(match p.regime {
         Regime::Upper | Regime::Separatrix => Vec3::new(a * cn, b * sn, c * dn),
@@ -157,7 +188,8 @@ fn undefined() -> ModelError {
 /// so that one normal form covers the sectors of all its sign cases.
 fn point_amplitudes<R: Real>(p: &EllipticParams<R>, m: &Vec3<R>) -> Result<(R, R, R), ModelError> {
     let [m1, _, m3] = &m.0;
-    let (sa, sc) = match p.regime {
+    // only the signs the regime's sector depends on are taken
+    let (s1, s3) = match p.regime {
         Regime::Upper => {
             let s = m3.signum_value();
             (s.clone(), s)
@@ -168,14 +200,21 @@ fn point_amplitudes<R: Real>(p: &EllipticParams<R>, m: &Vec3<R>) -> Result<(R, R
         }
         Regime::Separatrix => (m1.signum_value(), m3.signum_value()),
     };
-    if sa.is_zero() || sc.is_zero() {
+    if s1.is_zero() || s3.is_zero() {
         return Err(undefined());
     }
-    let sb = match p.regime {
-        Regime::Separatrix => sa.clone() * sc.clone(),
-        _ => sa.one(),
+    Ok(signed_amplitudes(p, s1, s3))
+}
+
+/// The amplitudes `(a, b, c)` of the sector with the signs `s₁`, `s₃` of `M₁`, `M₃`
+/// (see [`phi_to_m_signed`]).
+fn signed_amplitudes<R: Real>(p: &EllipticParams<R>, s1: R, s3: R) -> (R, R, R) {
+    let (sa, sb, sc) = match p.regime {
+        Regime::Upper => (s3.clone(), s3.one(), s3),
+        Regime::Lower => (s1.clone(), s1.one(), s1),
+        Regime::Separatrix => (s1.clone(), s1 * s3.clone(), s3),
     };
-    Ok((sa * p.a2.sqrt(), sb * p.b2.sqrt(), sc * p.c2.sqrt()))
+    (sa * p.a2.sqrt(), sb * p.b2.sqrt(), sc * p.c2.sqrt())
 }
 
 /// The parameters and the phase `φ` of [`m_to_phi`], without the sector as signs

@@ -117,6 +117,28 @@ pub trait Scalar:
             0
         })
     }
+    /// The value of `sign(x)` in an expression language: [`Scalar::stated_sign`] as a
+    /// number.  A symbolic value may answer with a sign symbol `σ = sign(x)` where its
+    /// proof carries the sign of an indeterminate that way.
+    fn stated_sign_value(&self) -> Result<Self, String>
+    where
+        Self: PartialOrd,
+    {
+        Ok(self.from_i64(i64::from(self.stated_sign()?)))
+    }
+    /// The value of `abs(x)` in an expression language: `x` or `−x` by
+    /// [`Scalar::stated_sign`].  A symbolic value may answer `σ·x` where its proof
+    /// carries the sign of an indeterminate as a sign symbol `σ`.
+    fn stated_abs(&self) -> Result<Self, String>
+    where
+        Self: PartialOrd,
+    {
+        Ok(if self.stated_sign()? < 0 {
+            -self.clone()
+        } else {
+            self.clone()
+        })
+    }
     /// The absolute value (modulus), rounded to `f64`.  Used for residual scaling.
     fn magnitude(&self) -> f64;
     /// The value rounded to `f64` (for complex scalars: the real part).

@@ -28,13 +28,19 @@ fn claim(id: &str, lhs: &str, rhs: &str) -> String {
 
 fn catalogue() -> eulertop::claims::catalogue::Catalogue {
     let text = format!(
-        "{DEFINITIONS}{}{}{}",
+        "{DEFINITIONS}{}{}{}{}",
         // |x|² = x² on both sides of x = 0
         claim("t.split.square", "mag(x)^2 * y", "x^2 * y"),
         // |x| = x only for x > 0
         claim("t.split.wrong", "mag(x) * y", "x * y"),
-        // abs and sign in the claim's own formulas take the sign of the part
+        // abs and sign of an indeterminate: a sign symbol, one part for both signs
         claim("t.split.stated", "abs(x) * sign(x) * y", "x * y"),
+        // abs and sign of another value take the sign of the part
+        claim(
+            "t.split.stated-sum",
+            "abs(x + y - 3/2) * sign(x + y - 3/2)",
+            "x + y - 3/2",
+        ),
     );
     controls_only(text)
 }
@@ -52,8 +58,34 @@ fn a_part_where_the_identity_fails_is_named() {
 }
 
 #[test]
-fn abs_and_sign_in_the_claims_formulas_take_the_sign_of_each_part() {
+fn abs_and_sign_of_an_indeterminate_are_a_sign_symbol_and_one_part_proves_both_signs() {
     let p = attempt(&catalogue(), "t.split.stated");
     assert!(p.is_proved(), "{:?}", p.reason);
+    assert!(p.cases.is_empty(), "{:?}", p.cases);
+    assert!(
+        p.notes.iter().any(|n| n.starts_with("sgnx = sign(x)")),
+        "{:?}",
+        p.notes
+    );
+    assert!(
+        p.relations.iter().any(|r| r == "sgnx**2 = 1"),
+        "{:?}",
+        p.relations
+    );
+}
+
+#[test]
+fn abs_and_sign_of_another_value_take_the_sign_of_each_part() {
+    let p = attempt(&catalogue(), "t.split.stated-sum");
+    assert!(p.is_proved(), "{:?}", p.reason);
     assert_eq!(p.cases.len(), 2, "{:?}", p.cases);
+    assert!(p.notes.iter().all(|n| !n.contains("sgn")), "{:?}", p.notes);
+}
+
+/// A sign that only a comparison decides (`if x > 0`) is not carried by a sign symbol:
+/// the domain is split, as before.
+#[test]
+fn a_comparison_with_an_indeterminate_still_splits_the_domain() {
+    let p = attempt(&catalogue(), "t.split.square");
+    assert!(p.notes.iter().all(|n| !n.contains("sgn")), "{:?}", p.notes);
 }

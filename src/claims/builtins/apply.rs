@@ -65,11 +65,7 @@ fn real_fn(f: Builtin) -> Option<RealFn> {
 
 fn elementary<T: Num>(f: Builtin, rf: RealFn, x: &Value<T>) -> Result<Value<T>, String> {
     match (x, f) {
-        (Value::Real(x), Builtin::Abs) => Ok(Value::Real(if x.stated_sign()? < 0 {
-            -x.clone()
-        } else {
-            x.clone()
-        })),
+        (Value::Real(x), Builtin::Abs) => x.stated_abs().map(Value::Real),
         (Value::Real(x), _) => x.real_fn(rf).map(Value::Real),
         (Value::Complex(z), Builtin::Sqrt) => cmath::sqrt(z).map(Value::Complex),
         (Value::Complex(z), Builtin::Exp) => cmath::exp(z).map(Value::Complex),
@@ -84,7 +80,7 @@ fn real_misc<T: Num>(f: Builtin, a: &[Value<T>]) -> Result<Value<T>, String> {
         Builtin::Sign => {
             arity(a, 1)?;
             let x = a[0].as_real()?;
-            Ok(Value::Real(x.from_i64(i64::from(x.stated_sign()?))))
+            Ok(Value::Real(x.stated_sign_value()?))
         }
         Builtin::Atan2 => {
             arity(a, 2)?;

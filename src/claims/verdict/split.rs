@@ -16,6 +16,18 @@ use crate::claims::value::Value;
 /// The most nested splits of one case.
 const MAX_SPLITS: usize = 3;
 
+/// The most indeterminates whose signs one proof carries as sign symbols.
+const MAX_FOLDS: usize = 3;
+
+/// The conditions of a part of the domain: the signs that hold on it, and the
+/// indeterminates whose signs the proof carries as sign symbols instead of splitting by
+/// them ([`crate::algebra::RingOptions::sign_folds`]).
+#[derive(Clone, Default)]
+pub(super) struct Region {
+    pub signs: Vec<(SignSplit, i32)>,
+    pub folds: Vec<SignSplit>,
+}
+
 /// A part of the domain with its proof: the labels of its case and of its signs.
 pub(super) type Part = (Vec<String>, Proof);
 
@@ -37,7 +49,14 @@ pub(super) fn prove_parts(
     points: Vec<Point>,
     hints: Vec<BaseHint>,
 ) -> Result<Vec<Part>, Box<Part>> {
-    parts(input, case, case.to_vec(), points, hints, &[])
+    parts(
+        input,
+        case,
+        case.to_vec(),
+        points,
+        hints,
+        &Region::default(),
+    )
 }
 
 fn parts(
@@ -46,7 +65,7 @@ fn parts(
     label: Vec<String>,
     points: Vec<Point>,
     hints: Vec<BaseHint>,
-    conds: &[(SignSplit, i32)],
+    region: &Region,
 ) -> Result<Vec<Part>, Box<Part>> {
     let ctx = input.ctx;
     let p = prove_case(
@@ -56,20 +75,32 @@ fn parts(
         input.sides,
         (input.certificate, input.signs),
         hints.clone(),
-        conds,
+        region,
     );
     if p.is_proved() {
         return Ok(vec![(label, p)]);
     }
     let split = match &p.split {
-        Some(s) if conds.len() < MAX_SPLITS && !input.signs.strict => s.clone(),
+        Some(s) if region.signs.len() < MAX_SPLITS && !input.signs.strict => s.clone(),
         _ => return Err(Box::new((label, p))),
     };
+    // the sign of an indeterminate first as a sign symbol: one proof for both signs
+    if split.is_indeterminate()
+        && region.folds.len() < MAX_FOLDS
+        && !region.folds.iter().any(|f| f.same(&split))
+    {
+        let mut folded = region.clone();
+        folded.folds.push(split.clone());
+        let parts = parts(input, case, label.clone(), points, hints.clone(), &folded);
+        if parts.is_ok() {
+            return parts;
+        }
+    }
     let mut out = Vec::new();
     for sign in [1, -1] {
-        let mut c = conds.to_vec();
-        c.push((split.clone(), sign));
-        let Ok(pts) = draw(input, case, &c) else {
+        let mut c = region.clone();
+        c.signs.push((split.clone(), sign));
+        let Ok(pts) = draw(input, case, &c.signs) else {
             return Err(Box::new((label, p)));
         };
         let mut l = label.clone();

@@ -836,7 +836,7 @@ pub(super) fn prove_case(
     sides_of: (&PExpr, &PExpr),
     (certificate, signs): (bool, &Signs),
     base_hints: Vec<BaseHint>,
-    hypotheses: &[(crate::algebra::split::SignSplit, i32)],
+    region: &super::split::Region,
 ) -> Proof {
     let opts = RingOptions {
         points: points.len(),
@@ -844,7 +844,8 @@ pub(super) fn prove_case(
         base_hints,
         positivity: signs.positivity.clone(),
         strict_signs: signs.strict,
-        hypotheses: hypotheses.to_vec(),
+        hypotheses: region.signs.clone(),
+        sign_folds: region.folds.clone(),
         ..RingOptions::default()
     };
     let hint = ctx.claim.hint.as_ref();
@@ -1011,7 +1012,16 @@ fn prove_signs_jointly(
             (n.clone(), r, *p)
         })
         .collect();
-    let p = prove_case(ctx, &joint, &points, sides, certificate, Vec::new(), &[]);
+    let region = super::split::Region::default();
+    let p = prove_case(
+        ctx,
+        &joint,
+        &points,
+        sides,
+        certificate,
+        Vec::new(),
+        &region,
+    );
     if !matches!(p.outcome, Outcome::Proved) {
         return None;
     }
