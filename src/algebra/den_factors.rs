@@ -10,7 +10,9 @@
 //!
 //! - arithmetic derives the factors of a result's denominator from its operands'
 //!   (products add exponents, gcds take the smaller, least common multiples the
-//!   larger), and only a denominator met for the first time is factored by FLINT;
+//!   larger), and only a denominator met for the first time is factored: first by
+//!   trial division by the irreducible factors the ring has met, then by FLINT for
+//!   what remains;
 //! - `gcd(N, D)` is then `c · Π fᵢ^kᵢ`, where `kᵢ ≤ eᵢ` is how often `fᵢ` divides `N`
 //!   (exact trial division) and `c` the gcd of the integer contents.  As every `fᵢ` is
 //!   primitive with positive leading coefficient, this is FLINT's gcd, term for term,
@@ -212,7 +214,21 @@ fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
 #[derive(Default)]
 pub(crate) struct DenFactors {
     entries: Mutex<Bounded<Poly, Arc<Factors>>>,
+    /// The distinct irreducible factors of the remembered denominators, with their
+    /// degrees: tried first when a new denominator is factored.
+    known: Mutex<Known>,
 }
+
+/// The irreducible factors a ring has met ([`DenFactors::known`]), at most
+/// [`MAX_KNOWN`].
+#[derive(Default)]
+struct Known {
+    list: Vec<(Poly, Vec<i64>)>,
+    seen: std::collections::HashSet<Poly>,
+}
+
+/// The most irreducible factors a ring keeps for trial division.
+const MAX_KNOWN: usize = 256;
 
 impl DenFactors {
     /// The factorisation of `d` (non-zero): remembered, or computed by FLINT and
@@ -224,8 +240,48 @@ impl DenFactors {
         if let Some(f) = lock(&self.entries).map.get(d) {
             return Ok(f.clone());
         }
-        let f = Arc::new(factor(d)?);
+        let f = Arc::new(self.factor_known_first(d)?);
         self.record(d, f.clone());
+        Ok(f)
+    }
+
+    /// [`factor`] of `d` after dividing out the irreducible factors the ring has met
+    /// (exact trial division; a factor of higher degree than `d` in some variable is
+    /// skipped), so that FLINT factors only what remains.  The result is FLINT's
+    /// factorisation: the factors met are FLINT's own, primitive with positive leading
+    /// coefficient, so the rest has `d`'s unit.
+    fn factor_known_first(&self, d: &Poly) -> AlgResult<Factors> {
+        if d.len() == 1 {
+            return factor(d);
+        }
+        if let Some(f) = remembered(d) {
+            return Ok(f);
+        }
+        let degrees = d.degrees();
+        let mut rest = d.clone();
+        let mut found = Vec::new();
+        for (f, fd) in &lock(&self.known).list {
+            if fd.iter().zip(&degrees).any(|(a, b)| a > b) {
+                continue;
+            }
+            let mut e = 0;
+            while let Some(q) = rest.divides(f)? {
+                rest = q;
+                e += 1;
+            }
+            if e > 0 {
+                found.push((f.clone(), e));
+            }
+        }
+        if found.is_empty() {
+            return factor(d);
+        }
+        let mut f = match rest.as_constant() {
+            Some(c) => Factors::integer(c),
+            None => factor(&rest)?,
+        };
+        f.list.extend(found);
+        remember(d, &f);
         Ok(f)
     }
 
@@ -237,6 +293,13 @@ impl DenFactors {
         }
         debug_assert!(f.expand(d).is_ok_and(|p| &p == d), "a wrong factorisation");
         let size = d.len() + f.terms();
+        let mut known = lock(&self.known);
+        for (p, _) in &f.list {
+            if known.list.len() < MAX_KNOWN && known.seen.insert(p.clone()) {
+                known.list.push((p.clone(), p.degrees()));
+            }
+        }
+        drop(known);
         lock(&self.entries).insert(d.clone(), f, size, CAPACITY_TERMS);
     }
 }
@@ -258,15 +321,26 @@ pub(crate) fn factor(d: &Poly) -> AlgResult<Factors> {
         });
         return Ok(Factors { unit, list });
     }
-    let key = TermKey::of(d);
-    let known = lock(&GLOBAL).map.get(&key).cloned();
-    if let Some(f) = known {
-        return Ok(Factors {
-            unit: f.0.clone(),
-            list: f.1.iter().map(|(k, e)| (k.poly(d), *e)).collect(),
-        });
+    if let Some(f) = remembered(d) {
+        return Ok(f);
     }
     let f = Factors::from_flint(d.factor()?);
+    remember(d, &f);
+    Ok(f)
+}
+
+/// The factorisation of `d` remembered across rings, if any.
+fn remembered(d: &Poly) -> Option<Factors> {
+    let known = lock(&GLOBAL).map.get(&TermKey::of(d)).cloned()?;
+    Some(Factors {
+        unit: known.0.clone(),
+        list: known.1.iter().map(|(k, e)| (k.poly(d), *e)).collect(),
+    })
+}
+
+/// Remembers the factorisation `f` of `d` across rings.
+fn remember(d: &Poly, f: &Factors) {
+    let key = TermKey::of(d);
     let stored = (
         f.unit.clone(),
         f.list
@@ -276,7 +350,6 @@ pub(crate) fn factor(d: &Poly) -> AlgResult<Factors> {
     );
     let size = key.terms() + stored.1.iter().map(|(k, _)| k.terms()).sum::<usize>();
     lock(&GLOBAL).insert(key, Arc::new(stored), size, GLOBAL_CAPACITY_TERMS);
-    Ok(f)
 }
 
 /// A polynomial's terms, independent of its ring: the key of the factorisations
@@ -403,6 +476,34 @@ mod tests {
         let (rest, fg) = cancel(&m, &fd).unwrap();
         assert_eq!(rest, m);
         assert!(fg.expand(&d).unwrap().is_one());
+    }
+
+    /// A denominator whose factors the ring has met is factored by trial division
+    /// first: the result is FLINT's factorisation (unit and factors, in another order).
+    #[test]
+    fn factors_met_before_are_divided_out_first() {
+        let ctx = Ctx::new(3);
+        let (x, y, z) = (Poly::var(&ctx, 0), Poly::var(&ctx, 1), Poly::var(&ctx, 2));
+        let k = |n: i64| Poly::from_i64(&ctx, n);
+        // polynomials of their own, so that no other test has factored them
+        let a = x.sub(&y.scale(&Integer::from(7)));
+        let b = x.mul(&z).scale(&Integer::from(3)).add(&k(5));
+        let c = y.mul(&y).add(&z.scale(&Integer::from(11)));
+        let memo = DenFactors::default();
+        memo.of(&a.mul(&b)).unwrap();
+        let d = k(-6).mul(&a).mul(&a).mul(&b).mul(&c);
+        let mine = memo.of(&d).unwrap();
+        let flint = Factors::from_flint(d.factor().unwrap());
+        assert_eq!(mine.unit, flint.unit);
+        let sorted = |f: &Factors| {
+            let mut v: Vec<(String, u64)> = (f.list.iter())
+                .map(|(p, e)| (format!("{p:?}"), *e))
+                .collect();
+            v.sort();
+            v
+        };
+        assert_eq!(sorted(&mine), sorted(&flint));
+        assert_eq!(mine.expand(&d).unwrap(), d);
     }
 
     #[test]
