@@ -21,7 +21,7 @@ use super::base_table::{Base, Table};
 pub use super::base_table::{BaseHint, DirKey, Terms};
 use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
-use super::lattice::{lattice_basis, solve};
+use super::lattice::{cost, lattice_basis, solve};
 use super::node::{Node, Op};
 use super::ring::{Origin, Prescription, Ring, VarKind};
 use super::roots::Prescribed;
@@ -451,6 +451,41 @@ impl Ring {
         hints
     }
 
+    /// On a first attempt, whose bases are the arguments as they came: when an
+    /// argument needs a multiple of a base (`|nⱼ| ≥ 2`, an expansion whose degree grows
+    /// like `nⱼ²`) and a basis of the arguments seen so far writes them all at a lower
+    /// [`cost`], the attempt stops here and asks for a restart on that basis (what
+    /// [`Ring::rebase_hints`] gives), rather than expanding formulas it would then
+    /// throw away.  With hinted bases it never stops (the hints are such a basis).
+    fn better_bases_first(&self, t: usize, n: &[i64]) -> AlgResult<()> {
+        if !self.options().base_hints.is_empty() || n.iter().all(|x| x.abs() < 2) {
+            return Ok(());
+        }
+        let (seen, current) = {
+            let st = self.state();
+            let width = st.tables[t].dirs.len();
+            let padded = |v: &Vec<Rational>| {
+                let mut v = v.clone();
+                pad(&mut v, width);
+                v
+            };
+            let seen: Vec<Vec<Rational>> = st.tables[t].seen.iter().map(padded).collect();
+            let current: Vec<Vec<Rational>> =
+                st.tables[t].bases.iter().map(|b| padded(&b.vec)).collect();
+            (seen, current)
+        };
+        let better = cost(&lattice_basis(&seen), &seen);
+        let now = cost(&current, &seen);
+        if better.is_some_and(|b| now.is_none_or(|c| b < c)) {
+            self.state().rebase_wanted = true;
+            return Err(AlgebraError::CannotDecide(
+                "the arguments seen are written more simply over other bases: restart on them"
+                    .into(),
+            ));
+        }
+        Ok(())
+    }
+
     /// Turns pending hinted bases into bases once every symbol they use exists.
     fn activate_hints(&self, t: usize) -> AlgResult<()> {
         let pending = std::mem::take(&mut self.state().tables[t].pending);
@@ -736,6 +771,7 @@ impl Sym {
             st.tables[t].seen.push(v);
         }
         let n = ring.coordinates(t, &split.vec)?;
+        ring.better_bases_first(t, &n)?;
         let tr = super::addition::Triples { ring, t };
         let mut v = tr
             .at(&n, split.half_k, split.half_kp)

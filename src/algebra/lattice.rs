@@ -99,7 +99,7 @@ pub(crate) fn solve(bases: &[Vec<Rational>], v: &[Rational]) -> Option<Vec<Ratio
 /// The cost of writing every vector over `basis`: the sum of the squared integer
 /// coordinates (the degree of `sn(n·u)` in `sn u` grows like n², that of a sum of n
 /// different bases like n), or `None` if some vector has non-integer coordinates.
-fn cost(basis: &[Vec<Rational>], vectors: &[Vec<Rational>]) -> Option<Integer> {
+pub(crate) fn cost(basis: &[Vec<Rational>], vectors: &[Vec<Rational>]) -> Option<Integer> {
     let mut total = Integer::new();
     for v in vectors {
         let x = solve(basis, v)?;

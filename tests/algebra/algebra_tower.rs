@@ -529,3 +529,33 @@ fn the_inverse_of_sn_in_a_varying_modulus_differentiates_as_the_inverse_function
         );
     }
 }
+
+/// A first attempt that meets an argument needing a multiple of a base (`φ + 2δ` over
+/// the bases `φ`, `δ` as they came) restarts at once on a cheaper basis of the
+/// arguments seen (`δ`, `φ + δ`), over which every argument is one addition away.
+#[test]
+fn an_argument_that_needs_a_multiple_of_a_base_restarts_on_a_cheaper_basis() {
+    let opts = RingOptions {
+        points: 3,
+        ..Default::default()
+    };
+    let proof = prove_identity(opts, "midpoint", |r| {
+        let k = r.indeterminate_f64("k", &[0.3, 0.5, 0.7])?;
+        let phi = r.indeterminate_f64("phi", &[0.2, 0.4, 0.9])?;
+        let d = r.indeterminate_f64("d", &[0.1, -0.3, 0.25])?;
+        let (s, ..) = phi.sncndn(&k)?;
+        let (sd, ..) = d.sncndn(&k)?;
+        let far = &phi + &(&d + &d);
+        let (s2, ..) = far.sncndn(&k)?;
+        // sn(φ + 2δ) − sn φ·sn δ, written two ways
+        let lhs = &s2 - &(&s * &sd);
+        let rhs = &(&phi + &(&r.integer(2) * &d)).sn(&k)? - &(&sd * &s);
+        Ok((lhs, rhs))
+    });
+    assert!(proof.is_proved(), "{:?}", proof.outcome);
+    assert_eq!(proof.attempts, 2);
+    let multiples: Vec<&String> = (proof.notes.iter())
+        .filter(|n| n.contains("with argument") && n.contains("2*b_"))
+        .collect();
+    assert!(multiples.is_empty(), "{multiples:?}");
+}
