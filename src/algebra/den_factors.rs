@@ -295,7 +295,8 @@ impl DenFactors {
         let size = d.len() + f.terms();
         let mut known = lock(&self.known);
         for (p, _) in &f.list {
-            if known.list.len() < MAX_KNOWN && known.seen.insert(p.clone()) {
+            if known.list.len() < MAX_KNOWN && !known.seen.contains(p) {
+                known.seen.insert(p.clone());
                 known.list.push((p.clone(), p.degrees()));
             }
         }
