@@ -279,9 +279,18 @@ impl Ring {
         adjoin: bool,
         special: Option<(&str, &str)>,
     ) -> AlgResult<Option<(Val, Option<usize>)>> {
-        if nd.leading_coefficient() > 0 && nd.sqrt().is_some() {
+        if nd.leading_coefficient() > 0
+            && let Some(root) = nd.sqrt()
+        {
             // a perfect square (of a polynomial) needs no factoring and no new root
-            return self.assemble(nd, &Bits::default()).map(|v| Some((v, None)));
+            let one = Poly::from_i64(&self.inner.ctx, 1);
+            let sh = self.shadow_of(&root, &one);
+            let v = Val {
+                num: root,
+                den: one,
+                sh,
+            };
+            return Ok(Some((v, None)));
         }
         let class = self.class_of(nd)?;
         let mut fresh = None;
@@ -432,23 +441,10 @@ impl Sym {
             None => self.val.sh.sqrt(),
         };
         let inner = &ring.inner;
-        let nd = inner.reduce(self.val.num.mul(&self.val.den));
-        let (mut cand, fresh) = if self.has_roots() {
-            (self.tower_sqrt(&nd)?, None)
-        } else {
-            let special = prescribed.as_ref().map(|p| (p.name, p.note));
-            let (v, fresh) = ring
-                .field_sqrt_poly(&nd, true, special)?
-                .ok_or_else(|| AlgebraError::Internal("sqrt adjoined no root".into()))?;
-            (v, fresh)
+        let (mut cand, fresh) = match self.root_of_squares()? {
+            Some(v) => (v, None),
+            None => self.root_of_product(prescribed.as_ref())?,
         };
-        // divide by D: √(N/D) = √(N·D)/D
-        let dval = Val {
-            num: self.val.den.clone(),
-            den: Poly::from_i64(&inner.ctx, 1),
-            sh: ring.shadow_of(&self.val.den, &Poly::from_i64(&inner.ctx, 1)),
-        };
-        cand = inner.v_div(&cand, &dval)?;
         if let (Some(i), Some(_)) = (fresh, &prescribed) {
             // fix the new root's values so that the product equals the prescribed values
             let sigma = ring.pointwise_signs(&target, &cand.sh, &what)?;
@@ -494,6 +490,58 @@ impl Sym {
             }
         }
         Ok(result)
+    }
+
+    /// `√(N/D) = √N/√D`, up to sign, when `N` and `D` are squares of polynomials with
+    /// positive leading coefficients (and no roots): the same value as
+    /// [`Sym::root_of_product`]'s, as `N/D` is in lowest terms, without forming `N·D`.
+    fn root_of_squares(&self) -> AlgResult<Option<Val>> {
+        let (n, d) = (&self.val.num, &self.val.den);
+        if self.has_roots() || n.leading_coefficient() <= 0 || d.leading_coefficient() <= 0 {
+            return Ok(None);
+        }
+        let Some(sn) = n.sqrt() else {
+            return Ok(None);
+        };
+        let Some(sd) = d.sqrt() else {
+            return Ok(None);
+        };
+        let ring = &self.ring;
+        let inner = &ring.inner;
+        if !d.is_one()
+            && let Some(f) = inner.dens.of(d)?.half()
+        {
+            inner.dens.record(&sd, Arc::new(f));
+        }
+        let (num, den) = inner.normalise(sn, sd)?;
+        let sh = ring.shadow_of(&num, &den);
+        Ok(Some(Val { num, den, sh }))
+    }
+
+    /// `√(N/D) = √(N·D)/D`, up to sign: the square root of the polynomial `N·D` in the
+    /// field (new roots adjoined as needed; the index of a root made for prescribed
+    /// values is returned) or in the tower of roots, divided by `D`.
+    fn root_of_product(
+        &self,
+        prescribed: Option<&Prescribed<'_>>,
+    ) -> AlgResult<(Val, Option<usize>)> {
+        let ring = &self.ring;
+        let inner = &ring.inner;
+        let nd = inner.reduce(self.val.num.mul(&self.val.den));
+        let (cand, fresh) = if self.has_roots() {
+            (self.tower_sqrt(&nd)?, None)
+        } else {
+            let special = prescribed.map(|p| (p.name, p.note));
+            ring.field_sqrt_poly(&nd, true, special)?
+                .ok_or_else(|| AlgebraError::Internal("sqrt adjoined no root".into()))?
+        };
+        let one = Poly::from_i64(&inner.ctx, 1);
+        let dval = Val {
+            num: self.val.den.clone(),
+            den: one.clone(),
+            sh: ring.shadow_of(&self.val.den, &one),
+        };
+        Ok((inner.v_div(&cand, &dval)?, fresh))
     }
 
     /// Is this value a single root symbol whose radicand is exactly `x` (the
@@ -650,5 +698,34 @@ impl Ring {
             }
         }
         Ok(None)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{Ring, RingOptions};
+
+    /// `√(N/D)` of squares `N`, `D` is `√N/√D`, the value of the route through `N·D`,
+    /// and adjoins no root.
+    #[test]
+    fn the_root_of_a_quotient_of_squares_is_the_root_of_the_product() {
+        let ring = Ring::new(RingOptions {
+            points: 3,
+            ..Default::default()
+        });
+        let x = ring.indeterminate_f64("x", &[1.5, 2.0, 3.5]).unwrap();
+        let y = ring.indeterminate_f64("y", &[0.5, 1.25, 0.75]).unwrap();
+        let n = &(&x + &y) * &(&x + &y);
+        let d = &(&(&x * &x) + &ring.integer(3)) * &(&(&x * &x) + &ring.integer(3));
+        let q = &n / &d;
+        let fast = q.root_of_squares().unwrap().expect("squares");
+        let (slow, fresh) = q.root_of_product(None).unwrap();
+        assert_eq!((&fast.num, &fast.den), (&slow.num, &slow.den));
+        assert!(fresh.is_none());
+        let r = q.sqrt().unwrap();
+        assert_eq!(r, &(&x + &y) / &(&(&x * &x) + &ring.integer(3)));
+        assert!(ring.state().roots.is_empty());
+        // not a square: the route through N·D
+        assert!((&x / &d).root_of_squares().unwrap().is_none());
     }
 }
