@@ -83,10 +83,12 @@ impl Ring {
                 factors: Vec::new(),
             },
             None => {
-                let f = super::den_factors::factor(&rest)?;
+                // the ring's factorisation: remembered, or with the factors it has met
+                // divided out first
+                let f = self.inner.dens.of(&rest)?;
                 super::flint::Factored {
-                    constant: f.unit,
-                    factors: f.list,
+                    constant: f.unit.clone(),
+                    factors: f.list.clone(),
                 }
             }
         };
