@@ -189,13 +189,18 @@ impl Sym {
                 inv
             }
         };
-        let mut out = self.zero_like();
+        // Σⱼ ∂self/∂pⱼ · (J⁻¹)ⱼᵢ, over one common denominator
+        let mut parts = Vec::new();
         for (j, p) in c.params.iter().enumerate() {
             if !inv[j][i].is_exact_zero() {
-                out = out.try_add(&self.derivative_plain(p)?.try_mul(&inv[j][i])?)?;
+                parts.push((self.derivative_plain(p)?, &inv[j][i]));
             }
         }
-        Ok(out)
+        if parts.is_empty() {
+            return Ok(self.zero_like());
+        }
+        let terms: Vec<(&Sym, &Sym, bool)> = parts.iter().map(|(d, m)| (d, *m, false)).collect();
+        Sym::try_sum_of_products(&terms)
     }
 
     fn zero_like(&self) -> Sym {
