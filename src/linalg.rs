@@ -207,17 +207,10 @@ impl<S: Scalar> Mat3<S> {
         if !antisymmetric {
             return None;
         }
-        let p = [&e[2][1], &e[0][2], &e[1][0]];
-        let a = &self.0;
+        let p = Vec3([e[2][1].clone(), e[0][2].clone(), e[1][0].clone()]);
+        let row = |i: usize| Vec3(self.0[i % 3].clone());
         // q_k = (a_i × a_j)·p = a_i·(a_j × p), (i, j, k) cyclic
-        let q: [S; 3] = std::array::from_fn(|k| {
-            let (ai, aj) = (&a[(k + 1) % 3], &a[(k + 2) % 3]);
-            let w: [S; 3] = std::array::from_fn(|c| {
-                let (c1, c2) = ((c + 1) % 3, (c + 2) % 3);
-                S::det2(&aj[c1], p[c2], &aj[c2], p[c1])
-            });
-            S::dot3([&ai[0], &ai[1], &ai[2]], [&w[0], &w[1], &w[2]])
-        });
+        let q: [S; 3] = std::array::from_fn(|k| row(k + 1).dot(&row(k + 2).cross(&p)));
         let z = q[0].zero();
         Some(Mat3([
             [z.clone(), -q[2].clone(), q[1].clone()],
