@@ -1,6 +1,7 @@
 //! The exact derivative: a derivation of the tower.
 //!
-//! `d/dx` of a normal form `N/D` is `(N'D − ND')/D²` with `P' = Σ_v ∂P/∂v · v'` over
+//! `d/dx` of a normal form `N/D`, with `D = c·Π fᵢ^eᵢ`, is `N'/D − (N/D)·Σ eᵢ fᵢ'/fᵢ`
+//! (the quotient rule over the denominator `D·Π fᵢ`), with `P' = Σ_v ∂P/∂v · v'` over
 //! the variables of `P`, and for each symbol `v`:
 //!
 //! * an indeterminate: `x' = 1`, others 0; a named quantity: the derivative of its
@@ -80,21 +81,44 @@ impl Ring {
         }
     }
 
+    /// `(N/D)'` for `D = c·Π fᵢ^eᵢ` (its remembered factors): `N'/D − (N/D)·Σ eᵢ fᵢ'/fᵢ`,
+    /// one sum of products over the common denominator `D·Π fᵢ` rather than `D²`, from
+    /// the value's own shadow (`N` and `D` are not evaluated again).
     pub(crate) fn val_derivative(&self, v: &Val, jx: usize) -> AlgResult<Val> {
         let inner = &self.inner;
         let dn = self.poly_derivative(&v.num, jx)?;
-        let dd = self.poly_derivative(&v.den, jx)?;
-        let n = self.poly_val(&v.num);
-        let d = self.poly_val(&v.den);
-        let top = inner.v_add(&inner.v_mul(&dn, &d)?, &inner.v_mul(&n, &dd)?, true)?;
-        let d2 = inner.v_mul(&d, &d)?;
-        if !v.den.is_one() {
-            // the factors of D² are those of D, doubled: FLINT need not factor D²
-            let f = inner.dens.of(&v.den)?;
-            inner.dens.record(&d2.num, std::sync::Arc::new(f.mul(&f)));
+        if v.den.is_one() {
+            return Ok(dn);
         }
-        let out = inner.v_div(&top, &d2)?;
-        Ok(out)
+        let one = Poly::from_i64(&inner.ctx, 1);
+        let reciprocal = |d: &Poly| Val {
+            num: one.clone(),
+            den: d.clone(),
+            sh: self.shadow_of(&one, d),
+        };
+        let factors = inner.dens.of(&v.den)?;
+        let mut logs = Vec::with_capacity(factors.list.len());
+        for (f, e) in &factors.list {
+            let df = self.poly_derivative(f, jx)?;
+            if df.num.is_zero() {
+                continue;
+            }
+            // f is irreducible, primitive, of positive leading coefficient
+            let own = super::den_factors::Factors {
+                unit: rug::Integer::from(1),
+                list: vec![(f.clone(), 1)],
+            };
+            inner.dens.record(f, std::sync::Arc::new(own));
+            let scaled = inner.v_mul(&df, &inner.const_val(&Rational::from(*e)))?;
+            logs.push(inner.v_mul(&scaled, &reciprocal(f))?);
+        }
+        let inv_d = reciprocal(&v.den);
+        let mut terms: Vec<(&Val, &Val, bool)> = vec![(&dn, &inv_d, false)];
+        terms.extend(logs.iter().map(|g| (v, g, true)));
+        if terms.len() == 1 {
+            return inner.v_mul(&dn, &inv_d);
+        }
+        inner.v_sum_of_products(&terms)
     }
 
     /// `d v/d x` for FLINT variable `idx` (cached).
