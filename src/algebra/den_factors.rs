@@ -283,7 +283,7 @@ impl DenFactors {
             }
         }
         if found.is_empty() {
-            return factor(d);
+            return flint_factor(d);
         }
         let mut f = match rest.as_constant() {
             Some(c) => Factors::integer(c),
@@ -332,9 +332,14 @@ pub(crate) fn factor(d: &Poly) -> AlgResult<Factors> {
         });
         return Ok(Factors { unit, list });
     }
-    if let Some(f) = remembered(d) {
-        return Ok(f);
+    match remembered(d) {
+        Some(f) => Ok(f),
+        None => flint_factor(d),
     }
+}
+
+/// FLINT's factorisation of `d` (not a monomial), remembered across rings.
+fn flint_factor(d: &Poly) -> AlgResult<Factors> {
     let f = Factors::from_flint(d.factor()?);
     remember(d, &f);
     Ok(f)

@@ -86,17 +86,21 @@ impl Sym {
     /// ```
     pub fn sign_value(&self) -> AlgResult<Sym> {
         let ring = &self.ring;
-        let pattern = |v: &Sym| v.point_signs();
         if let Some(sigma) = self.folded_sign()? {
             return Ok(sigma);
         }
         let varying = !self.is_exact_zero() && self.as_rational().is_none();
-        let own = pattern(self).filter(|own| varying && own.windows(2).any(|w| w[0] != w[1]));
         // products of sign symbols, fewest factors first
         let products = ring.sign_products()?;
-        if let Some(own) = own.filter(|_| !products.is_empty()) {
+        let own = (varying && !products.is_empty())
+            .then(|| self.point_signs())
+            .flatten()
+            .filter(|own| own.windows(2).any(|w| w[0] != w[1]));
+        if let Some(own) = own {
             for prod in products {
-                let Some(pp) = pattern(&prod) else { continue };
+                let Some(pp) = prod.point_signs() else {
+                    continue;
+                };
                 let ratio: Vec<i32> = own.iter().zip(&pp).map(|(a, b)| a * b).collect();
                 if ratio.windows(2).all(|w| w[0] == w[1]) {
                     let s = self.try_mul(&prod)?.sign()?;

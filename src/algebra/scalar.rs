@@ -152,25 +152,10 @@ impl Scalar for Sym {
     fn is_zero(&self) -> bool {
         self.is_exact_zero()
     }
-    /// `σ` where the ring carries this value's sign as the sign symbol `σ`
-    /// ([`crate::algebra::RingOptions::sign_folds`]); otherwise the stated sign.
-    fn stated_sign_value(&self) -> Result<Self, String> {
-        if let Some(sigma) = self.folded_sign().map_err(|e| e.to_string())? {
-            return Ok(sigma);
-        }
-        Ok(self.ring.integer(i64::from(self.stated_sign()?)))
-    }
-    /// `σ·x` where the ring carries this value's sign as the sign symbol `σ`; otherwise
-    /// by the stated sign.
-    fn stated_abs(&self) -> Result<Self, String> {
-        if let Some(sigma) = self.folded_sign().map_err(|e| e.to_string())? {
-            return Ok(sigma * self.clone());
-        }
-        Ok(if self.stated_sign()? < 0 {
-            -self.clone()
-        } else {
-            self.clone()
-        })
+    /// The sign symbol of a value whose sign the ring carries that way
+    /// ([`crate::algebra::RingOptions::sign_folds`]).
+    fn sign_symbol(&self) -> Result<Option<Self>, String> {
+        self.folded_sign().map_err(|e| e.to_string())
     }
     fn stated_sign(&self) -> Result<i32, String> {
         if self.is_exact_zero() {

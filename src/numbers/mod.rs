@@ -117,22 +117,32 @@ pub trait Scalar:
             0
         })
     }
-    /// The value of `sign(x)` in an expression language: [`Scalar::stated_sign`] as a
-    /// number.  A symbolic value may answer with a sign symbol `σ = sign(x)` where its
-    /// proof carries the sign of an indeterminate that way.
+    /// A symbol `σ = sign(x)` standing for this value's sign, where a symbolic backend
+    /// carries the sign of an indeterminate that way; `None` (the default, and always
+    /// for numbers) otherwise.
+    fn sign_symbol(&self) -> Result<Option<Self>, String> {
+        Ok(None)
+    }
+    /// The value of `sign(x)` in an expression language: [`Scalar::sign_symbol`] if
+    /// there is one, else [`Scalar::stated_sign`] as a number.
     fn stated_sign_value(&self) -> Result<Self, String>
     where
         Self: PartialOrd,
     {
+        if let Some(sigma) = self.sign_symbol()? {
+            return Ok(sigma);
+        }
         Ok(self.from_i64(i64::from(self.stated_sign()?)))
     }
-    /// The value of `abs(x)` in an expression language: `x` or `−x` by
-    /// [`Scalar::stated_sign`].  A symbolic value may answer `σ·x` where its proof
-    /// carries the sign of an indeterminate as a sign symbol `σ`.
+    /// The value of `abs(x)` in an expression language: `σ·x` for a
+    /// [`Scalar::sign_symbol`] `σ`, else `x` or `−x` by [`Scalar::stated_sign`].
     fn stated_abs(&self) -> Result<Self, String>
     where
         Self: PartialOrd,
     {
+        if let Some(sigma) = self.sign_symbol()? {
+            return Ok(sigma * self.clone());
+        }
         Ok(if self.stated_sign()? < 0 {
             -self.clone()
         } else {
