@@ -427,7 +427,10 @@ impl<'r, T: Backend> Evaluator<'r, T> {
         }
         let x = self.eval(a)?;
         let y = self.eval(b)?;
-        wrap(binary(op, &x, &y))
+        match (x, y) {
+            (Value::Real(p), Value::Real(q)) => wrap(real_binary(op, p, q)),
+            (x, y) => wrap(binary(op, &x, &y)),
+        }
     }
 
     /// `X * P * transpose(X)` or `transpose(X) * P * X` (`a * b`), with `X` a name and
@@ -687,6 +690,19 @@ impl<'r, T: Backend> Evaluator<'r, T> {
             }
             EvalError::at(format!("in function '{}': {}", f.def.name, e.message), sp)
         })
+    }
+}
+
+/// A binary operator on two reals, consuming them (the left operand's storage holds the
+/// result): the same values as [`binary`], with no copies of the operands.
+fn real_binary<T: Num>(op: BinOp, p: T, q: T) -> Result<Value<T>, String> {
+    match op {
+        BinOp::Add => Ok(Value::Real(p + q)),
+        BinOp::Sub => Ok(Value::Real(p - q)),
+        BinOp::Mul => Ok(Value::Real(p * q)),
+        BinOp::Div if q.is_zero() => Err("division by zero".into()),
+        BinOp::Div => Ok(Value::Real(p / q)),
+        _ => binary(op, &Value::Real(p), &Value::Real(q)),
     }
 }
 

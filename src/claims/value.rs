@@ -190,7 +190,19 @@ impl<T: Num> Value<T> {
     }
     /// Are all components finite?
     pub fn is_finite(&self) -> bool {
-        self.components().iter().all(|x| x.is_finite())
+        self.all_components(&mut |x: &T| x.is_finite())
+    }
+    /// Does `f` hold for every scalar component (complex parts included)?  Stops at
+    /// the first that fails; copies nothing, unlike [`Value::components`].
+    pub fn all_components(&self, f: &mut dyn FnMut(&T) -> bool) -> bool {
+        match self {
+            Value::Real(x) => f(x),
+            Value::Complex(z) => f(&z.re) && f(&z.im),
+            Value::Vec3(v) => v.0.iter().all(|x| f(x)),
+            Value::Mat3(m) => m.0.iter().flatten().all(|x| f(x)),
+            Value::CMat2(m) => m.0.iter().flatten().all(|z| f(&z.re) && f(&z.im)),
+            Value::Bool(_) => true,
+        }
     }
     /// Maps every scalar component (complex parts included).
     pub fn map<U: Num>(&self, f: &mut dyn FnMut(&T) -> U) -> Value<U> {
