@@ -198,8 +198,8 @@ impl<T: Num> Value<T> {
         match self {
             Value::Real(x) => f(x),
             Value::Complex(z) => f(&z.re) && f(&z.im),
-            Value::Vec3(v) => v.0.iter().all(|x| f(x)),
-            Value::Mat3(m) => m.0.iter().flatten().all(|x| f(x)),
+            Value::Vec3(v) => v.0.iter().all(&mut *f),
+            Value::Mat3(m) => m.0.iter().flatten().all(&mut *f),
             Value::CMat2(m) => m.0.iter().flatten().all(|z| f(&z.re) && f(&z.im)),
             Value::Bool(_) => true,
         }
@@ -386,5 +386,52 @@ impl<T: Num> Value<T> {
                 idx.len()
             )),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every value of each type with one component replaced by NaN or ∞.
+    fn values_with(bad: f64) -> Vec<Value<f64>> {
+        let mut out = Vec::new();
+        out.push(Value::Real(bad));
+        for j in 0..2 {
+            let p = [1.0, 2.0].map(|x| if j == 0 { bad } else { x });
+            let q = [1.0, 2.0].map(|x| if j == 1 { bad } else { x });
+            out.push(Value::Complex(Cplx::new(p[0], q[1])));
+        }
+        for j in 0..3 {
+            out.push(Value::Vec3(Vec3(std::array::from_fn(|i| {
+                if i == j { bad } else { 1.0 }
+            }))));
+        }
+        for j in 0..9 {
+            out.push(Value::Mat3(Mat3(std::array::from_fn(|r| {
+                std::array::from_fn(|c| if 3 * r + c == j { bad } else { 1.0 })
+            }))));
+        }
+        for j in 0..8 {
+            out.push(Value::CMat2(Mat2(std::array::from_fn(|r| {
+                std::array::from_fn(|c| {
+                    let at = |part: usize| if 4 * r + 2 * c + part == j { bad } else { 0.5 };
+                    Cplx::new(at(0), at(1))
+                })
+            }))));
+        }
+        out
+    }
+
+    #[test]
+    fn is_finite_sees_every_component_as_components_lists_them() {
+        for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 3.0] {
+            for v in values_with(bad) {
+                let listed = v.components().iter().all(|x| x.is_finite());
+                assert_eq!(v.is_finite(), listed, "{v:?}");
+                assert_eq!(listed, bad.is_finite(), "{v:?}");
+            }
+        }
+        assert!(Value::<f64>::Bool(true).is_finite());
     }
 }
