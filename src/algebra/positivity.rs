@@ -374,7 +374,23 @@ impl Sym {
             // a certificate names the value of every proved sign by its derivation
             return None;
         }
-        let images = self.ring.sign_images(&par, &self.val.num)?;
+        // a certificate records the value of each proved sign as it is first derived:
+        // the memo serves proofs without one
+        let memo = !self.ring.certifying();
+        let key = (self.val.num.clone(), self.val.den.clone());
+        if memo && let Some(known) = self.ring.state().sign_memo.get(&key) {
+            return *known;
+        }
+        let s = self.sign_by_parametrization(&par);
+        if memo {
+            self.ring.state().sign_memo.insert(key, s);
+        }
+        s
+    }
+
+    /// [`Sym::proved_sign`] computed: the test, the agreement with the points, the note.
+    fn sign_by_parametrization(&self, par: &Parametrization) -> Option<i32> {
+        let images = self.ring.sign_images(par, &self.val.num)?;
         let s = par.sign_of(&self.val.num, &self.val.den, &images)?;
         // the points lie in the parametrized domain: their signs must agree
         let prec = self.ring.precision();

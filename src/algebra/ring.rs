@@ -239,6 +239,9 @@ pub(crate) struct State {
     /// The sign symbols made for [`RingOptions::sign_folds`]: the folded value (rendered),
     /// the symbol's name and root index, and `σ·x` rendered (positive by definition).
     pub folded: Vec<Folded>,
+    /// The outcome of the sign test with the parametrization of the domain, by value
+    /// (numerator, denominator); emptied when a root's values change.
+    pub sign_memo: std::collections::HashMap<(Poly, Poly), Option<i32>>,
 }
 
 /// A sign symbol `σ = sign(x)` made for a folded value `x` (see
@@ -320,6 +323,7 @@ impl Ring {
             undecided: None,
             values_table: None,
             folded: Vec::new(),
+            sign_memo: std::collections::HashMap::new(),
         };
         Ring {
             inner: Arc::new(Inner {
