@@ -171,12 +171,7 @@ impl Ring {
                 p + 1
             ),
             None => {
-                let named = self
-                    .state()
-                    .vars
-                    .iter()
-                    .any(|v| matches!(v.kind, VarKind::Named(_)));
-                let why = if named {
+                let why = if self.has_named() {
                     "named quantities may need their definitions"
                 } else {
                     "the tower may have zero divisors, or the identity needs a relation the prover does not know"
@@ -190,10 +185,17 @@ impl Ring {
     }
 }
 
+impl Ring {
+    /// Does the ring hold a named quantity as a free symbol ([`Ring::named`])?
+    fn has_named(&self) -> bool {
+        (self.state().vars.iter()).any(|v| matches!(v.kind, VarKind::Named(_)))
+    }
+}
+
 /// Proves `lhs = rhs` built by `build` on a fresh ring, restarting when the elliptic
 /// base arguments must be refined or the ring's capacity runs out, and once more with
-/// named quantities replaced by their definitions if the normal form is not 0.  `ms`
-/// covers every evaluation.
+/// named quantities replaced by their definitions if the normal form is not 0 or the
+/// attempt with them stopped with an error.  `ms` covers every evaluation.
 ///
 /// ```
 /// use eulertop::algebra::{prove_identity, RingOptions};
@@ -309,6 +311,12 @@ where
         }
         let pairs = match built {
             Ok(p) => p,
+            // a free symbol may have stopped the attempt (a sign that only its
+            // definition proves): the definitions are tried as after a nonzero form
+            Err(_) if !opts.expand_named && ring.has_named() => {
+                opts.expand_named = true;
+                continue;
+            }
             Err(e) => {
                 let mut p = Proof::failed(e.to_string(), ms(&t0), attempts);
                 p.split = ring.undecided_sign();
@@ -316,12 +324,7 @@ where
             }
         };
         let mut proof = ring.prove_all(&pairs);
-        let named = ring
-            .state()
-            .vars
-            .iter()
-            .any(|v| matches!(v.kind, VarKind::Named(_)));
-        if !proof.is_proved() && named && !opts.expand_named {
+        if !proof.is_proved() && ring.has_named() && !opts.expand_named {
             opts.expand_named = true;
             continue;
         }

@@ -559,3 +559,26 @@ fn an_argument_that_needs_a_multiple_of_a_base_restarts_on_a_cheaper_basis() {
         .collect();
     assert!(multiples.is_empty(), "{multiples:?}");
 }
+
+/// A named quantity is a free symbol first; when that attempt stops with an error (here
+/// the sign of `k = √x`, which the parametrization proves only through the definition),
+/// the proof is tried again with the definition, as after a nonzero normal form.
+#[test]
+fn a_named_attempt_that_stops_with_an_error_retries_with_the_definitions() {
+    use eulertop::algebra::positivity::Parametrization;
+    let mut par = Parametrization::new();
+    let t = par.positive("t1").expect("a parameter");
+    par.bind("x", t, "x = t1".into());
+    let opts = RingOptions {
+        positivity: Some(std::sync::Arc::new(par)),
+        ..Default::default()
+    };
+    let proof = prove_identity(opts, "k·sign(k) = k for k = √x", |r| {
+        let x = r.indeterminate_f64("x", &[0.5, 1.5, 2.5])?;
+        let k = r.named("k", &x.sqrt()?)?;
+        let s = k.stated_sign().map_err(AlgebraError::Domain)?;
+        Ok((&k * &r.integer(i64::from(s)), k.clone()))
+    });
+    assert!(proof.is_proved(), "{:?}", proof.outcome);
+    assert!(proof.expanded_named);
+}
