@@ -183,9 +183,7 @@ impl Ring {
         };
         Ok(Outcome::NotProved(reason))
     }
-}
 
-impl Ring {
     /// Does the ring hold a named quantity as a free symbol ([`Ring::named`])?
     fn has_named(&self) -> bool {
         (self.state().vars.iter()).any(|v| matches!(v.kind, VarKind::Named(_)))
