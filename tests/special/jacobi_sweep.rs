@@ -1,10 +1,12 @@
 //! Dense sweep of the f64 Jacobi functions `sncndn(&u, &k)` (fdlibm kernel, Cody–Waite
 //! reduction, nome series after a short Landen chain, imaginary-argument series for `k`
-//! near 1) against the 128-bit MPFR evaluation of the same function at the same exact
+//! near 1) against the 80-bit MPFR evaluation of the same function at the same exact
 //! inputs (a different algorithm: full Landen chain with DLMF 22.10.4–6 at the bottom
 //! and adaptive multi-precision reduction, itself checked against mpmath in
-//! tests/special/jacobi_real.rs; its error, at most 0.25·2⁻¹²⁷ absolute, is negligible
-//! against the bound 2⁻⁵¹).
+//! tests/special/jacobi_real.rs; its error, at most 2⁻⁷⁶ absolute, is negligible
+//! against the bound 2⁻⁵¹).  Arguments next to multiples of `K` are formed at 128 bits,
+//! and the relative accuracy of cn next to its zeros, where an absolute reference error
+//! would count up to 2⁴⁹ times, is measured against 128-bit values.
 //!
 //! * absolute error ≤ 2⁻⁵¹ for each of sn, cn, dn for `|u| ≤ 64·K(k)` (the accuracy
 //!   requirement: 4 ulp of 1), on a uniform grid of 20 001 points per modulus and on a
@@ -17,8 +19,13 @@ use eulertop::special::{ellipk, sncndn};
 use rayon::prelude::*;
 use rug::Float;
 
-/// Bits of the reference evaluation.
-const REF: u32 = 128;
+/// Bits of the reference evaluation for absolute errors: its error bound `2^(4−80)`
+/// is `2⁻²⁵` of the tested bound, so the printed maxima are those of any higher precision.
+const REF: u32 = 80;
+
+/// Bits at which arguments next to multiples of `K` are formed, and of the reference
+/// for relative errors.
+const FORM: u32 = 128;
 
 /// The moduli of the sweep: small, moderate, the Landen/series switch points and the
 /// imaginary-argument regime (`k ≳ 0.986`) down to `1 − 10⁻¹²`.
@@ -46,11 +53,11 @@ fn bound() -> f64 {
     2f64.powi(-51)
 }
 
-/// Absolute errors of f64 `(sn, cn, dn)(u, k)` against the 128-bit evaluation.
+/// Absolute errors of f64 `(sn, cn, dn)(u, k)` against the 80-bit evaluation.
 fn errors(u: f64, k: f64) -> [f64; 3] {
     let got = sncndn(&u, &k).unwrap_or_else(|e| panic!("f64 sncndn(u = {u:e}, k = {k}): {e}"));
     let (rs, rc, rd) = sncndn(&Float::with_val(REF, u), &Float::with_val(REF, k))
-        .unwrap_or_else(|e| panic!("128-bit sncndn(u = {u:e}, k = {k}): {e}"));
+        .unwrap_or_else(|e| panic!("{REF}-bit sncndn(u = {u:e}, k = {k}): {e}"));
     let e = |g: f64, w: &Float| Float::with_val(REF, g - w).abs().to_f64();
     [e(got.0, &rs), e(got.1, &rc), e(got.2, &rd)]
 }
@@ -121,18 +128,18 @@ fn grid_near_quadrant_boundaries_abs_error() {
     let mut rows = Vec::new();
     let mut bad = Vec::new();
     for k in KS {
-        let kk = ellipk(&Float::with_val(REF, k)).unwrap();
+        let kk = ellipk(&Float::with_val(FORM, k)).unwrap();
         let mut us = Vec::new();
         for twice_j in -128i32..=128 {
             // u/K = twice_j / 2: multiples of K and the quadrant boundaries (j + ½)K
-            let base = Float::with_val(REF, &kk * twice_j) / 2u32;
+            let base = Float::with_val(FORM, &kk * twice_j) / 2u32;
             let near = base.to_f64();
             us.extend([near.next_down().next_down(), near.next_down(), near]);
             us.extend([near.next_up(), near.next_up().next_up()]);
             for rel in [2f64.powi(-45), 2f64.powi(-30), 2f64.powi(-15), 1e-3] {
                 for sign in [-1.0, 1.0] {
-                    let delta = Float::with_val(REF, &kk * (sign * rel));
-                    us.push(Float::with_val(REF, &base + &delta).to_f64());
+                    let delta = Float::with_val(FORM, &kk * (sign * rel));
+                    us.push(Float::with_val(FORM, &base + &delta).to_f64());
                 }
             }
         }
@@ -150,18 +157,19 @@ fn cn_relative_accuracy_next_to_zeros() {
     let tol = 8.0 * 2f64.powi(-53);
     let mut bad = Vec::new();
     for k in KS {
-        let kk = ellipk(&Float::with_val(REF, k)).unwrap();
+        let kk = ellipk(&Float::with_val(FORM, k)).unwrap();
         let mut worst = (0.0f64, 0.0f64);
         for odd in (-63i32..=63).step_by(2) {
             for sign in [-1.0, 1.0] {
-                let f = Float::with_val(REF, 1) + Float::with_val(REF, Float::u_exp(1, -30)) * sign;
-                let u: Float = Float::with_val(REF, &kk * odd) * f;
+                let f =
+                    Float::with_val(FORM, 1) + Float::with_val(FORM, Float::u_exp(1, -30)) * sign;
+                let u: Float = Float::with_val(FORM, &kk * odd) * f;
                 let u = u.to_f64();
                 let (_, c, _) = sncndn(&u, &k).unwrap();
                 let (_, rc, _) =
-                    sncndn(&Float::with_val(REF, u), &Float::with_val(REF, k)).unwrap();
+                    sncndn(&Float::with_val(FORM, u), &Float::with_val(FORM, k)).unwrap();
                 assert!(!rc.is_zero());
-                let rel = (Float::with_val(REF, c - &rc).abs() / rc.clone().abs()).to_f64();
+                let rel = (Float::with_val(FORM, c - &rc).abs() / rc.clone().abs()).to_f64();
                 if rel > worst.0 {
                     worst = (rel, u);
                 }
@@ -169,7 +177,7 @@ fn cn_relative_accuracy_next_to_zeros() {
                     bad.push(format!(
                         "k = {k:?} u = {u:?} ({:#x}), (2j+1) = {odd}, sign {sign}: cn = {c:e}, ref {:e}, rel error {:.2}·2^-53",
                         u.to_bits(),
-                        Float::with_val(REF, &rc).to_f64(),
+                        Float::with_val(FORM, &rc).to_f64(),
                         rel * 2f64.powi(53)
                     ));
                 }
