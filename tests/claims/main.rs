@@ -1,6 +1,11 @@
 //! Integration tests of the claims engine: verdicts on synthetic catalogues, the fuzzed
 //! lexer, parser, loader and evaluator, and the coverage of the paper's labels.
 
+/// The allocator of the `eulertop` binary (mimalloc, serving GMP and FLINT too), so that
+/// the tests run the product's configuration.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 mod claims_engine;
 mod conditions;
 mod coverage;

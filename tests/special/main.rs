@@ -1,6 +1,11 @@
 //! Integration tests of the special functions and the number kernels: accuracy against
 //! the reference tables of tests/data (mpmath, python-flint), properties, and sweeps.
 
+/// The allocator of the `eulertop` binary (mimalloc, serving GMP and FLINT too), so that
+/// the tests run the product's configuration.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 #[path = "../common/mod.rs"]
 mod common;
 
