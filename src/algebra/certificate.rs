@@ -2,7 +2,7 @@
 //! `scripts/recheck-certificates.py`) rechecks step by step.
 //!
 //! When a ring records certificates, every value keeps the operation that made it
-//! (a DAG of [`Node`]s).  The certificate lists, one statement a line:
+//! (a DAG of nodes, module `node`).  The certificate lists, one statement a line:
 //!
 //! ```text
 //! field A indeterminate            # a field variable and its kind (sn, zeta, K, Kp, named, …)

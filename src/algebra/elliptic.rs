@@ -7,7 +7,7 @@
 //! bases.  An argument outside their rational span becomes a new base; one inside the
 //! span with non-integer coefficients (e.g. `φ/2` after `φ`) gets a provisional base and
 //! asks for a restart with a refined base table (a lattice basis of all arguments seen,
-//! module [`super::lattice`]).
+//! module `lattice`).
 //!
 //! Each base gets a transcendental `s = sn bⱼ` and roots `c`, `d` with `c² = 1 − s²`,
 //! `d² = 1 − k²s²` whose values at the points are `cn bⱼ`, `dn bⱼ` (computed by

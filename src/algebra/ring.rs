@@ -35,7 +35,7 @@ pub struct RingOptions {
     pub certificate: bool,
     /// Replace named quantities by their definitions instead of free symbols.
     pub expand_named: bool,
-    /// The size bound of intermediate values, in terms (see [`MAX_TERMS`]).
+    /// The size bound of intermediate values, in terms (by default `MAX_TERMS`).
     pub max_terms: usize,
     /// Base arguments of the elliptic functions to start from (see
     /// [`crate::algebra::prove_identity`], which fills this in on a restart).

@@ -30,10 +30,10 @@ use crate::numbers::Real;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Stepper {
     /// The implicit map (impl spec) with this γ, solved by Newton's method
-    /// ([`step`](super::discretization::step)).
+    /// ([`super::discretization::step`]).
     Implicit(Gamma),
     /// The Veselov–Moser matrix algorithm: (M thru omega) solved for `ω`, then (VM)
-    /// `M̂ = ωᵀMω` ([`vm_step`](super::veselov_moser::vm_step)).
+    /// `M̂ = ωᵀMω` ([`super::veselov_moser::vm_step`]).
     Matrix,
 }
 

@@ -1,6 +1,6 @@
 //! The names the language knows without a catalogue: built-in functions ([`Builtin`])
 //! and the random primitives of samplers ([`Primitive`]).  Each is declared once, in
-//! [`names`] and [`primitives`]; the evaluator ([`apply`]), the load-time checker, the
+//! [`names`] and [`primitives`]; the evaluator ([`mod@apply`]), the load-time checker, the
 //! LaTeX writer and the tables of `identities/README.md` read those declarations.
 //!
 //! ```

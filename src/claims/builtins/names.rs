@@ -219,7 +219,7 @@ name_table! {
         I2 = "I2"(""): Exact(0), "→ cmat2", Linear, Symbol("I");
         /// diagonal matrix with diagonal v; also diag(a, b, c)
         Diag = "diag"("v"): OneOf(&[1, 3]), "vec3 → mat3; real, real, real → mat3", Linear, Name;
-        /// Pauli matrix σ_j: σ1 = [[0,1],[1,0]], σ2 = [[0,−i],[i,0]], σ3 = [[1,0],[0,−1]]
+        /// Pauli matrix σ_j: σ1 = `[[0,1],[1,0]]`, σ2 = `[[0,−i],[i,0]]`, σ3 = `[[1,0],[0,−1]]`
         Pauli = "pauli"("j"): Exact(1), "integer 1, 2, 3 → cmat2", Linear, Wrap("\\sigma_{", "}");
         /// the standard hat: skew(v)·x = v × x
         Skew = "skew"("v"): Exact(1), "vec3 → mat3", Linear, Name;

@@ -1,6 +1,6 @@
 //! Loads the claim catalogue (`identities/*.toml`, format in `identities/README.md`).
 //!
-//! The TOML is read into raw serde structs ([`raw`]), each claim is built with its
+//! The TOML is read into raw serde structs (module `raw`), each claim is built with its
 //! defaults ([`defaults`]) and kind-specific fields ([`build`]), and the whole
 //! catalogue is checked: names and arities ([`check`]), the paper's structure
 //! ([`structure`]).  Every problem is a [`LoadError`] rendered as

@@ -5,7 +5,7 @@
 //! fitted slope and both local slopes are ≥ thr and the last local slope does not drift
 //! below the order (it is ≥ order, or no smaller than the one before); it is below if
 //! the fitted slope and the last local slope are both < thr.  The claim holds if every
-//! sample passes at every [judged](super::ladder::judged) rung, is refuted if at every
+//! sample passes at every [judged] rung, is refuted if at every
 //! judged rung some sample is below, and is inconclusive otherwise.  The rung's value is
 //! the smallest fitted slope over the samples.
 //!

@@ -4,7 +4,7 @@
 //! log2.  r_p = max over samples; g = max_p (p + log2 r_p) is the number of bits lost to
 //! conditioning.
 //! * holds: g ≤ max_loss_bits;
-//! * refuted: r_p ≥ 2^(−refute_floor_bits) at every [judged](judged) rung;
+//! * refuted: r_p ≥ 2^(−refute_floor_bits) at every [judged] rung;
 //! * inconclusive: otherwise.
 //!
 //! The judged rungs — those of at least 128 bits, or all when there are none — are the
