@@ -118,10 +118,7 @@ pub fn load_sources(
 ) -> Result<Catalogue, LoadError> {
     let mut a = Assembly::default();
     for (name, text) in sources {
-        let file = Arc::new(SourceFile {
-            name: name.clone(),
-            text: text.clone(),
-        });
+        let file = Arc::new(SourceFile::new(name.clone(), text.clone()));
         load_file(&file, &mut a)?;
     }
     for (b, origin) in &a.defs {

@@ -69,9 +69,38 @@ pub struct SourceFile {
     pub name: String,
     /// Contents.
     pub text: String,
+    /// The byte offset of each line's start, found on the first position asked.
+    line_starts: std::sync::OnceLock<Vec<usize>>,
 }
 
 impl SourceFile {
+    /// A file named `name` with contents `text`.
+    ///
+    /// ```
+    /// use eulertop::claims::catalogue::SourceFile;
+    /// let f = SourceFile::new("t.toml", "a = 1\nb = 2\n");
+    /// assert_eq!(f.position(8), "t.toml:2");
+    /// ```
+    pub fn new(name: impl Into<String>, text: impl Into<String>) -> SourceFile {
+        SourceFile {
+            name: name.into(),
+            text: text.into(),
+            line_starts: std::sync::OnceLock::new(),
+        }
+    }
+
+    /// The 1-based line of byte `s` (a character boundary) and the offset of its start.
+    fn line_of(&self, s: usize) -> (usize, usize) {
+        let starts = self.line_starts.get_or_init(|| {
+            std::iter::once(0)
+                .chain(self.text.match_indices('\n').map(|(j, _)| j + 1))
+                .collect()
+        });
+        // the lines starting at or before s; the first line starts at 0, so at least one
+        let line = starts.partition_point(|&ls| ls <= s);
+        (line, starts[line - 1])
+    }
+
     /// An error at byte range `[start, end)` of the file.
     pub fn error_at(&self, start: usize, end: usize, message: impl Into<String>) -> LoadError {
         let start = start.min(self.text.len());
@@ -79,9 +108,8 @@ impl SourceFile {
         while !self.text.is_char_boundary(s) {
             s -= 1;
         }
-        let line_start = self.text[..s].rfind('\n').map_or(0, |j| j + 1);
+        let (line, line_start) = self.line_of(s);
         let line_end = self.text[s..].find('\n').map_or(self.text.len(), |j| s + j);
-        let line = self.text[..s].matches('\n').count() + 1;
         let col = self.text[line_start..s].chars().count() + 1;
         let end = end.clamp(s, line_end.max(s));
         let mut e = end;
@@ -99,8 +127,11 @@ impl SourceFile {
     }
     /// `file:line` of byte `at`.
     pub fn position(&self, at: usize) -> String {
-        let e = self.error_at(at, at, "");
-        format!("{}:{}", e.file, e.line)
+        let mut s = at.min(self.text.len());
+        while !self.text.is_char_boundary(s) {
+            s -= 1;
+        }
+        format!("{}:{}", self.name, self.line_of(s).0)
     }
 }
 
@@ -229,12 +260,28 @@ mod tests {
         );
     }
 
+    /// Lines and columns from the line index agree with counting from the start, at
+    /// every character boundary (multi-byte characters, empty lines, a last line
+    /// without its newline, the end of the text).
+    #[test]
+    fn the_line_index_agrees_with_counting() {
+        let text = "a = 1\n\nβ = \"γδ\"\n  x\r\n é\nend";
+        let f = SourceFile::new("f", text);
+        for s in (0..=text.len()).filter(|&s| text.is_char_boundary(s)) {
+            let line = text[..s].matches('\n').count() + 1;
+            let line_start = text[..s].rfind('\n').map_or(0, |j| j + 1);
+            let col = text[line_start..s].chars().count() + 1;
+            let e = f.error_at(s, s, "");
+            assert_eq!((e.line, e.col), (line, col), "byte {s}");
+            assert_eq!(f.position(s), format!("f:{line}"), "byte {s}");
+        }
+        // past the end: the end of the text
+        assert_eq!(f.position(text.len() + 5), format!("f:{}", 6));
+    }
+
     #[test]
     fn positions_count_characters() {
-        let f = SourceFile {
-            name: "f".into(),
-            text: "x = 1\ny = \"αβ\" + z\n".into(),
-        };
+        let f = SourceFile::new("f", "x = 1\ny = \"αβ\" + z\n");
         let at = f.text.find('z').unwrap();
         let e = f.error_at(at, at + 1, "unknown");
         assert_eq!((e.line, e.col, e.width), (2, 12, 1));
