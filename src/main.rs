@@ -45,11 +45,19 @@ fn main() -> ExitCode {
     eulertop::allocator::small_pages();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
-        // help and version (exit 0) go to standard output, usage errors (exit 2) to
-        // standard error; a failed write of either exits with status 2
-        Err(e) => {
+        // help and version (exit 0) go to standard output, the help asked for by no
+        // command at all to standard error (exit 2); a failed write exits with status 2
+        Err(e)
+            if !e.use_stderr()
+                || e.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand =>
+        {
             let code = if e.print().is_ok() { e.exit_code() } else { 2 };
             return ExitCode::from(u8::try_from(code).unwrap_or(2));
+        }
+        // a usage error: one line on standard error, status 2
+        Err(e) => {
+            let _ = writeln!(std::io::stderr(), "eulertop: {}", usage_error(&e));
+            return ExitCode::from(2);
         }
     };
     let result: Result<i32, eulertop::cli::CliError> = match cli.command {
@@ -70,6 +78,31 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// clap's message for a usage error on one line: the message with the lines that
+/// continue it (the missing arguments, say) and clap's tips, without the usage block.
+fn usage_error(e: &clap::Error) -> String {
+    let text = e.render().to_string();
+    let mut parts: Vec<String> = Vec::new();
+    let mut tips: Vec<String> = Vec::new();
+    let mut in_message = true;
+    for line in text.lines() {
+        let t = line.trim();
+        if t.is_empty() {
+            in_message = false;
+        } else if let Some(tip) = t.strip_prefix("tip: ") {
+            tips.push(tip.to_string());
+        } else if in_message {
+            parts.push(t.strip_prefix("error: ").unwrap_or(t).to_string());
+        }
+    }
+    let mut line = parts.join(" ");
+    for tip in tips {
+        line.push_str(&format!("; {tip}"));
+    }
+    line.push_str(" (eulertop --help lists the commands and options)");
+    line
 }
 
 #[cfg(test)]

@@ -523,3 +523,27 @@ fn row13_errors_without_position_have_no_empty_excerpt() {
     let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
     assert_data_error(&o, &["t.toml:", "nosuch"], "unknown domain");
 }
+
+// -- row 14: malformed command lines -------------------------------------------------
+
+/// A malformed command line is a usage error on one line that names the cause (clap's
+/// message with its continuation and tips); help and version still print in full.
+#[test]
+fn row14_usage_errors_are_one_line() {
+    let o = run(&["verify", "--jobs", "abc"]);
+    assert_one_line_error(&o, &["--jobs", "abc"], "malformed --jobs");
+    let o = run(&["eval", "1", "--bits", "4294967296"]);
+    assert_one_line_error(&o, &["--bits", "4294967296"], "--bits beyond u32");
+    let o = run(&["step", "--h", "0.1", "1", "2", "3"]);
+    assert_one_line_error(&o, &["required", "--inertia"], "missing --inertia");
+    let o = run(&["frobnicate"]);
+    assert_one_line_error(&o, &["frobnicate", "orbit"], "unknown command with a tip");
+    let o = run(&["verify", "--nope"]);
+    assert_one_line_error(&o, &["--nope"], "unknown option");
+    let o = run(&["--help"]);
+    assert_eq!(o.code, Some(0), "--help: {}", o.stderr);
+    assert!(o.stdout.contains("Usage: eulertop"), "{}", o.stdout);
+    let o = run(&[]);
+    assert_eq!(o.code, Some(2), "no command: {}", o.stderr);
+    assert!(o.stderr.contains("Usage: eulertop"), "{}", o.stderr);
+}
