@@ -77,7 +77,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         Body::Independence { expr, wrt, .. } => derivative_sides(expr, wrt),
         _ => {
             return Err(CliError(format!(
-                "claim '{}' is a {}, and only identities and independence claims are proved symbolically",
+                "claim '{}' is of kind {}, and only identities and independence claims are proved symbolically",
                 claim.id,
                 claim.kind.name()
             )));
