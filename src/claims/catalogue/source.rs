@@ -103,19 +103,11 @@ impl SourceFile {
 
     /// An error at byte range `[start, end)` of the file.
     pub fn error_at(&self, start: usize, end: usize, message: impl Into<String>) -> LoadError {
-        let start = start.min(self.text.len());
-        let mut s = start;
-        while !self.text.is_char_boundary(s) {
-            s -= 1;
-        }
+        let s = self.text.floor_char_boundary(start);
         let (line, line_start) = self.line_of(s);
         let line_end = self.text[s..].find('\n').map_or(self.text.len(), |j| s + j);
         let col = self.text[line_start..s].chars().count() + 1;
-        let end = end.clamp(s, line_end.max(s));
-        let mut e = end;
-        while !self.text.is_char_boundary(e) {
-            e -= 1;
-        }
+        let e = self.text.floor_char_boundary(end.clamp(s, line_end.max(s)));
         LoadError {
             file: self.name.clone(),
             line,
@@ -127,10 +119,7 @@ impl SourceFile {
     }
     /// `file:line` of byte `at`.
     pub fn position(&self, at: usize) -> String {
-        let mut s = at.min(self.text.len());
-        while !self.text.is_char_boundary(s) {
-            s -= 1;
-        }
+        let s = self.text.floor_char_boundary(at);
         format!("{}:{}", self.name, self.line_of(s).0)
     }
 }
