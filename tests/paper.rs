@@ -161,8 +161,9 @@ fn main() {
         check_environments(&whole)
     }));
     let results = Arc::new(Results::default());
-    // `--list` shows the paper's order; a run takes the likely slowest claims first, as
-    // `eulertop verify` does, so that no thread idles at the end
+    // `--list` shows the paper's order; a run lists the trials in the order the
+    // background verification takes the claims (the likely slowest first), so that the
+    // results are reported as they arrive
     let all: Vec<&Claim> = cat.claims.iter().collect();
     let order: Vec<usize> = if args.list {
         (0..all.len()).collect()
