@@ -414,24 +414,36 @@ fn a_ring_that_runs_out_of_symbols_is_rebuilt_larger() {
     assert!(matches!(xs[4], Err(AlgebraError::Capacity(_))));
 }
 
+/// Recording, rendering and dropping a derivation walk it without recursion.  The
+/// chain is 50 000 additions deep and runs on a thread with a 256 KiB stack: a
+/// recursive walk would need at least 16 bytes per level (a return address and one
+/// saved register), 800 KB in all, and would overflow it three times over.
 #[test]
 fn long_derivations_are_recorded_and_dropped_without_recursion() {
-    // 200 000 sequential additions: the certificate DAG is that deep
-    let r = Ring::new(RingOptions {
-        certificate: true,
-        ..Default::default()
-    });
-    let x = var(&r, "x", [0.5, 1.5, 2.5]);
-    let mut acc = r.integer(0);
-    for _ in 0..200_000 {
-        acc = &acc + &x;
-    }
-    let expect = &x * &r.integer(200_000);
-    let cert = r
-        .certificate(&[(acc.clone(), expect.clone())], "long")
-        .expect("recorded");
-    assert!(cert.lines().count() > 200_000);
-    drop(acc);
+    const DEPTH: i64 = 50_000;
+    let body = || {
+        let r = Ring::new(RingOptions {
+            certificate: true,
+            ..Default::default()
+        });
+        let x = var(&r, "x", [0.5, 1.5, 2.5]);
+        let mut acc = r.integer(0);
+        for _ in 0..DEPTH {
+            acc = &acc + &x;
+        }
+        let expect = &x * &r.integer(DEPTH);
+        let cert = r
+            .certificate(&[(acc.clone(), expect.clone())], "long")
+            .expect("recorded");
+        assert!(cert.lines().count() > DEPTH as usize);
+        drop(acc);
+    };
+    std::thread::Builder::new()
+        .stack_size(256 << 10)
+        .spawn(body)
+        .expect("a thread")
+        .join()
+        .expect("no overflow and no failed assertion");
 }
 
 /// `(x + 2²²⁰) − 2²²⁰` is `x` exactly, but its shadow has lost about 220 of its 256
