@@ -64,8 +64,11 @@ mod imp {
     /// The CPUID vendor and family (with the extended family added, as `fat.c` does).
     fn vendor_family() -> ([u8; 12], u32) {
         use std::arch::x86_64::__cpuid;
-        // SAFETY: CPUID leaves 0 and 1 exist on every x86-64 processor.
-        let (l0, l1) = (__cpuid(0), __cpuid(1));
+        // SAFETY: CPUID leaves 0 and 1 exist on every x86-64 processor.  (`__cpuid` is
+        // a safe function in current Rust and unsafe in earlier releases such as 1.91:
+        // the block serves both.)
+        #[allow(unused_unsafe)]
+        let (l0, l1) = unsafe { (__cpuid(0), __cpuid(1)) };
         let mut vendor = [0u8; 12];
         vendor[0..4].copy_from_slice(&l0.ebx.to_le_bytes());
         vendor[4..8].copy_from_slice(&l0.edx.to_le_bytes());
