@@ -376,15 +376,15 @@ impl Sym {
         }
         // a certificate records the value of each proved sign as it is first derived:
         // the memo serves proofs without one
-        let memo = !self.ring.certifying();
+        if self.ring.certifying() {
+            return self.sign_by_parametrization(&par);
+        }
         let key = (self.val.num.clone(), self.val.den.clone());
-        if memo && let Some(known) = self.ring.state().sign_memo.get(&key) {
+        if let Some(known) = self.ring.state().sign_memo.get(&key) {
             return *known;
         }
         let s = self.sign_by_parametrization(&par);
-        if memo {
-            self.ring.state().sign_memo.insert(key, s);
-        }
+        self.ring.state().sign_memo.insert(key, s);
         s
     }
 
