@@ -38,16 +38,7 @@ pub(crate) struct FixedModulus<R> {
 pub(crate) fn sncndn_fixed<R: Real>(u: &R, spec: Spec<'_, R>) -> Result<(R, R, R), SpecialError> {
     if R::PLAIN_F64 {
         let uf = u.to_f64();
-        let (s, c, d) = spec.with_f64(
-            #[inline(always)]
-            |sf| {
-                FixedModulus::with_cached(
-                    sf,
-                    #[inline(always)]
-                    |fm| fm.eval(&uf),
-                )
-            },
-        )?;
+        let (s, c, d) = spec.with_f64(|sf| sncndn_cached_f64(uf, sf))?;
         return Ok((u.from_f64(s), u.from_f64(c), u.from_f64(d)));
     }
     with_fma(
@@ -59,6 +50,36 @@ pub(crate) fn sncndn_fixed<R: Real>(u: &R, spec: Spec<'_, R>) -> Result<(R, R, R
 /// An error with the index of the argument it is about.
 pub(crate) type AtIndex = (usize, SpecialError);
 
+/// The `f64` path of [`sncndn_fixed`]: the cached data of `sf` and the evaluation,
+/// compiled into the FMA clone.  Not generic and never inlined, so that it is compiled
+/// once, in this crate, and not again in every crate that calls the generic entry
+/// points (the whole fixed-precision path is `#[inline(always)]`; in the merged
+/// documentation examples these copies were a third of the generated code).
+#[inline(never)]
+fn sncndn_cached_f64(u: f64, sf: Spec<'_, f64>) -> Result<(f64, f64, f64), SpecialError> {
+    FixedModulus::with_cached(
+        sf,
+        #[inline(always)]
+        |fm| fm.eval(&u),
+    )
+}
+
+/// The `f64` path of [`sncndn_fixed_many`]; compiled once, as [`sncndn_cached_f64`] is.
+#[inline(never)]
+fn sncndn_cached_f64_many(us: &[f64], sf: Spec<'_, f64>) -> Result<Vec<(f64, f64, f64)>, AtIndex> {
+    FixedModulus::with_cached(
+        sf,
+        #[inline(always)]
+        |fm| {
+            let mut out = Vec::with_capacity(us.len());
+            for (i, u) in us.iter().enumerate() {
+                out.push(fm.eval(u).map_err(|e| (i, e))?);
+            }
+            Ok(out)
+        },
+    )
+}
+
 /// [`sncndn_fixed`] for every `u` of `us` with one modulus, looked up once; an error
 /// comes with the index of its argument.
 #[inline(always)]
@@ -66,26 +87,18 @@ pub(crate) fn sncndn_fixed_many<R: Real>(
     us: &[R],
     spec: Spec<'_, R>,
 ) -> Result<Vec<(R, R, R)>, AtIndex> {
-    let mut out = Vec::with_capacity(us.len());
     if R::PLAIN_F64 {
-        spec.with_f64(|sf| {
-            FixedModulus::with_cached(
-                sf,
-                #[inline(always)]
-                |fm| {
-                    for (i, u) in us.iter().enumerate() {
-                        let (s, c, d) = fm.eval(&u.to_f64()).map_err(|e| (i, e))?;
-                        out.push((u.from_f64(s), u.from_f64(c), u.from_f64(d)));
-                    }
-                    Ok(())
-                },
-            )
-        })?;
-        return Ok(out);
+        // `R` is `f64`: both conversions are copies
+        let uf: Vec<f64> = us.iter().map(|u| u.to_f64()).collect();
+        let v = spec.with_f64(|sf| sncndn_cached_f64_many(&uf, sf))?;
+        let back =
+            |((s, c, d), u): ((f64, f64, f64), &R)| (u.from_f64(s), u.from_f64(c), u.from_f64(d));
+        return Ok(v.into_iter().zip(us).map(back).collect());
     }
     with_fma(
         #[inline(always)]
         || {
+            let mut out = Vec::with_capacity(us.len());
             let fm = FixedModulus::new(spec);
             for (i, u) in us.iter().enumerate() {
                 out.push(fm.eval(u).map_err(|e| (i, e))?);
