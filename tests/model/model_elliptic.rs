@@ -281,9 +281,9 @@ fn phase_residual(
 /// Above `LADDER_BITS` the phase step starts Newton's method at the solution at about
 /// half the precision.  At 1024 and 4096 bits `δ` solves its equation to working
 /// precision (residual at most `2⁸·2^−bits·|h|`), and it is the root that the plain
-/// iteration from `hν/2` finds at `LADDER_BITS` bits: the two agree to `2^(16 − 512)`
-/// relative, the accuracy of the 512-bit root up to its conditioning (roots of the
-/// equation lie at least `K/2` apart).
+/// iteration from `hν/2` finds at `LADDER_BITS` bits: the two agree to
+/// `2^(16 − LADDER_BITS)` relative, the accuracy of the lower-precision root up to the
+/// conditioning of the equation.
 #[test]
 fn delta_at_high_precision_solves_its_equation() {
     use eulertop::model::phase::LADDER_BITS;
