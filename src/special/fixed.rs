@@ -70,13 +70,7 @@ fn sncndn_cached_f64_many(us: &[f64], sf: Spec<'_, f64>) -> Result<Vec<(f64, f64
     FixedModulus::with_cached(
         sf,
         #[inline(always)]
-        |fm| {
-            let mut out = Vec::with_capacity(us.len());
-            for (i, u) in us.iter().enumerate() {
-                out.push(fm.eval(u).map_err(|e| (i, e))?);
-            }
-            Ok(out)
-        },
+        |fm| fm.eval_all(us),
     )
 }
 
@@ -97,14 +91,7 @@ pub(crate) fn sncndn_fixed_many<R: Real>(
     }
     with_fma(
         #[inline(always)]
-        || {
-            let mut out = Vec::with_capacity(us.len());
-            let fm = FixedModulus::new(spec);
-            for (i, u) in us.iter().enumerate() {
-                out.push(fm.eval(u).map_err(|e| (i, e))?);
-            }
-            Ok(out)
-        },
+        || FixedModulus::new(spec).eval_all(us),
     )
 }
 
@@ -200,6 +187,17 @@ impl<R: Real> FixedModulus<R> {
             f,
             form,
         }
+    }
+
+    /// [`eval`](Self::eval) for every `u` of `us`; an error comes with the index of its
+    /// argument.
+    #[inline(always)]
+    fn eval_all(&self, us: &[R]) -> Result<Vec<(R, R, R)>, AtIndex> {
+        let mut out = Vec::with_capacity(us.len());
+        for (i, u) in us.iter().enumerate() {
+            out.push(self.eval(u).map_err(|e| (i, e))?);
+        }
+        Ok(out)
     }
 
     /// `(sn, cn, dn)(u)`.
