@@ -15,7 +15,10 @@
 //! when the update is below `4·ε·‖X‖∞` (ε = `2^(1−p)`) or stops decreasing; the result
 //! is accepted only if the relative residual `‖F(X)‖∞ / max(‖M‖∞, ‖X‖∞)` is at most
 //! `16·2^(−p)`, otherwise [`ModelError::NewtonFailed`] is returned (also on a
-//! singular Jacobian, non-finite values or when the iteration cap is reached).
+//! singular Jacobian, non-finite values or when the iteration cap is reached).  Above
+//! [`LADDER_BITS`](super::ladder::LADDER_BITS) bits the iteration starts instead at the
+//! solution at about half the precision (module [`ladder`](super::ladder)), and
+//! [`StepReport::iterations`] counts the steps at full precision.
 //! γ_VM returns [`ModelError::ImaginarySqrt`] when its radicand is negative.
 //!
 //! For small `h` the Newton iterate is the solution branch with `M̂ → M` as `h → 0`
@@ -23,6 +26,7 @@
 //! `M̂` always satisfies (impl spec) to working precision (and so preserves `M²`, `E`),
 //! but it need not lie on the branch continuous in `h`.
 
+use super::ladder::{at_prec, ladder, vec_at_prec};
 use super::{Inertia, ModelError};
 use crate::linalg::{Mat3, Vec3};
 use crate::numbers::Real;
@@ -352,7 +356,12 @@ pub fn step_report<R: Real>(
     let what = || format!("(impl spec) with {}", gamma.name());
     let eps = h.epsilon();
     let mnorm = inf_norm(m);
-    let mut x = predictor(inertia, m, h);
+    let mut x = ladder(h, |q| {
+        let at = at_prec(q);
+        step_report(&inertia.map(&at), gamma, &vec_at_prec(m, q), &at(h), opts).map(|r| r.m)
+    })
+    .map(|x| vec_at_prec(&x, h.prec()))
+    .unwrap_or_else(|| predictor(inertia, m, h));
     let mut prev: Option<R> = None;
     let mut iterations = 0;
     let fail = |it: usize, r: f64| ModelError::NewtonFailed {

@@ -35,6 +35,7 @@ pub mod elliptic_coords;
 pub mod error;
 pub mod euler;
 pub mod experiments;
+pub mod ladder;
 pub mod lax;
 pub mod orbit;
 pub mod params;

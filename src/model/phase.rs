@@ -9,14 +9,13 @@
 //! stops when the update stalls and errors ([`ModelError::NewtonFailed`]) after 200
 //! iterations or if the iterate leaves `(0, K)`.
 //!
-//! Above [`LADDER_BITS`] bits the iteration starts instead at the solution at about half
-//! the precision (computed the same way, down to at most [`LADDER_BITS`] bits, where it
-//! starts at `hν/2`): Newton's method doubles the number of correct bits with each step,
-//! so the full-precision steps are two or three instead of nine at 4096 bits (seven at
-//! 1024).
+//! Above [`LADDER_BITS`](super::ladder::LADDER_BITS) bits the iteration starts instead at the solution at about half
+//! the precision (module [`ladder`](super::ladder)): two full-precision steps instead of
+//! nine at 4096 bits (seven at 1024).
 
 use super::discretization::Gamma;
 use super::elliptic_coords::{EllCoords, phi_near, quarter_period, sncndn_params};
+use super::ladder::{at_prec, ladder};
 use super::params::EllipticParams;
 use super::{Inertia, ModelError};
 use crate::linalg::Vec3;
@@ -34,22 +33,6 @@ pub fn step_phases<R: Real>(
     let bar = (c.phi.clone() + ch.phi.clone()) * half.clone();
     let delta = (ch.phi - c.phi.clone()) * half;
     Ok((c, bar, delta))
-}
-
-/// The precision up to which [`delta`] starts Newton's method at `hν/2`; above it, at
-/// the solution at `prec/2 + 32` bits.  Up to it the iteration, and so every value, is
-/// the same as without the ladder (the per-claim test runs at 53 and 256 bits).
-pub const LADDER_BITS: u32 = 512;
-
-/// The start of Newton's method at the precision of `h`: the solution `solve(q)` at
-/// `q = prec/2 + 32` bits, rounded to the precision of `h`, above [`LADDER_BITS`] bits
-/// (and if that solve succeeds); otherwise none (`hν/2`).
-fn ladder_start<R: Real>(h: &R, solve: impl FnOnce(u32) -> Result<R, ModelError>) -> Option<R> {
-    let prec = h.prec();
-    if R::FIXED || prec <= LADDER_BITS {
-        return None;
-    }
-    solve(prec / 2 + 32).ok().map(|x| x.with_prec(prec))
 }
 
 fn solve_phase<R: Real, F>(
@@ -109,10 +92,11 @@ where
 /// (use [`EllipticParams::alpha1`] or [`EllipticParams::alpha2`], (alphas)); for
 /// `h ≥ 0` (negative `h` → [`ModelError::NewtonFailed`]; use [`delta`]).
 pub fn delta_master12<R: Real>(p: &EllipticParams<R>, alpha: &R, h: &R) -> Result<R, ModelError> {
-    let start = ladder_start(h, |q| {
-        let at = |x: &R| x.with_prec(q);
-        delta_master12(&p.map(at), &at(alpha), &at(h))
-    });
+    let start = ladder(h, |q| {
+        let at = at_prec(q);
+        delta_master12(&p.map(&at), &at(alpha), &at(h))
+    })
+    .map(|x| x.with_prec(h.prec()));
     let hn = Dual::constant(h.clone() * p.nu() / h.from_i64(2));
     let al = Dual::constant(alpha.clone());
     solve_phase(p, h, start, "(master12)", |sn, cn, dn| {
@@ -145,10 +129,11 @@ pub fn delta_vm<R: Real>(
     let (a, b) = p.alpha_beta_vm(inertia).ok_or_else(|| {
         ModelError::Undefined("(MV alphabeta) is not given on the separatrix E/M^2 = 1/B".into())
     })?;
-    let start = ladder_start(h, |q| {
-        let at = |x: &R| x.with_prec(q);
-        delta_vm(&inertia.map(at), &p.map(at), &at(h))
-    });
+    let start = ladder(h, |q| {
+        let at = at_prec(q);
+        delta_vm(&inertia.map(&at), &p.map(&at), &at(h))
+    })
+    .map(|x| x.with_prec(h.prec()));
     let hn = Dual::constant(h.clone() * p.nu() / h.from_i64(2));
     let (a, b) = (Dual::constant(a), Dual::constant(b));
     solve_phase(p, h, start, "(MV master)", |sn, cn, dn| {

@@ -8,6 +8,7 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 mod model_discretization;
 mod model_elliptic;
+mod model_ladder;
 mod model_lax;
 mod model_poisson;
 mod model_robust;

@@ -286,7 +286,7 @@ fn phase_residual(
 /// conditioning of the equation.
 #[test]
 fn delta_at_high_precision_solves_its_equation() {
-    use eulertop::model::phase::LADDER_BITS;
+    use eulertop::model::ladder::LADDER_BITS;
     for bits in [1024u32, 4096] {
         let f = |x: f64| Float::with_val(bits, x);
         let i = Inertia::new(f(3.0), f(2.0), f(1.0)).unwrap();

@@ -1,0 +1,39 @@
+//! The precision ladder of the model's Newton solvers: above [`LADDER_BITS`] bits a
+//! solve starts at its own solution at about half the precision (computed the same way,
+//! down to at most [`LADDER_BITS`] bits, where it starts at its usual predictor).
+//! Newton's method doubles the number of correct bits with each step, so two or three
+//! steps at full precision remain, where from the predictor there is about one per
+//! doubling (for the phase steps seven at 1024 bits and nine at 4096).
+
+use super::ModelError;
+use crate::linalg::Vec3;
+use crate::numbers::Real;
+
+/// The precision up to which the solvers start at their usual predictor; above it, at
+/// the solution at `prec/2 + 32` bits.  Up to it every solve, and so every value, is the
+/// same as without the ladder (the per-claim test runs at 53 and 256 bits).
+pub const LADDER_BITS: u32 = 512;
+
+/// The solution `solve(q)` at `q = prec/2 + 32` bits, where `prec` is the precision of
+/// `like`, when `prec` is above [`LADDER_BITS`] bits (and that solve succeeds);
+/// otherwise none.  The caller rounds it back to `prec` bits ([`at_prec`],
+/// [`vec_at_prec`]) and iterates from there.
+pub(crate) fn ladder<R: Real, T>(
+    like: &R,
+    solve: impl FnOnce(u32) -> Result<T, ModelError>,
+) -> Option<T> {
+    if R::FIXED || like.prec() <= LADDER_BITS {
+        return None;
+    }
+    solve(like.prec() / 2 + 32).ok()
+}
+
+/// `x` rounded to `bits` bits.
+pub(crate) fn at_prec<R: Real>(bits: u32) -> impl Fn(&R) -> R {
+    move |x| x.with_prec(bits)
+}
+
+/// `v` with each component rounded to `bits` bits.
+pub(crate) fn vec_at_prec<R: Real>(v: &Vec3<R>, bits: u32) -> Vec3<R> {
+    Vec3(std::array::from_fn(|i| v.0[i].with_prec(bits)))
+}
