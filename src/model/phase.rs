@@ -11,7 +11,7 @@
 //!
 //! Above [`LADDER_BITS`](super::ladder::LADDER_BITS) bits the iteration starts instead at the solution at about half
 //! the precision (module [`ladder`](super::ladder)): two full-precision steps instead of
-//! nine at 4096 bits (seven at 1024).
+//! nine at 4096 bits.
 
 use super::discretization::Gamma;
 use super::elliptic_coords::{EllCoords, phi_near, quarter_period, sncndn_params};

@@ -279,7 +279,7 @@ fn phase_residual(
 }
 
 /// Above `LADDER_BITS` the phase step starts Newton's method at the solution at about
-/// half the precision.  At 1024 and 4096 bits `δ` solves its equation to working
+/// half the precision.  At 2048 and 4096 bits `δ` solves its equation to working
 /// precision (residual at most `2⁸·2^−bits·|h|`), and it is the root that the plain
 /// iteration from `hν/2` finds at `LADDER_BITS` bits: the two agree to
 /// `2^(16 − LADDER_BITS)` relative, the accuracy of the lower-precision root up to the
@@ -287,7 +287,7 @@ fn phase_residual(
 #[test]
 fn delta_at_high_precision_solves_its_equation() {
     use eulertop::model::ladder::LADDER_BITS;
-    for bits in [1024u32, 4096] {
+    for bits in [2048u32, 4096] {
         let f = |x: f64| Float::with_val(bits, x);
         let i = Inertia::new(f(3.0), f(2.0), f(1.0)).unwrap();
         let m = Vec3::new(f(0.3), f(-0.7), f(1.1));

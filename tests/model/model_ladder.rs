@@ -1,6 +1,6 @@
 //! The precision ladder of the model's Newton solvers (module `model::ladder`): above
 //! `LADDER_BITS` bits the implicit maps (impl spec) and the Veselov–Moser step start at
-//! their own solution at about half the precision.  At 1024 and 4096 bits the step is
+//! their own solution at about half the precision.  At 2048 and 4096 bits the step is
 //! the solution that the plain iteration from the predictor finds at `LADDER_BITS`
 //! bits (they agree to `2^(16 − LADDER_BITS)` relative), and at most three Newton
 //! steps are taken at full precision, where the plain iteration takes more already at
@@ -40,7 +40,7 @@ fn bound() -> Float {
 
 #[test]
 fn implicit_maps_above_the_ladder_find_the_plain_solution_in_few_steps() {
-    for bits in [1024u32, 4096] {
+    for bits in [2048u32, 4096] {
         let (i, m, i_lo, m_lo) = case(bits);
         for g in [Gamma::G0, Gamma::G1, Gamma::G2, Gamma::Vm] {
             for h in [0.1, -0.3] {
@@ -63,7 +63,7 @@ fn implicit_maps_above_the_ladder_find_the_plain_solution_in_few_steps() {
 
 #[test]
 fn vm_step_above_the_ladder_finds_the_plain_solution_in_few_steps() {
-    for bits in [1024u32, 4096] {
+    for bits in [2048u32, 4096] {
         let (i, m, i_lo, m_lo) = case(bits);
         for h in [0.1, -0.3] {
             let s = vm_step(&i, &m, &Float::with_val(bits, h)).unwrap();
