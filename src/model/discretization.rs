@@ -26,7 +26,7 @@
 //! `M̂` always satisfies (impl spec) to working precision (and so preserves `M²`, `E`),
 //! but it need not lie on the branch continuous in `h`.
 
-use super::ladder::{at_prec, ladder, vec_at_prec};
+use super::ladder::{AtPrec, ladder};
 use super::{Inertia, ModelError};
 use crate::linalg::{Mat3, Vec3};
 use crate::numbers::Real;
@@ -357,10 +357,9 @@ pub fn step_report<R: Real>(
     let eps = h.epsilon();
     let mnorm = inf_norm(m);
     let mut x = ladder(h, |q| {
-        let at = at_prec(q);
-        step_report(&inertia.map(&at), gamma, &vec_at_prec(m, q), &at(h), opts).map(|r| r.m)
+        let (i, m, h) = (inertia.at_prec(q), m.at_prec(q), h.at_prec(q));
+        step_report(&i, gamma, &m, &h, opts).map(|r| r.m)
     })
-    .map(|x| vec_at_prec(&x, h.prec()))
     .unwrap_or_else(|| predictor(inertia, m, h));
     let mut prev: Option<R> = None;
     let mut iterations = 0;

@@ -5,7 +5,7 @@
 //! steps at full precision remain, where from the predictor there is about one per
 //! doubling (for the phase steps nine at 4096 bits).
 
-use super::ModelError;
+use super::{EllipticParams, Inertia, ModelError};
 use crate::linalg::Vec3;
 use crate::numbers::Real;
 
@@ -15,26 +15,47 @@ use crate::numbers::Real;
 /// the ladder does not pay: a Veselov–Moser step took 1.1 times as long with it.
 pub const LADDER_BITS: u32 = 1024;
 
-/// The solution `solve(q)` at `q = prec/2 + 32` bits, where `prec` is the precision of
-/// `like`, when `prec` is above [`LADDER_BITS`] bits (and that solve succeeds);
-/// otherwise none.  The caller rounds it back to `prec` bits ([`at_prec`],
-/// [`vec_at_prec`]) and iterates from there.
-pub(crate) fn ladder<R: Real, T>(
+/// A value whose components are rounded to a given precision: a scalar, a vector, the
+/// moments of inertia or the elliptic parameters.
+pub(crate) trait AtPrec {
+    /// The same value with each component rounded to `bits` bits.
+    fn at_prec(&self, bits: u32) -> Self;
+}
+
+impl<R: Real> AtPrec for R {
+    fn at_prec(&self, bits: u32) -> Self {
+        self.with_prec(bits)
+    }
+}
+
+impl<R: Real> AtPrec for Vec3<R> {
+    fn at_prec(&self, bits: u32) -> Self {
+        Vec3(std::array::from_fn(|i| self.0[i].with_prec(bits)))
+    }
+}
+
+impl<R: Real> AtPrec for Inertia<R> {
+    fn at_prec(&self, bits: u32) -> Self {
+        self.map(|x| x.with_prec(bits))
+    }
+}
+
+impl<R: Real> AtPrec for EllipticParams<R> {
+    fn at_prec(&self, bits: u32) -> Self {
+        self.map(|x| x.with_prec(bits))
+    }
+}
+
+/// The solution `solve(q)` at `q = prec/2 + 32` bits, rounded back to `prec` bits, where
+/// `prec` is the precision of `like`, when `prec` is above [`LADDER_BITS`] bits (and that
+/// solve succeeds); otherwise none.  The caller iterates from there.
+pub(crate) fn ladder<R: Real, T: AtPrec>(
     like: &R,
     solve: impl FnOnce(u32) -> Result<T, ModelError>,
 ) -> Option<T> {
-    if R::FIXED || like.prec() <= LADDER_BITS {
+    let prec = like.prec();
+    if R::FIXED || prec <= LADDER_BITS {
         return None;
     }
-    solve(like.prec() / 2 + 32).ok()
-}
-
-/// `x` rounded to `bits` bits.
-pub(crate) fn at_prec<R: Real>(bits: u32) -> impl Fn(&R) -> R {
-    move |x| x.with_prec(bits)
-}
-
-/// `v` with each component rounded to `bits` bits.
-pub(crate) fn vec_at_prec<R: Real>(v: &Vec3<R>, bits: u32) -> Vec3<R> {
-    Vec3(std::array::from_fn(|i| v.0[i].with_prec(bits)))
+    solve(prec / 2 + 32).ok().map(|x| x.at_prec(prec))
 }

@@ -9,13 +9,13 @@
 //! stops when the update stalls and errors ([`ModelError::NewtonFailed`]) after 200
 //! iterations or if the iterate leaves `(0, K)`.
 //!
-//! Above [`LADDER_BITS`](super::ladder::LADDER_BITS) bits the iteration starts instead at the solution at about half
-//! the precision (module [`ladder`](super::ladder)): two full-precision steps instead of
-//! nine at 4096 bits.
+//! Above [`LADDER_BITS`](super::ladder::LADDER_BITS) bits the iteration starts instead
+//! at the solution at about half the precision (module [`ladder`](super::ladder)): two
+//! full-precision steps instead of nine at 4096 bits.
 
 use super::discretization::Gamma;
 use super::elliptic_coords::{EllCoords, phi_near, quarter_period, sncndn_params};
-use super::ladder::{at_prec, ladder};
+use super::ladder::{AtPrec, ladder};
 use super::params::EllipticParams;
 use super::{Inertia, ModelError};
 use crate::linalg::Vec3;
@@ -93,10 +93,8 @@ where
 /// `h ≥ 0` (negative `h` → [`ModelError::NewtonFailed`]; use [`delta`]).
 pub fn delta_master12<R: Real>(p: &EllipticParams<R>, alpha: &R, h: &R) -> Result<R, ModelError> {
     let start = ladder(h, |q| {
-        let at = at_prec(q);
-        delta_master12(&p.map(&at), &at(alpha), &at(h))
-    })
-    .map(|x| x.with_prec(h.prec()));
+        delta_master12(&p.at_prec(q), &alpha.at_prec(q), &h.at_prec(q))
+    });
     let hn = Dual::constant(h.clone() * p.nu() / h.from_i64(2));
     let al = Dual::constant(alpha.clone());
     solve_phase(p, h, start, "(master12)", |sn, cn, dn| {
@@ -130,10 +128,8 @@ pub fn delta_vm<R: Real>(
         ModelError::Undefined("(MV alphabeta) is not given on the separatrix E/M^2 = 1/B".into())
     })?;
     let start = ladder(h, |q| {
-        let at = at_prec(q);
-        delta_vm(&inertia.map(&at), &p.map(&at), &at(h))
-    })
-    .map(|x| x.with_prec(h.prec()));
+        delta_vm(&inertia.at_prec(q), &p.at_prec(q), &h.at_prec(q))
+    });
     let hn = Dual::constant(h.clone() * p.nu() / h.from_i64(2));
     let (a, b) = (Dual::constant(a), Dual::constant(b));
     solve_phase(p, h, start, "(MV master)", |sn, cn, dn| {

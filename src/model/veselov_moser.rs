@@ -15,7 +15,7 @@
 //! `max(‖J‖, h‖M‖)`) at most `16·2^(−p)`, otherwise [`ModelError::NewtonFailed`].
 
 use super::discretization::inf_norm;
-use super::ladder::{at_prec, ladder, vec_at_prec};
+use super::ladder::{AtPrec, ladder};
 use super::{Inertia, ModelError};
 use crate::linalg::{Mat3, Vec3};
 use crate::numbers::{ComplexScalar, Cplx, Dual, Real, Scalar};
@@ -124,10 +124,8 @@ pub fn vm_step<R: Real>(inertia: &Inertia<R>, m: &Vec3<R>, h: &R) -> Result<VmSt
     let hm = mm.scale(h);
     let half = h.from_ratio(1, 2);
     let mut v = ladder(h, |q| {
-        let at = at_prec(q);
-        vm_step(&inertia.map(&at), &vec_at_prec(m, q), &at(h)).map(|s| s.v)
+        vm_step(&inertia.at_prec(q), &m.at_prec(q), &h.at_prec(q)).map(|s| s.v)
     })
-    .map(|v| vec_at_prec(&v, h.prec()))
     .unwrap_or_else(|| inertia.omega(m).scale(&(h.clone() * half)));
     let jd = Mat3::diag(&Vec3(jv.0.clone().map(Dual::constant)));
     let hmd = Mat3::from_fn(|i, k| Dual::constant(hm.0[i][k].clone()));
