@@ -78,11 +78,12 @@
 //!   varying modulus is refused (it would need `E(k)`).  The derivative of an inverse of
 //!   sn, cn, dn in a varying modulus takes one more symbol `Z = E(am v, k) − k'²v` per
 //!   inverse (certificates give it in the inverse's `inverse` line).
-//! * Decisions from the shadows are assumptions of the proof.  A claim whose statement
-//!   *is* such a condition (an inequality, an indicator) is proved only with
-//!   [`RingOptions::strict_signs`]: every sign is then proved by [`positivity`] (a
-//!   sufficient test on a parametrization of the domain by positive parameters), or the
-//!   proof stops.
+//! * Signs, branches and comparisons are decided in one place (module `decide`, with
+//!   [`Decision`]): exact, proved on a parametrization of the domain by positive
+//!   parameters ([`positivity`]) and through square roots, given by a hypothesis, or
+//!   fixed by the definition of a sign symbol.  The values at the domain points never
+//!   decide one: an undecided sign stops the proof (and may split the domain,
+//!   [`split`]).
 //!
 //! # Example
 //!
@@ -108,6 +109,7 @@ mod addition;
 mod base_table;
 pub mod certificate;
 mod coordinates;
+mod decide;
 mod den_factors;
 mod derive;
 pub mod elliptic;
@@ -132,5 +134,6 @@ mod val;
 pub use elliptic::BaseHint;
 pub use error::{AlgResult, AlgebraError};
 pub use proof::{Outcome, Proof, prove_components, prove_identity};
-pub use ring::{Assumption, Origin, Ring, RingOptions};
+pub use decide::Decision;
+pub use ring::{Assumption, AssumptionKind, Origin, Ring, RingOptions};
 pub use sym::Sym;

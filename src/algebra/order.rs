@@ -1,11 +1,8 @@
-//! Signs and comparisons decided from the shadows.
-//!
-//! A sign is *exact* when the value is an exact rational (or exactly zero), and *proved*
-//! when the ring's parametrization of the domain proves it (module
-//! [`super::positivity`]); otherwise it is decided from the shadows when every domain point gives the same sign, and the
-//! decision is recorded as an assumption of the proof (with its origin: a definition
-//! or the claim's own text).  Points that disagree, a value that vanishes at a point,
-//! or a value that is not real give [`AlgebraError::CannotDecide`].
+//! Signs and comparisons of real values, as the proof decides them (module
+//! [`super::decide`]): exact, proved on the domain, by a hypothesis or by a definition,
+//! and otherwise not at all.  An undecided sign is an [`AlgebraError::CannotDecide`]
+//! (and the ring remembers it, so that the domain may be split by it); the values at
+//! the domain points never decide a sign.
 
 use super::error::{AlgResult, AlgebraError};
 use super::sym::Sym;
@@ -19,54 +16,17 @@ impl Sym {
     /// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
     /// let a = ring.indeterminate_f64("a", &[2.0, 3.0]).unwrap();
     /// let c = ring.indeterminate_f64("c", &[1.0, 0.5]).unwrap();
-    /// assert_eq!((a - c).sign().unwrap(), 1);
-    /// assert_eq!(ring.assumptions().len(), 1); // "a - c > 0" rests on the domain
+    /// assert_eq!((a.clone() * a.clone() + ring.integer(1)).sign().unwrap(), 1); // exact
+    /// assert!((a - c).sign().is_err()); // positive at both points, but not proved
     /// ```
     pub fn sign(&self) -> AlgResult<i32> {
-        if self.is_exact_zero() {
-            return Ok(0);
-        }
-        if let Some(q) = self.as_rational() {
-            return Ok(if q < 0 { -1 } else { 1 });
-        }
-        let ring = &self.ring;
-        if ring.options().strict_signs {
-            return self.proved_sign().ok_or_else(|| self.unproved_sign());
-        }
-        if let Some(s) = (self.proved_sign())
-            .or_else(|| self.hypothesis_sign())
-            .or_else(|| self.defined_sign())
-        {
-            return Ok(s);
-        }
-        let prec = ring.precision();
-        let what = self.render_short(160);
-        // the carried error scales may be too pessimistic to decide: then the value is
-        // evaluated afresh from its normal form, with the error scale of its terms
-        let undecided = (0..ring.points()).any(|p| self.val.sh.real_sign(p, prec).is_none());
-        let sh = if undecided {
-            ring.reevaluated(&self.val)
-        } else {
-            self.val.sh.clone()
-        };
-        let mut sign = 0;
-        for p in 0..ring.points() {
-            let s = sh.real_sign(p, prec).ok_or_else(|| {
-                AlgebraError::CannotDecide(format!(
-                    "the sign of {what}: zero or not real at a domain point"
-                ))
-            })?;
-            if sign != 0 && s != sign {
-                ring.note_undecided(self);
-                return Err(AlgebraError::CannotDecide(format!(
-                    "the sign of {what}: it differs between domain points"
-                )));
+        match self.decided_sign() {
+            Some(s) => Ok(s),
+            None => {
+                self.ring.note_undecided(self);
+                Err(self.unproved_sign())
             }
-            sign = s;
         }
-        let rel = if sign > 0 { ">" } else { "<" };
-        ring.record_assumption(format!("{what} {rel} 0"), sign);
-        Ok(sign)
     }
 
     /// The sign of a real value as a value: the constant −1 or 1 where one sign holds on
@@ -125,53 +85,35 @@ impl Sym {
         at(&self.val.sh).or_else(|| at(&ring.reevaluated(&self.val)))
     }
 
-    /// Decides that a value whose normal form is not 0 is nonzero on the domain: it must
-    /// be clearly nonzero at every domain point, and the decision is recorded as an
-    /// assumption (`x - 1 ≠ 0`).  A normal form that is not 0 alone proves nothing: an
+    /// Decides that a value is nonzero on the domain: its sign must be decided (see
+    /// [`Sym::sign`]).  A normal form that is not 0 alone proves nothing: an
     /// indeterminate drawn from the integers 1..3 is 1 at some points.
     ///
     /// ```
     /// use eulertop::algebra::{Ring, RingOptions};
     /// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
     /// let a = ring.indeterminate_f64("a", &[2.0, 3.0]).unwrap();
-    /// assert!(a.nonzero_on_domain().is_ok());
-    /// assert!((a - ring.integer(3)).nonzero_on_domain().is_err()); // a = 3 at a point
+    /// assert!((a.clone() * a.clone() + ring.integer(1)).nonzero_on_domain().is_ok());
+    /// assert!((a - ring.integer(3)).nonzero_on_domain().is_err()); // not proved
     /// ```
     pub fn nonzero_on_domain(&self) -> AlgResult<()> {
-        if let Some(q) = self.as_rational() {
-            return if q == 0 {
-                Err(AlgebraError::CannotDecide("a value is exactly 0".into()))
-            } else {
-                Ok(())
-            };
+        match self.decided_sign() {
+            Some(0) => Err(AlgebraError::CannotDecide("a value is exactly 0".into())),
+            Some(_) => Ok(()),
+            None => {
+                self.ring.note_undecided(self);
+                Err(AlgebraError::CannotDecide(format!(
+                    "whether {} is 0 on the domain: its sign is not proved",
+                    self.render_short(160)
+                )))
+            }
         }
-        let ring = &self.ring;
-        if ring.options().strict_signs {
-            return self
-                .proved_sign()
-                .map(|_| ())
-                .ok_or_else(|| self.unproved_sign());
-        }
-        if self.proved_sign().is_some() {
-            return Ok(());
-        }
-        let prec = ring.precision();
-        let sh = ring.reevaluated(&self.val);
-        if let Some(p) = (0..ring.points()).find(|&p| sh.is_small(p, prec)) {
-            return Err(AlgebraError::CannotDecide(format!(
-                "whether {} is 0: it vanishes at domain point {}",
-                self.render_short(160),
-                p + 1
-            )));
-        }
-        ring.record_assumption(format!("{} ≠ 0", self.render_short(160)), 0);
-        Ok(())
     }
 
-    /// Why a sign is not decided where signs must be proved.
+    /// Why a sign is not decided: it is neither proved nor given by a hypothesis.
     fn unproved_sign(&self) -> AlgebraError {
         AlgebraError::CannotDecide(format!(
-            "the sign of {} is not proved on the domain (the claim states a condition, so its signs are proved, never taken at domain points)",
+            "the sign of {} is not proved on the domain, and no hypothesis gives it",
             self.render_short(160)
         ))
     }

@@ -137,6 +137,8 @@ pub struct Parametrization {
     params: Vec<(String, ParamKind)>,
     images: BTreeMap<String, ParamRat>,
     descriptions: Vec<String>,
+    /// See [`Parametrization::set_alternative`].
+    alternative: Option<Box<Parametrization>>,
 }
 
 impl std::fmt::Debug for Parametrization {
@@ -159,7 +161,14 @@ impl Parametrization {
             params: Vec::new(),
             images: BTreeMap::new(),
             descriptions: Vec::new(),
+            alternative: None,
         }
+    }
+
+    /// A second parametrization of the same domain, tried where this one proves no sign
+    /// (such as the box of the sampled intervals, beside ranges relaxed to half-lines).
+    pub fn set_alternative(&mut self, other: Parametrization) {
+        self.alternative = Some(Box::new(other));
     }
 
     fn param(&mut self, name: &str, kind: ParamKind) -> Option<ParamRat> {
@@ -269,7 +278,7 @@ impl Parametrization {
         Some(a * b)
     }
 
-    fn poly_sign(&self, p: &Poly, images: &[Image<'_>]) -> Option<i32> {
+    pub(crate) fn poly_sign(&self, p: &Poly, images: &[Image<'_>]) -> Option<i32> {
         if p.is_zero() || p.len() > MAX_INPUT_TERMS {
             return None;
         }
@@ -388,10 +397,17 @@ impl Sym {
         s
     }
 
-    /// [`Sym::proved_sign`] computed: the test, the agreement with the points, the note.
+    /// [`Sym::proved_sign`] computed: the test (with the alternative parametrization
+    /// where the first proves nothing), the agreement with the points, the note.
     fn sign_by_parametrization(&self, par: &Parametrization) -> Option<i32> {
-        let images = self.ring.sign_images(par, &self.val.num)?;
-        let s = par.sign_of(&self.val.num, &self.val.den, &images)?;
+        let s = self.sign_with(par).or_else(|| {
+            let alt = par.alternative.as_deref()?;
+            let s = self.sign_with(alt)?;
+            self.ring.mark_uncertified(
+                "a sign proved with the box of the sampled intervals, which the certificate format does not record",
+            );
+            Some(s)
+        })?;
         // the points lie in the parametrized domain: their signs must agree
         let prec = self.ring.precision();
         let agree =
@@ -410,11 +426,28 @@ impl Sym {
     }
 }
 
+impl Sym {
+    /// The sign by one parametrization: the plain test, then the rules of module
+    /// `decide` through the square roots.
+    fn sign_with(&self, par: &Parametrization) -> Option<i32> {
+        let images = self.ring.sign_images(par, &self.val.num)?;
+        if let Some(s) = par.sign_of(&self.val.num, &self.val.den, &images) {
+            return Some(s);
+        }
+        let ring = &self.ring;
+        let s = ring.tower_sign(par, &self.val.num, 0)? * ring.tower_sign(par, &self.val.den, 0)?;
+        ring.mark_uncertified(
+            "a sign proved through its square roots (module decide), which the certificate format does not record",
+        );
+        Some(s)
+    }
+}
+
 impl Ring {
     /// The images of the variables of the ring's context in a sign test of `num`:
     /// indeterminates by name, and square roots whose radicands are proved positive
     /// and whose values at the domain points are positive.
-    fn sign_images<'p>(&self, par: &'p Parametrization, num: &Poly) -> Option<Vec<Image<'p>>> {
+    pub(crate) fn sign_images<'p>(&self, par: &'p Parametrization, num: &Poly) -> Option<Vec<Image<'p>>> {
         let max_roots = self.inner.opts.max_roots;
         let used_roots: Vec<usize> = (num.used_vars().into_iter())
             .filter(|&i| i < max_roots)
@@ -459,14 +492,19 @@ impl Ring {
 }
 
 impl super::ring::RootInfo {
-    /// Is the root positive at every domain point (a positive real value at each)?
+    /// Is the root the principal root of its radicand (see [`RootInfo::principal`]),
+    /// with a positive real value at every domain point?  Where its radicand is proved
+    /// positive, it is then the positive root on the whole domain.
+    ///
+    /// [`RootInfo::principal`]: super::ring::RootInfo
     pub(crate) fn is_positive(&self) -> bool {
-        self.values.iter().all(|z| {
-            let (re, im) = (z.real(), z.imag());
-            *re > 0
-                && (im.is_zero()
-                    || Float::with_val(64, im.abs_ref()) < Float::with_val(64, re) >> 100)
-        })
+        self.principal
+            && self.values.iter().all(|z| {
+                let (re, im) = (z.real(), z.imag());
+                *re > 0
+                    && (im.is_zero()
+                        || Float::with_val(64, im.abs_ref()) < Float::with_val(64, re) >> 100)
+            })
     }
 }
 

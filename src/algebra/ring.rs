@@ -43,9 +43,6 @@ pub struct RingOptions {
     /// A parametrization of the domain with which signs are proved (module
     /// [`super::positivity`]): the signs that `abs` and `sign` in a claim's formulas take.
     pub positivity: Option<Arc<super::positivity::Parametrization>>,
-    /// Every sign and every comparison must be proved with [`RingOptions::positivity`],
-    /// never taken at domain points: for a claim whose statement is a condition.
-    pub strict_signs: bool,
     /// The signs that define the part of the domain the proof is on (module
     /// [`super::split`]): a value equal to one of them, or to its negative, has that sign.
     pub hypotheses: Vec<(super::split::SignSplit, i32)>,
@@ -74,7 +71,6 @@ impl Default for RingOptions {
             max_terms: MAX_TERMS,
             base_hints: Vec::new(),
             positivity: None,
-            strict_signs: false,
             hypotheses: Vec::new(),
             sign_folds: Vec::new(),
         }
@@ -90,13 +86,25 @@ pub enum Origin {
     Definition(String),
 }
 
-/// A decision taken from the shadows, on which a proof rests.
+/// What a proof rests on besides algebra: never a decision taken at domain points.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum AssumptionKind {
+    /// The solution branch of an implicit map (its name), which a hypothesis of the
+    /// claim must state.
+    Branch(String),
+    /// The value of a step proved by another claim (its id), a lemma of the proof.
+    Lemma(String),
+    /// A hypothesis the claim states (its label), by which a sign was decided.
+    Hypothesis(String),
+}
+
+/// A fact a proof rests on (see [`AssumptionKind`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Assumption {
-    /// The statement, e.g. `sqrt(A - C) = +r_1` or `E/M2 - 1/B > 0`.
+    /// The statement, e.g. the branch the solver selects.
     pub statement: String,
-    /// The sign chosen (+1 or −1), or 0 for a comparison result stated in full.
-    pub sign: i32,
+    /// What kind of fact it is.
+    pub kind: AssumptionKind,
     /// Where the decided expression came from.
     pub origin: Origin,
 }
@@ -152,6 +160,11 @@ pub(crate) struct RootInfo {
     pub closure: Vec<usize>,
     /// What the root is, for the reader (e.g. `cn(phi)`).
     pub note: String,
+    /// Whether the root is the principal square root of its radicand wherever that is
+    /// positive (false for a sign symbol and for a root with prescribed values, such as
+    /// `cn u` for `√(1 − sn²u)`): only then is it the positive root where its radicand
+    /// is proved positive.
+    pub principal: bool,
 }
 
 /// A field variable `v` with `sn v`, `cn v`, `dn v` known at modulus `k`.
@@ -242,6 +255,9 @@ pub(crate) struct State {
     /// The outcome of the sign test with the parametrization of the domain, by value
     /// (numerator, denominator); emptied when a root's values change.
     pub sign_memo: std::collections::HashMap<(Poly, Poly), Option<i32>>,
+    /// The hypotheses the claim states: a value, its sign, and the hypothesis' label
+    /// (see [`Ring::state_hypothesis`]).
+    pub stated: Vec<(Val, i32, String)>,
 }
 
 /// A sign symbol `σ = sign(x)` made for a folded value `x` (see
@@ -256,6 +272,9 @@ pub(crate) struct Folded {
     pub root: usize,
     /// `σ·x`, rendered: positive at every point, by the definition of `σ`.
     pub positive: String,
+    /// The indeterminate of `x` (its context variable) and the sign of `σ` times it,
+    /// by the definition of `σ` (`x` is a constant multiple of the indeterminate).
+    pub var: Option<(usize, i32)>,
 }
 
 pub(crate) struct Inner {
@@ -324,6 +343,7 @@ impl Ring {
             values_table: None,
             folded: Vec::new(),
             sign_memo: std::collections::HashMap::new(),
+            stated: Vec::new(),
         };
         Ring {
             inner: Arc::new(Inner {
@@ -456,15 +476,15 @@ impl Ring {
         }
     }
 
-    /// Records an assumption that the caller has decided outside the algebra (such as
-    /// the solution branch of an implicit map, which the numerical evidence checks).
-    pub fn assume(&self, statement: String) {
+    /// Records a fact the proof rests on besides algebra (see [`AssumptionKind`]): the
+    /// solution branch of an implicit map, a lemma, a stated hypothesis.
+    pub fn assume(&self, kind: AssumptionKind, statement: String) {
         let mut st = self.state();
         if st.assumptions.iter().all(|a| a.statement != statement) {
             let origin = st.origin.clone();
             st.assumptions.push(Assumption {
                 statement,
-                sign: 0,
+                kind,
                 origin,
             });
         }
@@ -476,20 +496,6 @@ impl Ring {
         let mut st = self.state();
         if !st.uncertified.iter().any(|w| w == why) {
             st.uncertified.push(why.to_string());
-        }
-    }
-
-    /// Records a decision taken from the shadows (once), with the current origin.
-    pub(crate) fn record_assumption(&self, statement: String, sign: i32) {
-        let mut st = self.state();
-        let origin = st.origin.clone();
-        let a = Assumption {
-            statement,
-            sign,
-            origin,
-        };
-        if !st.assumptions.contains(&a) {
-            st.assumptions.push(a);
         }
     }
 
@@ -597,6 +603,7 @@ impl Inner {
             values,
             closure,
             note,
+            principal: true,
         });
         Ok(i)
     }

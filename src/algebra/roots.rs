@@ -451,6 +451,7 @@ impl Sym {
         if let (Some(i), Some(_)) = (fresh, &prescribed) {
             // fix the new root's values so that the product equals the prescribed values
             let sigma = ring.pointwise_signs(&target, &cand.sh, &what)?;
+            ring.state().roots[i].principal = false;
             ring.flip_root_values(i, &sigma);
             cand.sh = cand.sh.scale_by(
                 &sigma
@@ -461,15 +462,22 @@ impl Sym {
             let node = self.node.as_ref().map(|n| Node::sqrt(n, &cand, 1));
             return Ok(Sym::from_val(ring, cand, node));
         }
-        let sigma = match ring.decide_sign(&target, &cand.sh, &what) {
-            Ok(s) => s,
-            // the carried error scales may be too pessimistic: decide again from both
-            // values evaluated afresh from their normal forms
+        // the values at the points suggest the branch; the proof must then prove it
+        let guess = match ring.decide_sign(&target, &cand.sh, &what) {
+            Ok(s) => Ok(s),
             Err(_) if prescribed.is_none() => {
                 let target = ring.reevaluated(&self.val).sqrt();
-                ring.decide_sign(&target, &ring.reevaluated(&cand), &what)?
+                ring.decide_sign(&target, &ring.reevaluated(&cand), &what)
             }
-            Err(e) => return Err(e),
+            Err(e) => Err(e),
+        };
+        let sigma = match guess {
+            Ok(s) => s,
+            Err(e) => {
+                ring.note_undecided(&Sym::from_val(ring, cand, None));
+                ring.note_undecided(self);
+                return Err(e);
+            }
         };
         if sigma < 0 {
             cand = inner.v_neg(&cand);
@@ -481,18 +489,32 @@ impl Sym {
             .map(|n| Node::sqrt(n, &result.val, sigma));
         let result = result.with_node(node);
         if !(sigma > 0 && fresh.is_none() && result.is_single_root_of(self)) {
-            let proved = result.proved_sign() == Some(1);
-            if !ring.options().strict_signs && !proved {
-                ring.record_assumption(format!("{what} = {}", result.render_short(160)), sigma);
-            } else if !proved {
-                // the principal root is the positive one: the branch must be proved
-                return Err(AlgebraError::CannotDecide(format!(
-                    "the branch of {what} is not proved on the domain: {} > 0 is not proved",
-                    result.render_short(160)
-                )));
-            }
+            result.principal_branch_proved(self, &what)?;
         }
         Ok(result)
+    }
+
+    /// Proves that `self`, a square root of `radicand`, is its principal root on the
+    /// whole domain: positive, or `i` times a positive value where the radicand is
+    /// proved negative.  Otherwise the branch is undecided (an error; the ring
+    /// remembers the value, so that the domain may be split by its sign).
+    fn principal_branch_proved(&self, radicand: &Sym, what: &str) -> AlgResult<()> {
+        if self.decided_sign() == Some(1) {
+            return Ok(());
+        }
+        let ring = &self.ring;
+        if radicand.decided_sign() == Some(-1) {
+            let over_i = self.try_mul(&ring.i()?)?.negate();
+            if over_i.decided_sign() == Some(1) {
+                return Ok(());
+            }
+        }
+        ring.note_undecided(self);
+        ring.note_undecided(radicand);
+        Err(AlgebraError::CannotDecide(format!(
+            "the branch of {what} is not proved on the domain: {} > 0 is neither proved nor a hypothesis",
+            self.render_short(160)
+        )))
     }
 
     /// `√(N/D) = √N/√D`, up to sign, when `N` and `D` are squares of polynomials with

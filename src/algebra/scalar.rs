@@ -158,21 +158,12 @@ impl Scalar for Sym {
         self.folded_sign().map_err(|e| e.to_string())
     }
     fn stated_sign(&self) -> Result<i32, String> {
-        if self.is_exact_zero() {
-            return Ok(0);
-        }
-        if let Some(q) = self.as_rational() {
-            return Ok(if q < 0 { -1 } else { 1 });
-        }
-        if let Some(s) = self.hypothesis_sign() {
-            return Ok(s);
-        }
-        match self.proved_sign() {
+        match self.decided_sign() {
             Some(s) => Ok(s),
             None => Err({
                 self.ring.note_undecided(self);
                 format!(
-                    "the sign of {} is neither exact nor proved on the domain: sign and abs in a claim's formulas are decided only exactly (a sign taken at domain points would be the condition the formula states)",
+                    "the sign of {} is neither exact nor proved on the domain: sign and abs in a claim's formulas are decided only by proof or a stated hypothesis (a sign taken at domain points would be the condition the formula states)",
                     self.render_short(80)
                 )
             }),

@@ -27,7 +27,7 @@ pub struct SignSplit {
     /// The value as the prover renders it (cut to a readable length).
     pub what: String,
     /// The whole rendering, by which a later ring recognises the value.
-    text: String,
+    pub(crate) text: String,
     num: Poly,
     den: Poly,
     /// The names of the context's variables (indeterminates by name, others empty).
@@ -77,6 +77,43 @@ impl SignSplit {
     /// Whether `other` is the same value (as the prover renders it).
     pub fn same(&self, other: &SignSplit) -> bool {
         self.text == other.text
+    }
+
+    /// The value in `ring`, whose indeterminates of the same names stand for it (`None`
+    /// where one of them is missing there).
+    pub(crate) fn in_ring(&self, ring: &Ring) -> Option<Sym> {
+        let vars: Vec<Option<Sym>> = {
+            let st = ring.state();
+            (self.names.iter())
+                .map(|n| {
+                    (!n.is_empty())
+                        .then(|| {
+                            (st.vars.iter()).position(|v| {
+                                v.name == *n && matches!(v.kind, VarKind::Indeterminate)
+                            })
+                        })
+                        .flatten()
+                })
+                .collect::<Vec<Option<usize>>>()
+        }
+        .into_iter()
+        .map(|j| j.map(|j| ring.var_sym(j)))
+        .collect();
+        let poly = |p: &Poly| -> Option<Sym> {
+            let mut terms: Vec<(rug::Integer, Vec<u64>)> = Vec::new();
+            p.for_each_term(|c, e| terms.push((c.clone(), e.to_vec())));
+            let mut acc = ring.integer(0);
+            for (c, e) in terms {
+                let mut t = ring.rational(&rug::Rational::from(c));
+                for (i, &k) in e.iter().enumerate().filter(|(_, k)| **k > 0) {
+                    let v = vars.get(i).cloned().flatten()?;
+                    t = t.try_mul(&v.try_powi(i32::try_from(k).ok()?).ok()?).ok()?;
+                }
+                acc = acc.try_add(&t).ok()?;
+            }
+            Some(acc)
+        };
+        poly(&self.num)?.try_div(&poly(&self.den)?).ok()
     }
 
     /// The value of a polynomial and a bound on its rounding error.
@@ -140,11 +177,12 @@ impl Ring {
         self.state().undecided.clone()
     }
 
-    /// Remembers the first undecided sign of the ring, when it can split the domain.
+    /// Remembers the first undecided sign of the ring that can split the domain.
     pub(crate) fn note_undecided(&self, x: &Sym) {
-        if self.state().undecided.is_none() {
-            let split = x.split();
-            self.state().undecided = split;
+        if self.state().undecided.is_none()
+            && let Some(split) = x.split()
+        {
+            self.state().undecided = Some(split);
         }
     }
 }
@@ -198,11 +236,13 @@ impl Sym {
                     .ok_or_else(|| {
                         AlgebraError::Internal("a sign symbol that is not a root".into())
                     })?;
+                let var = x.single_indeterminate();
                 self.ring.state().folded.push(Folded {
                     value: fold.text.clone(),
                     name: name.clone(),
                     root,
                     positive,
+                    var,
                 });
                 self.ring.note(format!(
                     "{name} = sign({}): a sign symbol, so that one normal form covers both signs of {}",
@@ -212,41 +252,5 @@ impl Sym {
             }
         };
         Ok(Some(if s > 0 { sigma } else { sigma.negate() }))
-    }
-
-    /// `+1` for `σ·x` (or `−1` for its negative) where `σ` is the sign symbol of a folded
-    /// value `x` ([`Sym::folded_sign`]): the definition of `σ`.
-    pub(crate) fn defined_sign(&self) -> Option<i32> {
-        let st = self.ring.state();
-        if st.folded.is_empty() {
-            return None;
-        }
-        let defs: Vec<String> = st.folded.iter().map(|f| f.positive.clone()).collect();
-        drop(st);
-        let text = self.render();
-        if defs.contains(&text) {
-            return Some(1);
-        }
-        defs.contains(&self.negate().render()).then_some(-1)
-    }
-
-    /// The sign of this value by a hypothesis of the ring (the condition of the part of
-    /// the domain the proof is on, [`super::RingOptions::hypotheses`]).
-    pub(crate) fn hypothesis_sign(&self) -> Option<i32> {
-        let hyps = &self.ring.options().hypotheses;
-        if hyps.is_empty() {
-            return None;
-        }
-        let text = self.render();
-        let neg = self.negate().render();
-        hyps.iter().find_map(|(h, s)| {
-            if h.text == text {
-                Some(*s)
-            } else if h.text == neg {
-                Some(-*s)
-            } else {
-                None
-            }
-        })
     }
 }

@@ -84,6 +84,7 @@ impl Ring {
         let one = super::flint::Poly::from_i64(&self.inner.ctx, 1);
         let note = format!("a sign ({name}² = 1: both {name} = 1 and {name} = -1)");
         let i = self.inner.add_root(name.to_string(), one, v, note)?;
+        self.state().roots[i].principal = false;
         Ok(self.root_sym(i))
     }
     /// The sign symbols of the ring (roots of the radicand 1), in order of creation.

@@ -85,12 +85,15 @@ pub(super) fn apply(ev: &Evaluator<'_, Sym>, lemmas: &[Lemma<'_>]) -> AlgResult<
         let value = eval(ev, l.rhs).map_err(fail)?;
         remember(l.name, &args, &value).map_err(fail)?;
         let ring = ev.like().ring().clone();
-        ring.assume(format!(
-            "{}(…) = {}: by {}, proved separately (on the branch its proof assumes)",
-            l.name,
-            l.rhs.text.trim(),
-            l.claim.id
-        ));
+        ring.assume(
+            crate::algebra::AssumptionKind::Lemma(l.claim.id.clone()),
+            format!(
+                "{}(…) = {}: by {}, proved separately (under its own hypotheses)",
+                l.name,
+                l.rhs.text.trim(),
+                l.claim.id
+            ),
+        );
     }
     Ok(())
 }

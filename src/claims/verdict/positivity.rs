@@ -33,6 +33,17 @@ enum PVal {
 /// The parametrization of the claim's sampled variables, or `None` when none of them
 /// can be parametrized.
 pub(super) fn parametrization(vars: &[(String, &PExpr)]) -> Option<Arc<Parametrization>> {
+    let mut par = parametrized(vars, false)?;
+    if let Some(exact) = parametrized(vars, true) {
+        par.set_alternative(exact);
+    }
+    Some(Arc::new(par))
+}
+
+/// The parametrization with each `uniform(lo, hi)` relaxed as the module says, or, with
+/// `exact`, as the interval itself: `(lo + hi·t)/(1 + t)`, `t > 0` (the box the domain
+/// lies in, which proves signs such as `1 − |v|² > 0` that the relaxed ranges lose).
+fn parametrized(vars: &[(String, &PExpr)], exact: bool) -> Option<Parametrization> {
     let mut par = Parametrization::new();
     let mut env: BTreeMap<String, PVal> = BTreeMap::new();
     for (name, def) in vars {
@@ -40,7 +51,7 @@ pub(super) fn parametrization(vars: &[(String, &PExpr)]) -> Option<Arc<Parametri
             continue;
         }
         let mut ranges = Vec::new();
-        let Some(v) = value(&mut par, &env, &def.expr, (name, &mut ranges)) else {
+        let Some(v) = value(&mut par, &env, &def.expr, (name, &mut ranges, exact)) else {
             continue;
         };
         let text = format!("{name} = {}", relaxed_text(&def.text, &ranges));
@@ -55,7 +66,7 @@ pub(super) fn parametrization(vars: &[(String, &PExpr)]) -> Option<Arc<Parametri
         }
         env.insert(name.clone(), v);
     }
-    (!par.is_empty()).then(|| Arc::new(par))
+    (!par.is_empty()).then_some(par)
 }
 
 /// Is the definition built only from numbers, parametrized variables, arithmetic,
@@ -102,7 +113,7 @@ fn value(
     par: &mut Parametrization,
     env: &BTreeMap<String, PVal>,
     e: &Expr,
-    (var, ranges): (&str, &mut Vec<String>),
+    (var, ranges, exact): (&str, &mut Vec<String>, bool),
 ) -> Option<PVal> {
     let scalar = |v: PVal| match v {
         PVal::Scalar(x) => Some(x),
@@ -119,11 +130,11 @@ fn value(
         }
         ExprKind::Name(n) => env.get(n)?.clone(),
         ExprKind::Unary(UnOp::Neg, a) => {
-            PVal::Scalar(scalar(value(par, env, a, (var, ranges))?)?.neg())
+            PVal::Scalar(scalar(value(par, env, a, (var, ranges, exact))?)?.neg())
         }
         ExprKind::Binary(op, a, b) => {
-            let x = scalar(value(par, env, a, (var, ranges))?)?;
-            let y = scalar(value(par, env, b, (var, ranges))?)?;
+            let x = scalar(value(par, env, a, (var, ranges, exact))?)?;
+            let y = scalar(value(par, env, b, (var, ranges, exact))?)?;
             PVal::Scalar(match op {
                 BinOp::Add => x.add(&y),
                 BinOp::Sub => x.sub(&y),
@@ -142,22 +153,36 @@ fn value(
         ExprKind::Call(f, args) if f == "vec" && args.len() == 3 => {
             let mut xs = Vec::new();
             for a in args {
-                xs.push(scalar(value(par, env, a, (var, ranges))?)?);
+                xs.push(scalar(value(par, env, a, (var, ranges, exact))?)?);
             }
             PVal::Vector(xs)
         }
         ExprKind::Call(f, args) if f == "uniform" && args.len() == 2 => {
-            let lo = scalar(value(par, env, &args[0], (var, ranges))?)?.as_constant()?;
-            let hi = scalar(value(par, env, &args[1], (var, ranges))?)?.as_constant()?;
-            PVal::Scalar(relaxed(
-                par,
-                &format!("t{}_{var}", ranges.len() + 1),
-                (&lo, &hi),
-                ranges,
-            )?)
+            let lo = scalar(value(par, env, &args[0], (var, ranges, exact))?)?.as_constant()?;
+            let hi = scalar(value(par, env, &args[1], (var, ranges, exact))?)?.as_constant()?;
+            let name = format!("t{}_{var}", ranges.len() + 1);
+            PVal::Scalar(if exact {
+                interval(par, &name, (&lo, &hi), ranges)?
+            } else {
+                relaxed(par, &name, (&lo, &hi), ranges)?
+            })
         }
         _ => return None,
     })
+}
+
+/// `uniform(lo, hi)` as `(lo + hi·t)/(1 + t)`, `t > 0`: the interval itself.
+fn interval(
+    par: &mut Parametrization,
+    name: &str,
+    (lo, hi): (&rug::Rational, &rug::Rational),
+    ranges: &mut Vec<String>,
+) -> Option<ParamRat> {
+    let one = par.constant(&rug::Rational::from(1));
+    let t = par.positive(name)?;
+    let v = par.constant(lo).add(&par.constant(hi).mul(&t)).div(&one.add(&t))?;
+    ranges.push(format!("({lo} + {hi}*{name})/(1 + {name})"));
+    Some(v)
 }
 
 /// A parameter for `uniform(lo, hi)`, on a range that contains `(lo, hi)`.

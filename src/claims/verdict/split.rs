@@ -81,7 +81,7 @@ fn parts(
         return Ok(vec![(label, p)]);
     }
     let split = match &p.split {
-        Some(s) if region.signs.len() < MAX_SPLITS && !input.signs.strict => s.clone(),
+        Some(s) if region.signs.len() < MAX_SPLITS => s.clone(),
         _ => return Err(Box::new((label, p))),
     };
     // the sign of an indeterminate first as a sign symbol: one proof for both signs

@@ -9,16 +9,14 @@
 //! values: the proof enumerates them as cases and every case must be proved.  A variable
 //! without primitives is evaluated symbolically from the earlier ones.
 //!
-//! **Decisions.**  Comparisons, `abs`, the sign of a square root and the choice of a
-//! regime are decided at domain points of the claim (the prover's shadows) and recorded
-//! as assumptions.  So is the condition of an `if` that selects between two formulas
-//! (the regime of (M-M 1): `if up then … else …`).  `abs` and `sign` in the catalogue's
-//! formulas are decided only where the sign is exact or proved (see
-//! `Scalar::stated_sign`).  A claim whose own formulas take `min`, `max`, or an
-//! indicator `if c then 1 else 0` (a branch that is a number) states a condition: it is
-//! proved only when every sign, comparison and square-root branch it decides is proved
-//! with the domain's parametrization by positive parameters (module `positivity`,
-//! [`crate::algebra::positivity`]), and none is taken at domain points.
+//! **Decisions.**  Comparisons, `abs`, `sign`, `min`, `max`, the branch of a square
+//! root, the condition of an `if` and the choice of a regime are decided as
+//! [`crate::algebra::Decision`]s: proved on the domain (its parametrization by
+//! positive parameters, module `positivity`), given by a hypothesis the claim states
+//! (field `hypotheses`), fixed by the definition of a sign symbol, or by the part of a
+//! split domain the proof is on.  The values at the domain points never decide one: a
+//! sign that none of these decides splits the domain by it (module `split`), or leaves
+//! the claim unproved with that sign as the reason.
 //! A comparison yields a truth value, which only an `if` can use.
 //!
 //! ```
@@ -49,7 +47,8 @@ use super::context::{Ctx, eval};
 pub use super::proof_info::{ProofInfo, ProofMethod};
 use super::result::Evidence;
 use crate::algebra::{
-    AlgResult, AlgebraError, BaseHint, Outcome, Proof, Ring, RingOptions, Sym, prove_components,
+    AlgResult, AlgebraError, AssumptionKind, BaseHint, Outcome, Proof, Ring, RingOptions, Sym,
+    prove_components,
 };
 use crate::claims::ast::{Expr, ExprKind};
 use crate::claims::builtins::Primitive;
@@ -760,7 +759,10 @@ fn parametrize(
         "the equations {} at the parametrization are proved to vanish together with the claim",
         imp.equations()
     ));
-    ring.assume(format!("{}: {}", plan.name, imp.branch()));
+    ring.assume(
+        AssumptionKind::Branch(plan.name.clone()),
+        format!("{}: {}", plan.name, imp.branch()),
+    );
     Ok((p.checks, p.params))
 }
 
@@ -823,7 +825,10 @@ fn stated_value(
         "the claim states the value of {name}: the other side is substituted into {}, and every component vanishes",
         imp.stated_equations()
     ));
-    ring.assume(format!("{name}: {}", imp.branch()));
+    ring.assume(
+        AssumptionKind::Branch(name.to_string()),
+        format!("{name}: {}", imp.branch()),
+    );
     Ok(Some(comps))
 }
 
@@ -843,7 +848,6 @@ pub(super) fn prove_case(
         certificate,
         base_hints,
         positivity: signs.positivity.clone(),
-        strict_signs: signs.strict,
         hypotheses: region.signs.clone(),
         sign_folds: region.folds.clone(),
         ..RingOptions::default()
@@ -877,11 +881,9 @@ pub(super) fn prove_case(
     })
 }
 
-/// How the proof decides signs: the domain's parametrization, and whether every sign
-/// must be proved with it (a claim that states a condition).
+/// How the proof decides signs: the domain's parametrization.
 pub(super) struct Signs {
     positivity: Option<std::sync::Arc<crate::algebra::positivity::Parametrization>>,
-    pub(super) strict: bool,
 }
 
 /// Attempts a symbolic proof of `lhs = rhs` on the claim's domain.
@@ -900,7 +902,6 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
     }
     let signs = Signs {
         positivity: super::positivity::parametrization(sampler.variables()),
-        strict: condition.is_some(),
     };
     if let (Some(why), None) = (&condition, &signs.positivity) {
         return ProofInfo::none(format!(

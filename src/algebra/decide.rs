@@ -1,0 +1,272 @@
+//! The one place where a proof decides a sign.  Every sign, comparison, `abs`,
+//! square-root branch and regime that a proof takes is a [`Decision`]: proved on the
+//! claim's domain, given by a hypothesis (one the catalogue states, or the condition of
+//! the part of the domain a split proof is on), fixed by a definition (a sign symbol
+//! `σ = sign(x)` has `σ·x > 0`), or undecided.  An undecided sign is never taken from
+//! the values at domain points: the proof stops there (and may split the domain by it,
+//! module [`super::split`]).
+//!
+//! **Proved signs.**  A value `N/D` has the sign of `N` times that of `D`.  The sign of
+//! a polynomial is proved, in this order,
+//! 1. by the parametrization of the domain by positive parameters (module
+//!    [`super::positivity`]), where the positive square roots count as parameters;
+//! 2. where the polynomial is `a + b·r` in its most significant square root `r` (the
+//!    positive root of a radicand proved positive): from the signs of `a` and `b`, and,
+//!    where they differ, from the sign of `a² − b²·r²` (the side that wins), each proved
+//!    the same way;
+//! 3. where it is `b·σ` for a sign symbol `σ = sign(x)` and `x` divides `b`: from the sign
+//!    of `b/x`, since `σ·x > 0`.
+//!
+//! ```
+//! use eulertop::algebra::{Ring, RingOptions};
+//! use eulertop::algebra::positivity::Parametrization;
+//! use std::sync::Arc;
+//! // A > B > C > 0 as C = t_C, B = C + t_B, A = B + t_A
+//! let mut par = Parametrization::new();
+//! let c = par.positive("t_C").unwrap();
+//! let b = c.add(&par.positive("t_B").unwrap());
+//! let a = b.add(&par.positive("t_A").unwrap());
+//! par.bind("C", c, "C = t_C".into());
+//! par.bind("B", b, "B = C + t_B".into());
+//! par.bind("A", a, "A = B + t_A".into());
+//! let ring = Ring::new(RingOptions { points: 1, positivity: Some(Arc::new(par)), ..Default::default() });
+//! let a = ring.indeterminate_f64("A", &[3.0]).unwrap();
+//! let b = ring.indeterminate_f64("B", &[2.0]).unwrap();
+//! let c = ring.indeterminate_f64("C", &[1.0]).unwrap();
+//! // √((A − B)(A − C)) < A: the roots are positive, and (A − B)(A − C) − A² < 0
+//! let r = ((a.clone() - b) * (a.clone() - c)).sqrt().unwrap();
+//! assert_eq!((r - a).sign().unwrap(), -1);
+//! // a sign that is not proved is not decided: x is positive at the one point only
+//! let x = ring.indeterminate_f64("x", &[0.5]).unwrap();
+//! assert!(x.sign().is_err());
+//! ```
+
+use super::flint::Poly;
+use super::positivity::Parametrization;
+use super::ring::Ring;
+use super::sym::Sym;
+
+/// How a sign was decided.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Decision {
+    /// Proved on the claim's domain (exact, or by the tests of this module).
+    Proved(i32),
+    /// By a hypothesis: the catalogue's statement (its label), or the condition of the
+    /// part of the domain the proof is on.
+    Hypothesis(i32, String),
+    /// By the definition of a sign symbol (`σ·x > 0` for `σ = sign(x)`).
+    Definition(i32),
+    /// Not decided: neither proved nor given.
+    Unknown,
+}
+
+impl Decision {
+    /// The sign, where decided.
+    pub fn sign(&self) -> Option<i32> {
+        match self {
+            Decision::Proved(s) | Decision::Hypothesis(s, _) | Decision::Definition(s) => Some(*s),
+            Decision::Unknown => None,
+        }
+    }
+}
+
+/// How deep the test of rule 2 recurses (one square root per level).
+const MAX_DEPTH: usize = 8;
+/// The largest polynomial, in terms, that rule 2 forms (`a² − b²·r²`).
+const MAX_TERMS: usize = 4_000;
+
+impl Sym {
+    /// The sign of a real value, decided as the module says; never from the points.
+    pub fn decision(&self) -> Decision {
+        if self.is_exact_zero() {
+            return Decision::Proved(0);
+        }
+        if let Some(q) = self.as_rational() {
+            return Decision::Proved(if q < 0 { -1 } else { 1 });
+        }
+        if let Some(s) = self.proved_sign() {
+            return Decision::Proved(s);
+        }
+        if let Some(s) = self.defined_sign() {
+            return Decision::Definition(s);
+        }
+        match self.hypothesis_sign() {
+            Some((s, source)) => Decision::Hypothesis(s, source),
+            None => Decision::Unknown,
+        }
+    }
+
+    /// [`Sym::decision`]'s sign, where decided.
+    pub(crate) fn decided_sign(&self) -> Option<i32> {
+        self.decision().sign()
+    }
+}
+
+impl Ring {
+    /// The sign of a polynomial of the ring's context on the domain, proved by rules 1–3
+    /// of the module; `None` where they do not prove it.
+    pub(crate) fn tower_sign(&self, par: &Parametrization, p: &Poly, depth: usize) -> Option<i32> {
+        if p.is_zero() {
+            return None;
+        }
+        if let Some(c) = p.as_constant() {
+            return Some(if c < 0 { -1 } else { 1 });
+        }
+        let images = self.sign_images(par, p)?;
+        if let Some(s) = par.poly_sign(p, &images) {
+            return Some(s);
+        }
+        if depth >= MAX_DEPTH || p.len() > MAX_TERMS {
+            return None;
+        }
+        let inner = &self.inner;
+        // the most significant root: the lowest variable index among the roots
+        let rv = (p.used_vars().into_iter()).find(|&v| inner.root_of_var(v).is_some())?;
+        let i = inner.root_of_var(rv)?;
+        let (radicand, positive, sign_symbol) = {
+            let st = self.state();
+            let r = st.roots.get(i)?;
+            (r.radicand.clone(), r.is_positive(), r.radicand.is_one())
+        };
+        let a = p.coefficient_in(rv, 0);
+        let b = p.coefficient_in(rv, 1);
+        if sign_symbol {
+            return self.folded_product_sign(par, &a, &b, i, depth);
+        }
+        if !positive || self.tower_sign(par, &radicand, depth + 1) != Some(1) {
+            return None;
+        }
+        if a.is_zero() {
+            return self.tower_sign(par, &b, depth + 1);
+        }
+        let sa = self.tower_sign(par, &a, depth + 1)?;
+        let sb = self.tower_sign(par, &b, depth + 1)?;
+        if sa == sb {
+            return Some(sa);
+        }
+        let q = inner.reduce(a.mul(&a).sub(&b.mul(&b).mul(&radicand)));
+        Some(sa * self.tower_sign(par, &q, depth + 1)?)
+    }
+
+    /// Rule 3: the sign of `a + b·σ` for the sign symbol of root `i`, where `a = 0`, `σ`
+    /// is `sign(x)` for an indeterminate `x`, and `x` divides `b`.
+    fn folded_product_sign(
+        &self,
+        par: &Parametrization,
+        a: &Poly,
+        b: &Poly,
+        i: usize,
+        depth: usize,
+    ) -> Option<i32> {
+        if !a.is_zero() {
+            return None;
+        }
+        let (var, s) =
+            (self.state().folded.iter()).find_map(|f| (f.root == i).then_some(f.var))??;
+        let x = Poly::var(b.ctx(), var);
+        let quotient = b.divides(&x).ok()??;
+        // b·σ = (b/x)·(σ·x), and σ·x has the sign s by the definition of σ
+        Some(s * self.tower_sign(par, &quotient, depth + 1)?)
+    }
+}
+
+impl Sym {
+    /// `+1` for `σ·x` (or `−1` for its negative) where `σ` is the sign symbol of a folded
+    /// value `x` ([`Sym::folded_sign`]): the definition of `σ`.
+    pub(crate) fn defined_sign(&self) -> Option<i32> {
+        let st = self.ring.state();
+        if st.folded.is_empty() {
+            return None;
+        }
+        let defs: Vec<String> = st.folded.iter().map(|f| f.positive.clone()).collect();
+        drop(st);
+        let text = self.render();
+        if defs.contains(&text) {
+            return Some(1);
+        }
+        defs.contains(&self.negate().render()).then_some(-1)
+    }
+
+    /// The sign of this value by a hypothesis: the condition of the part of the domain
+    /// the proof is on ([`super::RingOptions::hypotheses`]), or a hypothesis the claim
+    /// states ([`Ring::state_hypothesis`]), with the hypothesis' label.  The value must
+    /// be a hypothesis' value times a factor of proved sign (or the value itself, or its
+    /// negative).
+    pub(crate) fn hypothesis_sign(&self) -> Option<(i32, String)> {
+        let parts = &self.ring.options().hypotheses;
+        let stated = self.ring.state().stated.clone();
+        if parts.is_empty() && stated.is_empty() {
+            return None;
+        }
+        let (text, neg) = (self.render(), self.negate().render());
+        for (h, s) in parts {
+            let label = format!("{} {} 0", h.what, if *s > 0 { ">" } else { "<" });
+            if h.text == text {
+                return Some((*s, label));
+            }
+            if h.text == neg {
+                return Some((-*s, label));
+            }
+            if let Some(q) = h.in_ring(&self.ring).and_then(|v| self.ratio_sign(&v)) {
+                return Some((q * s, label));
+            }
+        }
+        for (val, s, label) in stated {
+            let v = Sym::from_val(&self.ring, val, None);
+            if let Some(q) = self.ratio_sign(&v) {
+                self.ring.assume(
+                    super::ring::AssumptionKind::Hypothesis(label.clone()),
+                    label.clone(),
+                );
+                return Some((q * s, label));
+            }
+        }
+        None
+    }
+
+    /// The proved sign of `self / h`.
+    fn ratio_sign(&self, h: &Sym) -> Option<i32> {
+        if h.is_exact_zero() {
+            return None;
+        }
+        let q = self.try_div(h).ok()?;
+        if let Some(r) = q.as_rational() {
+            return (r != 0).then(|| if r < 0 { -1 } else { 1 });
+        }
+        q.proved_sign()
+    }
+
+    /// The context variable of the one indeterminate of which this value is a constant
+    /// multiple, and the sign of that constant.
+    pub(crate) fn single_indeterminate(&self) -> Option<(usize, i32)> {
+        let (num, den) = (&self.val.num, &self.val.den);
+        let den = den.as_constant()?;
+        if num.len() != 1 {
+            return None;
+        }
+        let mut out = None;
+        num.for_each_term(|c, e| {
+            let ones: Vec<usize> = (0..e.len()).filter(|&i| e[i] != 0).collect();
+            if let [i] = ones[..]
+                && e[i] == 1
+            {
+                out = Some((i, (c.cmp0() as i32) * (den.cmp0() as i32)));
+            }
+        });
+        let (i, s) = out?;
+        let j = i.checked_sub(self.ring.inner.opts.max_roots)?;
+        let st = self.ring.state();
+        matches!(st.vars.get(j)?.kind, super::ring::VarKind::Indeterminate).then_some((i, s))
+    }
+}
+
+impl Ring {
+    /// States a hypothesis of the claim: `value` has the sign `sign` on the domain (the
+    /// catalogue says so, quoting the paper; `label` names it).  A sign decided by it is
+    /// recorded as an assumption of the proof.
+    pub fn state_hypothesis(&self, value: &Sym, sign: i32, label: String) {
+        let val = (*value.val).clone();
+        let mut st = self.state();
+        st.stated.push((val, sign, label));
+    }
+}
