@@ -67,8 +67,12 @@ named_enum! {
         Holds = "holds",
         /// False, with a counterexample.
         Refuted = "refuted",
-        /// Exactly true at random rational points (Schwartz–Zippel).
+        /// Proved symbolically on the whole stated domain.
         Proved = "proved",
+        /// True by construction: the model defines its map by this very equation (the
+        /// symbolic normal form confirms that the solver solves it; no theorem of the
+        /// paper is proved by it).
+        Construction = "construction",
         /// Neither.
         Inconclusive = "inconclusive",
         /// A definition: no verdict.

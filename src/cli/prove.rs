@@ -53,8 +53,8 @@ pub fn derivation(id: &str, printed: &str, p: &ProofInfo) -> String {
     );
     list(
         &mut out,
-        "assumptions (decided on the claim's domain)",
-        &p.assumptions,
+        "hypotheses (stated by the claim, quoted from the paper; lemmas proved separately)",
+        &p.hypotheses.iter().map(|h| h.line()).collect::<Vec<_>>(),
     );
     match &p.reason {
         None => out.push_str("normal form of lhs - rhs: 0: proved\n"),

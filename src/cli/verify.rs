@@ -87,6 +87,7 @@ struct Summary {
     holds: usize,
     refuted: usize,
     proved: usize,
+    construction: usize,
     inconclusive: usize,
     defined: usize,
     unexpected: Vec<String>,
@@ -121,6 +122,7 @@ fn summary(results: &[ClaimResult], bits: &[u32]) -> Summary {
         holds: n(Verdict::Holds),
         refuted: n(Verdict::Refuted),
         proved: n(Verdict::Proved),
+        construction: n(Verdict::Construction),
         inconclusive: n(Verdict::Inconclusive),
         defined: n(Verdict::Defined),
         unexpected: results
@@ -330,10 +332,11 @@ fn print_text(
     }
     writeln!(
         w,
-        "\n{} claims: {} holds, {} proved, {} refuted, {} inconclusive, {} definitions; {} not as expected{}",
+        "\n{} claims: {} holds, {} proved, {} by construction, {} refuted, {} inconclusive, {} definitions; {} not as expected{}",
         sum.claims,
         sum.holds,
         sum.proved,
+        sum.construction,
         sum.refuted,
         sum.inconclusive,
         sum.defined,

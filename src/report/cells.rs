@@ -10,6 +10,7 @@ pub fn verdict_badge(v: Verdict) -> &'static str {
     match v {
         Verdict::Holds => "✓ holds",
         Verdict::Proved => "✓✓ proved (symbolic)",
+        Verdict::Construction => "≡ by construction",
         Verdict::Refuted => "✗ refuted",
         Verdict::Inconclusive => "? inconclusive",
         Verdict::Defined => "≔ definition",

@@ -22,9 +22,10 @@ pub fn counts_line(results: &[ClaimResult]) -> String {
     let g = |k: &str| c.get(k).copied().unwrap_or(0);
     let unexpected = results.iter().filter(|r| !r.as_expected).count();
     format!(
-        "{} claims: {} proved, {} hold, {} refuted, {} inconclusive, {} definitions; {} differ from the expected verdict",
+        "{} claims: {} proved, {} by construction, {} hold, {} refuted, {} inconclusive, {} definitions; {} differ from the expected verdict",
         results.len(),
         g("proved"),
+        g("construction"),
         g("holds"),
         g("refuted"),
         g("inconclusive"),

@@ -47,8 +47,8 @@ pub fn proof_block(p: &ProofInfo) -> String {
     );
     items(
         &mut s,
-        "assumptions (decided on the domain)",
-        &p.assumptions,
+        "hypotheses (stated by the claim, quoted from the paper; lemmas proved separately)",
+        &p.hypotheses.iter().map(|h| h.line()).collect::<Vec<_>>(),
     );
     s.push('\n');
     s

@@ -136,10 +136,14 @@ fn simple_status(claims: &[&ClaimResult]) -> StatementStatus {
     if !inconclusive.is_empty() {
         return StatementStatus::Inconclusive(inconclusive);
     }
-    if claims.iter().all(|r| r.verdict == Verdict::Defined) {
+    // a claim that holds by construction restates the model's own equation: the
+    // statement rests on the claims with content
+    let content = |r: &&&ClaimResult| r.verdict != Verdict::Construction;
+    if claims.iter().filter(content).all(|r| r.verdict == Verdict::Defined) {
         StatementStatus::Definition
     } else if claims
         .iter()
+        .filter(content)
         .all(|r| matches!(r.verdict, Verdict::Proved | Verdict::Defined))
     {
         StatementStatus::Proved
@@ -221,7 +225,7 @@ fn correction_holds(s: &Structure, id: &str) -> bool {
     s.corrections(id).iter().any(|f| {
         matches!(
             f.verdict,
-            Verdict::Holds | Verdict::Proved | Verdict::Defined
+            Verdict::Holds | Verdict::Proved | Verdict::Construction | Verdict::Defined
         )
     })
 }
@@ -375,6 +379,7 @@ fn verdict_class(v: Verdict) -> &'static str {
     match v {
         Verdict::Holds => "holds",
         Verdict::Proved => "proved",
+        Verdict::Construction => "construction",
         Verdict::Refuted => "refuted",
         Verdict::Inconclusive => "inconclusive",
         Verdict::Defined => "defined",

@@ -97,6 +97,36 @@ pub struct Hint {
     pub origin: Origin,
 }
 
+/// A hypothesis a proof may rest on (`[hypothesis.NAME]`): the paper states it, the
+/// catalogue quotes it, and a claim that lists it in `hypotheses` states it.
+#[derive(Debug, Clone)]
+pub struct Hypothesis {
+    /// The table's name.
+    pub name: String,
+    /// What it says.
+    pub statement: String,
+    /// The paper's words (where and how it says it).
+    pub paper: String,
+    /// What it fixes.
+    pub kind: HypothesisKind,
+    /// Where it is written.
+    pub origin: Origin,
+}
+
+/// What a [`Hypothesis`] fixes.
+#[derive(Debug, Clone)]
+pub enum HypothesisKind {
+    /// The solution branch of an implicit map (its name), which the solver selects.
+    Branch(String),
+    /// A condition `lhs > rhs` or `lhs < rhs`: the sign of `lhs − rhs`.
+    Sign {
+        /// The comparison as written.
+        condition: PExpr,
+        /// `1` for `>`, `−1` for `<`.
+        sign: i32,
+    },
+}
+
 /// A sampling domain.
 #[derive(Debug, Clone)]
 pub struct Domain {
@@ -163,6 +193,11 @@ pub struct Claim {
     pub uses: Vec<Located>,
     /// A proof hint (identity claims only).
     pub hint: Option<Hint>,
+    /// The hypotheses the claim states (names of [`Hypothesis`] tables).
+    pub hypotheses: Vec<Located>,
+    /// Why the claim holds by construction: its equation is the one by which the model
+    /// defines its map (`None` for a claim with content).
+    pub construction: Option<String>,
 }
 
 /// The whole catalogue.
@@ -178,6 +213,17 @@ pub struct Catalogue {
     pub sections: Vec<(String, String, String)>,
     /// Whether the lemmas that proofs rest on are proved (filled as they are checked).
     pub lemma_memo: LemmaMemo,
+    /// The hypotheses claims may state, by name.
+    pub hypotheses: BTreeMap<String, Hypothesis>,
+}
+
+impl Catalogue {
+    /// The hypotheses a claim states.
+    pub fn hypotheses_of<'a>(&'a self, claim: &Claim) -> Vec<&'a Hypothesis> {
+        (claim.hypotheses.iter())
+            .filter_map(|h| self.hypotheses.get(&h.value))
+            .collect()
+    }
 }
 
 /// Memo of symbolic proofs: key → the proof record (of the verdict layer's type), so

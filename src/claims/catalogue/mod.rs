@@ -84,6 +84,7 @@ struct Assembly {
     ids: BTreeMap<String, String>,
     /// The `definition` functions with where they are written.
     defs: Vec<(Binding, Origin)>,
+    hypotheses: BTreeMap<String, claim::Hypothesis>,
 }
 
 /// Loads a catalogue from `(file name, text)` pairs, with the host functions of
@@ -141,6 +142,7 @@ pub fn load_sources(
         registry,
         sections: a.sections,
         lemma_memo: LemmaMemo::default(),
+        hypotheses: a.hypotheses,
     };
     check::check(&cat, &a.defs)?;
     structure::check(&cat)?;
@@ -164,6 +166,13 @@ fn load_file(file: &Arc<SourceFile>, a: &mut Assembly) -> Result<(), LoadError> 
             return Err(file.error_at(at, at + 1, format!("domain '{dname}' defined twice")));
         }
         a.domains.insert(dname.clone(), dom);
+    }
+    for (hname, h) in &parsed.hypothesis {
+        let hyp = hypothesis(file, hname, h)?;
+        if a.hypotheses.insert(hname.clone(), hyp).is_some() {
+            let at = h.span().start;
+            return Err(file.error_at(at, at + 1, format!("hypothesis '{hname}' defined twice")));
+        }
     }
     for c in &parsed.claim {
         let claim = build_claim(file, c, None)?;
@@ -189,6 +198,50 @@ fn load_file(file: &Arc<SourceFile>, a: &mut Assembly) -> Result<(), LoadError> 
         a.claims.push(claim);
     }
     Ok(())
+}
+
+/// A `[hypothesis.NAME]` table: exactly one of `branch` and `when`; a `when` is a
+/// comparison `a > b` or `a < b`.
+fn hypothesis(
+    file: &Arc<SourceFile>,
+    name: &str,
+    h: &Spanned<raw::HypothesisToml>,
+) -> Result<claim::Hypothesis, LoadError> {
+    use crate::claims::ast::{BinOp, ExprKind};
+    let t = h.get_ref();
+    let at = |s: &Spanned<String>, m: String| file.error_at(s.span().start, s.span().end, m);
+    let kind = match (&t.branch, &t.when) {
+        (Some(b), None) => claim::HypothesisKind::Branch(b.get_ref().clone()),
+        (None, Some(w)) => {
+            let p = fields::pexpr(file, w)?;
+            let sign = match &p.expr.kind {
+                ExprKind::Binary(BinOp::Gt, _, _) => 1,
+                ExprKind::Binary(BinOp::Lt, _, _) => -1,
+                _ => {
+                    return Err(at(
+                        w,
+                        format!("hypothesis '{name}': 'when' must be a comparison a > b or a < b"),
+                    ));
+                }
+            };
+            claim::HypothesisKind::Sign { condition: p, sign }
+        }
+        _ => {
+            let at0 = h.span().start;
+            return Err(file.error_at(
+                at0,
+                at0 + 1,
+                format!("hypothesis '{name}' needs exactly one of 'branch' and 'when'"),
+            ));
+        }
+    };
+    Ok(claim::Hypothesis {
+        name: name.to_string(),
+        statement: t.statement.get_ref().clone(),
+        paper: t.paper.get_ref().clone(),
+        kind,
+        origin: Origin::of(file, &t.statement),
+    })
 }
 
 fn domain(file: &Arc<SourceFile>, name: &str, d: &Spanned<DomainToml>) -> Result<Dom, LoadError> {

@@ -19,6 +19,9 @@ pub struct FileToml {
     /// `[domain.NAME]` tables.
     #[serde(default)]
     pub domain: BTreeMap<String, Spanned<DomainToml>>,
+    /// `[hypothesis.NAME]` tables: hypotheses that claims may state.
+    #[serde(default)]
+    pub hypothesis: BTreeMap<String, Spanned<HypothesisToml>>,
     /// `[[convention]]` tables: free text, accepted and not evaluated.
     #[serde(default, rename = "convention")]
     pub _conventions: Vec<toml::Value>,
@@ -46,6 +49,20 @@ pub struct DomainToml {
     pub wheres: Vec<Spanned<String>>,
 }
 
+/// `[hypothesis.NAME]`: a hypothesis a proof may rest on, quoted from the paper.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HypothesisToml {
+    /// What it says, for the reader.
+    pub statement: Spanned<String>,
+    /// Where and how the paper says it (a quotation).
+    pub paper: Spanned<String>,
+    /// The implicit map whose solution branch it fixes.
+    pub branch: Option<Spanned<String>>,
+    /// A sign condition, `a > b` or `a < b`, in the claim's names.
+    pub when: Option<Spanned<String>>,
+}
+
 /// The verdicts a claim may expect (not `defined`).
 #[derive(Deserialize, Clone, Copy, Debug, PartialEq, Eq)]
 #[serde(rename_all = "lowercase")]
@@ -56,6 +73,8 @@ pub enum Expect {
     Refuted,
     /// proved
     Proved,
+    /// construction
+    Construction,
     /// inconclusive
     Inconclusive,
 }
@@ -66,6 +85,7 @@ impl From<Expect> for Verdict {
             Expect::Holds => Verdict::Holds,
             Expect::Refuted => Verdict::Refuted,
             Expect::Proved => Verdict::Proved,
+            Expect::Construction => Verdict::Construction,
             Expect::Inconclusive => Verdict::Inconclusive,
         }
     }
@@ -125,6 +145,11 @@ pub struct ClaimToml {
     #[serde(default)]
     pub uses: Vec<Spanned<String>>,
     pub hint: Option<Spanned<HintToml>>,
+    /// Names of the `[hypothesis.NAME]` tables whose hypotheses the claim states.
+    #[serde(default)]
+    pub hypotheses: Vec<Spanned<String>>,
+    /// Why the claim holds by construction (the model defines its map by this equation).
+    pub construction: Option<Spanned<String>>,
 }
 
 /// `hint = { value = "…", multipliers = [...] }`: a proof hint of an identity claim.

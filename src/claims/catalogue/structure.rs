@@ -209,6 +209,14 @@ fn check_uses(cat: &Catalogue, index: &BTreeMap<&str, usize>) -> Result<(), Load
                 return Err(u.error(format!("'{}' is listed twice in uses", u.value)));
             }
         }
+        for h in &c.hypotheses {
+            if !cat.hypotheses.contains_key(&h.value) {
+                return Err(h.error(format!(
+                    "unknown hypothesis '{}' (no [hypothesis.{}] table)",
+                    h.value, h.value
+                )));
+            }
+        }
     }
     Ok(())
 }

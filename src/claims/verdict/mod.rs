@@ -16,6 +16,7 @@ pub mod exact;
 pub mod existence;
 pub mod failure;
 pub mod hinted;
+mod hypotheses;
 pub mod identity;
 pub mod independence;
 pub mod ladder;
@@ -32,6 +33,7 @@ pub use crate::claims::kind::Verdict;
 pub use result::{
     Cause, ClaimResult, Counterexample, Evidence, ExactInfo, FailedSample, Failure, Named, Rung,
 };
+pub use proof_info::HypothesisUse;
 pub use symbolic::{ProofInfo, ProofMethod};
 
 use crate::claims::catalogue::{Body, Catalogue, Claim};
@@ -185,7 +187,11 @@ pub fn run_claim(cat: &Catalogue, claim: &Claim, opts: &Options) -> ClaimResult 
                 .unwrap_or_else(|| "unknown panic".into());
             Err(Failure::bare(Cause::Panic(msg)))
         });
-    let evidence = outcome.unwrap_or_else(Failure::into_evidence);
+    let mut evidence = outcome.unwrap_or_else(Failure::into_evidence);
+    if let (Verdict::Proved, Some(why)) = (evidence.verdict, &claim.construction) {
+        evidence.verdict = Verdict::Construction;
+        evidence.reason = format!("holds by construction: {why} ({})", evidence.reason);
+    }
     ClaimResult {
         elapsed_ms: t0.elapsed().as_secs_f64() * 1e3,
         ..ClaimResult::new(claim, evidence)

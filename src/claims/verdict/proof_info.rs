@@ -12,6 +12,25 @@ pub enum ProofMethod {
     None,
 }
 
+/// A fact a proof rests on besides algebra.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct HypothesisUse {
+    /// `branch` (the solution branch of an implicit map), `sign` (a sign condition the
+    /// claim states) or `lemma` (a step's value proved by another claim).
+    pub kind: &'static str,
+    /// What it says.
+    pub statement: String,
+    /// Where it comes from: `hypothesis.NAME` of the catalogue, or the lemma's claim id.
+    pub source: String,
+}
+
+impl HypothesisUse {
+    /// One line for the reader: "statement (source)".
+    pub fn line(&self) -> String {
+        format!("{} [{}: {}]", self.statement, self.kind, self.source)
+    }
+}
+
 /// The evidence of a proof attempt, as reported.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ProofInfo {
@@ -24,8 +43,9 @@ pub struct ProofInfo {
     pub symbols: Vec<String>,
     /// The relations of the square-root symbols.
     pub relations: Vec<String>,
-    /// The decisions taken from the domain.
-    pub assumptions: Vec<String>,
+    /// What the proof rests on besides algebra: stated hypotheses and lemmas (never a
+    /// decision taken at domain points).
+    pub hypotheses: Vec<HypothesisUse>,
     /// Signs proved with the parametrization of the domain (not assumptions).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub proved_signs: Vec<String>,
@@ -57,7 +77,7 @@ impl ProofInfo {
             reason: Some(reason.into()),
             symbols: Vec::new(),
             relations: Vec::new(),
-            assumptions: Vec::new(),
+            hypotheses: Vec::new(),
             proved_signs: Vec::new(),
             parametrization: None,
             notes: Vec::new(),
@@ -83,10 +103,10 @@ impl ProofInfo {
             format!(", {} cases", self.cases.len())
         };
         format!(
-            "{} symbols, {} relations, {} assumptions{cases}",
+            "{} symbols, {} relations, {} hypotheses{cases}",
             self.symbols.len(),
             self.relations.len(),
-            self.assumptions.len()
+            self.hypotheses.len()
         )
     }
 }

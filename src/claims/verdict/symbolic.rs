@@ -871,6 +871,7 @@ pub(super) fn prove_case(
             checks,
             unknown,
         } = bind_variables(ctx, ring, roles, points, (&plans, &lemmas), hint)?;
+        super::hypotheses::state_signs(ctx, &ev)?;
         let mut pairs = match (hint, &unknown) {
             (Some(h), Some(v)) => super::hinted::sides(ctx, &ev, h, v, sides_of)?,
             _ => sides(&ev, sides_of.0, sides_of.1)?,
@@ -947,12 +948,12 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
             Ok(parts) => {
                 for (label, p) in parts {
                     hints = p.base_hints.clone();
-                    merge(&mut info, &label, p);
+                    merge(ctx, &mut info, &label, p);
                 }
             }
             Err(part) => {
                 let (label, p) = *part;
-                merge(&mut info, &label, p);
+                merge(ctx, &mut info, &label, p);
                 break;
             }
         }
@@ -1029,7 +1030,7 @@ fn prove_signs_jointly(
     let mut info = ProofInfo::none("");
     info.reason = None;
     info.method = ProofMethod::Symbolic;
-    merge(&mut info, &[], p);
+    merge(ctx, &mut info, &[], p);
     info.notes.push(format!(
         "{} {} sign symbols: one normal form covers all {} sign cases",
         signs.join(", "),
@@ -1040,7 +1041,7 @@ fn prove_signs_jointly(
 }
 
 /// Adds one case's proof to the record; a case that is not proved ends the proof.
-fn merge(info: &mut ProofInfo, key: &[String], p: Proof) {
+fn merge(ctx: Ctx<'_>, info: &mut ProofInfo, key: &[String], p: Proof) {
     let label = key.join(", ");
     if let Outcome::NotProved(r) = &p.outcome {
         info.method = ProofMethod::None;
@@ -1051,7 +1052,7 @@ fn merge(info: &mut ProofInfo, key: &[String], p: Proof) {
         });
     }
     if !label.is_empty() {
-        info.cases.push(label);
+        info.cases.push(label.clone());
     }
     let add = |dst: &mut Vec<String>, src: Vec<String>| {
         for s in src {
@@ -1071,10 +1072,24 @@ fn merge(info: &mut ProofInfo, key: &[String], p: Proof) {
     if info.parametrization.is_none() {
         info.parametrization = p.parametrization.clone();
     }
-    add(
-        &mut info.assumptions,
-        p.assumptions.iter().map(|a| a.statement.clone()).collect(),
-    );
+    match super::hypotheses::uses(ctx, &p.assumptions) {
+        Ok(uses) => {
+            for u in uses {
+                if !info.hypotheses.contains(&u) {
+                    info.hypotheses.push(u);
+                }
+            }
+        }
+        Err(why) if info.is_proved() => {
+            info.method = ProofMethod::None;
+            info.reason = Some(if label.is_empty() {
+                why
+            } else {
+                format!("case {label}: {why}")
+            });
+        }
+        Err(_) => {}
+    }
     info.terms = info.terms.max(p.terms);
     if let Some(c) = p.certificate {
         let prev = info.certificate.take().unwrap_or_default();
