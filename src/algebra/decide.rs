@@ -233,7 +233,7 @@ impl Sym {
         if let Some(r) = q.as_rational() {
             return (r != 0).then(|| if r < 0 { -1 } else { 1 });
         }
-        q.proved_sign()
+        q.proved_sign_of_quotient()
     }
 
     /// The context variable of the one indeterminate of which this value is a constant

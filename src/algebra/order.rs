@@ -100,8 +100,9 @@ impl Sym {
         match self.decided_sign() {
             Some(0) => Err(AlgebraError::CannotDecide("a value is exactly 0".into())),
             Some(_) => Ok(()),
+            // no split: the parts x > 0 and x < 0 would leave out x = 0, the very set
+            // an equality test is about
             None => {
-                self.ring.note_undecided(self);
                 Err(AlgebraError::CannotDecide(format!(
                     "whether {} is 0 on the domain: its sign is not proved",
                     self.render_short(160)

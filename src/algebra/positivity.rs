@@ -378,7 +378,9 @@ impl Sym {
     /// (see the module), with a note that says so; `None` when the test does not prove
     /// it.  The proof then has no certificate (the format does not record the test).
     pub(crate) fn proved_sign(&self) -> Option<i32> {
-        let par = self.ring.inner.opts.positivity.clone()?;
+        // without a parametrization of the domain, the signs of the roots' structure
+        // (positive roots of positive constants) can still be proved
+        let par = self.ring.domain();
         if self.ring.certifying() && self.node.is_none() {
             // a certificate names the value of every proved sign by its derivation
             return None;
@@ -395,6 +397,21 @@ impl Sym {
         let s = self.sign_by_parametrization(&par);
         self.ring.state().sign_memo.insert(key, s);
         s
+    }
+
+    /// [`Sym::proved_sign`] of a value made only to decide a sign (a quotient by a
+    /// hypothesis), which has no derivation of its own: a certificate does not record
+    /// the step, so the proof has none.
+    pub(crate) fn proved_sign_of_quotient(&self) -> Option<i32> {
+        if !(self.ring.certifying() && self.node.is_none()) {
+            return self.proved_sign();
+        }
+        let par = self.ring.domain();
+        let s = self.sign_by_parametrization(&par)?;
+        self.ring.mark_uncertified(
+            "a sign decided by a hypothesis, which the certificate format does not record",
+        );
+        Some(s)
     }
 
     /// [`Sym::proved_sign`] computed: the test (with the alternative parametrization
@@ -444,6 +461,14 @@ impl Sym {
 }
 
 impl Ring {
+    /// The parametrization of the domain, or an empty one (which still proves the signs
+    /// of constants and of positive roots of positive constants).
+    fn domain(&self) -> Arc<Parametrization> {
+        static EMPTY: std::sync::OnceLock<Arc<Parametrization>> = std::sync::OnceLock::new();
+        (self.inner.opts.positivity.clone())
+            .unwrap_or_else(|| EMPTY.get_or_init(|| Arc::new(Parametrization::new())).clone())
+    }
+
     /// The images of the variables of the ring's context in a sign test of `num`:
     /// indeterminates by name, and square roots whose radicands are proved positive
     /// and whose values at the domain points are positive.

@@ -734,8 +734,15 @@ mod tests {
     /// and adjoins no root.
     #[test]
     fn the_root_of_a_quotient_of_squares_is_the_root_of_the_product() {
+        // x, y > 0, so that x + y > 0 is proved
+        let mut par = super::super::positivity::Parametrization::new();
+        for v in ["x", "y"] {
+            let t = par.positive(&format!("t_{v}")).unwrap();
+            par.bind(v, t, String::new());
+        }
         let ring = Ring::new(RingOptions {
             points: 3,
+            positivity: Some(std::sync::Arc::new(par)),
             ..Default::default()
         });
         let x = ring.indeterminate_f64("x", &[1.5, 2.0, 3.5]).unwrap();

@@ -30,6 +30,10 @@ pub struct Args {
     /// Print the coverage table (paper label → claim ids → verdicts).
     #[arg(long)]
     pub coverage: bool,
+    /// Combined with each claim's own seed (0, the default, keeps the catalogue's
+    /// seeds): the samples change, and the set of proved claims must not.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
 }
 
 /// Loads the catalogue with the model's functions; load errors become [`CliError`].
@@ -198,7 +202,8 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             args.format
         )));
     }
-    let cat = load(&args.catalogue)?;
+    let mut cat = load(&args.catalogue)?;
+    cat.reseed(args.seed);
     let opts = Options {
         bits: bits.clone(),
         exact: true,

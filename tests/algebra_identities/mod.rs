@@ -368,10 +368,23 @@ fn mat_inv(r: &Ring, a: &Mat) -> Mat {
 /// Lemma 2 through the appendix: with `V = PM(v)`, `ω = (I + V)(I − V)⁻¹`,
 /// `W = 2V/(1 + |V|²)`, `γ = 2/(1 + √(1 − |W|²))`: `ω = I + W + (γ/2) W²`, the nine
 /// entries (domain |v| < 1).
+/// [`cayley`] with the hypothesis `1 − |v|² > 0` stated (label `small-v`).
+pub fn cayley_small_v(r: &Ring) -> AlgResult<Vec<(Sym, Sym)>> {
+    cayley_with(r, true)
+}
+
 pub fn cayley(r: &Ring) -> AlgResult<Vec<(Sym, Sym)>> {
+    cayley_with(r, false)
+}
+
+fn cayley_with(r: &Ring, small_v: bool) -> AlgResult<Vec<(Sym, Sym)>> {
     let v1 = r.indeterminate_rational("v1", &["1/5", "-1/3", "2/7"])?;
     let v2 = r.indeterminate_rational("v2", &["1/4", "1/6", "-3/5"])?;
     let v3 = r.indeterminate_rational("v3", &["-1/3", "1/2", "1/9"])?;
+    if small_v {
+        let small = &r.integer(1) - &(&(&(&v1 * &v1) + &(&v2 * &v2)) + &(&v3 * &v3));
+        r.state_hypothesis(&small, 1, "small-v".into());
+    }
     let z = r.integer(0);
     // PM(x) = [[0, x3, −x2], [−x3, 0, x1], [x2, −x1, 0]]
     let pm = |x1: &Sym, x2: &Sym, x3: &Sym| -> Mat {
@@ -397,4 +410,35 @@ pub fn cayley(r: &Ring) -> AlgResult<Vec<(Sym, Sym)>> {
     let rhs = mat(r, |i, j| &(&id[i][j] + &w[i][j]) + &(&half_g * &w2[i][j]));
     let flat = |m: &Mat| -> Vec<Sym> { m.iter().flat_map(|row| row.iter().cloned()).collect() };
     combine(r, &flat(&omega), &flat(&rhs))
+}
+
+/// The domain of [`top`] as a parametrization by positive parameters, with which the
+/// prover proves signs: `C = t_C`, `B = C + t_B`, `A = B + t_A`, `M² = t_M`, and E/M²
+/// inside the regime, `1/B + s/(1 + s)·(1/C − 1/B)` (upper) or
+/// `1/A + s/(1 + s)·(1/B − 1/A)` (lower); the Cayley parameters `v1`, `v2`, `v3`
+/// nonzero of either sign.
+pub fn domain(regime: Regime) -> std::sync::Arc<eulertop::algebra::positivity::Parametrization> {
+    use eulertop::algebra::positivity::Parametrization;
+    let mut par = Parametrization::new();
+    let one = par.constant(&rug::Rational::from(1));
+    let c = par.positive("t_C").unwrap();
+    let b = c.add(&par.positive("t_B").unwrap());
+    let a = b.add(&par.positive("t_A").unwrap());
+    let m2 = par.positive("t_M").unwrap();
+    let s = par.positive("s").unwrap();
+    let frac = s.div(&one.add(&s)).unwrap();
+    let inv = |x: &eulertop::algebra::positivity::ParamRat| one.div(x).unwrap();
+    let (lo, hi) = match regime {
+        Regime::Upper => (inv(&b), inv(&c)),
+        Regime::Lower => (inv(&a), inv(&b)),
+    };
+    let e = m2.mul(&lo.add(&frac.mul(&hi.sub(&lo))));
+    for (name, v) in [("A", a), ("B", b), ("C", c), ("M2", m2), ("E", e)] {
+        par.bind(name, v, String::new());
+    }
+    for name in ["v1", "v2", "v3"] {
+        let v = par.nonzero(&format!("mu_{name}")).unwrap();
+        par.bind(name, v, String::new());
+    }
+    std::sync::Arc::new(par)
 }

@@ -23,8 +23,11 @@ fn catalogue() -> eulertop::claims::catalogue::Catalogue {
         claim("t.cond.square", "if (A - C)*x^2 > 0 then 1 else 0"),
         // x takes both signs: false, never proved
         claim("t.cond.both-signs", "if x > 0 then 1 else 0"),
-        // true on the sampled domain, but not for every t in (0, 1): not proved
+        // true on the sampled box t ∈ (0.05, 0.95), though not on its relaxation (0, 1):
+        // proved with the box
         claim("t.cond.not-on-relaxation", "if t > 1/50 then 1 else 0"),
+        // false on part of the box: not proved
+        claim("t.cond.part-of-box", "if t > 1/2 then 1 else 0"),
         // the sign of abs's argument proved, and a positive square root's branch proved
         claim(
             "t.cond.abs",
@@ -48,25 +51,21 @@ fn true_conditions_are_proved_with_every_sign_proved() {
         assert!(p.is_proved(), "{id}: {:?}", p.reason);
         assert!(!p.proved_signs.is_empty(), "{id}: no proved sign");
         assert!(p.parametrization.is_some(), "{id}: no parametrization");
-        assert!(p.assumptions.is_empty(), "{id}: {:?}", p.assumptions);
+        assert!(p.hypotheses.is_empty(), "{id}: {:?}", p.hypotheses);
     }
 }
 
 #[test]
 fn a_condition_whose_sign_varies_is_not_proved() {
-    assert_refused(
-        &catalogue(),
-        "t.cond.both-signs",
-        &["not proved on the domain"],
-    );
+    // split by the sign of x: the part x < 0 is where the indicator is 0
+    assert_refused(&catalogue(), "t.cond.both-signs", &["case x < 0"]);
 }
 
 #[test]
-fn a_condition_true_only_on_the_sampled_box_is_not_proved() {
-    // the parametrization relaxes t ∈ (0.05, 0.95) to (0, 1), where t > 1/50 fails
-    assert_refused(
-        &catalogue(),
-        "t.cond.not-on-relaxation",
-        &["not proved on the domain"],
-    );
+fn a_condition_true_on_the_sampled_box_is_proved_and_one_false_on_part_of_it_is_not() {
+    // the relaxed range t ∈ (0, 1) does not prove t > 1/50; the box (0.05, 0.95) does
+    let p = attempt(&catalogue(), "t.cond.not-on-relaxation");
+    assert!(p.is_proved(), "{:?}", p.reason);
+    assert!(p.cases.is_empty(), "{:?}", p.cases);
+    assert_refused(&catalogue(), "t.cond.part-of-box", &["case"]);
 }

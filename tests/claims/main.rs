@@ -17,6 +17,7 @@ mod lemmas;
 mod partials;
 mod proof_hints;
 mod sign_cases;
+mod sound_proofs;
 mod splits;
 mod support;
 mod verdict_rules;

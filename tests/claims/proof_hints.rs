@@ -22,6 +22,7 @@ location = "control: the integrals of gamma2"
 printed = 'x'
 kind = "identity"
 expect = "proved"
+hypotheses = ["branch-gamma2"]
 domain = "top"
 vars = [["h", "uniform(0.01, 0.1)"]]
 let = '''

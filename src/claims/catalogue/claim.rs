@@ -218,6 +218,44 @@ pub struct Catalogue {
 }
 
 impl Catalogue {
+    /// Combines every claim's seed (and its inner claim's) with `seed`; 0 keeps them.
+    ///
+    /// ```
+    /// use eulertop::claims::catalogue::load_sources;
+    /// use eulertop::claims::registry::Registry;
+    /// let toml = r#"
+    /// [[claim]]
+    /// id = "c"
+    /// location = "anywhere"
+    /// printed = 'x = x'
+    /// environment = "Section 2"
+    /// role = "statement"
+    /// kind = "identity"
+    /// expect = "holds"
+    /// vars = [["x", "uniform(-3, 3)"]]
+    /// lhs = "x"
+    /// rhs = "x"
+    /// "#;
+    /// let mut cat = load_sources(&[("t.toml".into(), toml.into())], Registry::new()).unwrap();
+    /// let own = cat.claims[0].seed;
+    /// cat.reseed(0);
+    /// assert_eq!(cat.claims[0].seed, own);
+    /// cat.reseed(3);
+    /// assert_ne!(cat.claims[0].seed, own);
+    /// ```
+    pub fn reseed(&mut self, seed: u64) {
+        if seed == 0 {
+            return;
+        }
+        let mix = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15).rotate_left(17);
+        for c in &mut self.claims {
+            c.seed ^= mix;
+            if let Body::Negation(inner) = &mut c.body {
+                inner.seed ^= mix;
+            }
+        }
+    }
+
     /// The hypotheses a claim states.
     pub fn hypotheses_of<'a>(&'a self, claim: &Claim) -> Vec<&'a Hypothesis> {
         (claim.hypotheses.iter())

@@ -1,0 +1,108 @@
+//! Sound proofs: no `proved` rests on a sign taken at domain points.  Each probe below
+//! is false on a few percent of its domain (where M₁ < −1.4, or M₂ > 1.4: about 3 % of
+//! the box); no seed proves it, whether or not the sampler happens to draw a point of
+//! the bad part.  True claims that need the domain split are proved by their parts,
+//! with every seed.
+
+use super::support::{attempt, controls_only, identity_claim_with};
+
+/// The moments of inertia and a momentum as the catalogue's domain `top` draws them.
+const TOP: &str = r#"vars = [["C", "uniform(0.5, 1.5)"], ["B", "C + uniform(0.2, 1.0)"], ["A", "B + uniform(0.2, 1.0)"], ["M", "vec(uniform(-1.5, 1.5), uniform(-1.5, 1.5), uniform(-1.5, 1.5))"]]
+where = ["min(abs(M[1]), abs(M[2]), abs(M[3])) > 0.1"]"#;
+
+/// A level set across both regimes, E/M² on either side of 1/B.
+const BOTH_REGIMES: &str = r#"vars = [["C", "uniform(0.5, 1.5)"], ["B", "C + uniform(0.2, 1.0)"], ["A", "B + uniform(0.2, 1.0)"], ["Msq", "uniform(0.5, 2.0)"], ["E", "Msq * (1/A + uniform(0.05, 0.95) * (1/C - 1/A))"]]"#;
+
+/// The probes: (id, extra fields, lhs, rhs).
+const PROBES: &[(&str, &str, &str, &str)] = &[
+    ("p.if", "", "if M[1] > -1.4 then M[1] else M[2]", "M[1]"),
+    ("p.sqrt", "", "sqrt((M[1] + 1.4)^2)", "M[1] + 1.4"),
+    (
+        "p.let-if",
+        "let = '''\nup = M[1] > -1.4\nx = if up then M[1] else 2 * M[1]\n'''",
+        "x",
+        "M[1]",
+    ),
+    ("p.abs", "", "abs(M[1] + 1.4) * A", "(M[1] + 1.4) * A"),
+    ("p.min", "", "min(M[1], -1.4) + B", "-1.4 + B"),
+    (
+        "p.let-sqrt",
+        "let = '''\ns = (M[2] - 1.4)^2\nr = sqrt(s)\n'''",
+        "r * C",
+        "(1.4 - M[2]) * C",
+    ),
+];
+
+fn probes(seed: u64) -> String {
+    PROBES
+        .iter()
+        .map(|(id, fields, lhs, rhs)| {
+            identity_claim_with(
+                id,
+                "control: false where M1 < -1.4 or M2 > 1.4",
+                &format!("{TOP}\nseed = {seed}\n{fields}"),
+                lhs,
+                rhs,
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn claims_false_on_a_few_percent_of_their_domain_are_never_proved() {
+    for seed in 0..8 {
+        let cat = controls_only(probes(seed));
+        for (id, ..) in PROBES {
+            let p = attempt(&cat, id);
+            assert!(
+                !p.is_proved(),
+                "{id} proved with seed {seed}: {:?}",
+                p.cases
+            );
+            assert!(p.reason.is_some(), "{id}: no reason");
+        }
+    }
+}
+
+fn true_splits(seed: u64) -> String {
+    let x = "let = '''\nx = if B*E - Msq > 0 then 1 else -1\n'''";
+    identity_claim_with(
+        "t.cube",
+        "control: a sign that varies on the domain",
+        &format!("{BOTH_REGIMES}\nseed = {seed}\n{x}"),
+        "x^3",
+        "x",
+    ) + &identity_claim_with(
+        "t.abs-square",
+        "control: |M1 + 1.4|^2",
+        &format!("{TOP}\nseed = {seed}"),
+        "abs(M[1] + 1.4)^2",
+        "(M[1] + 1.4)^2",
+    )
+}
+
+#[test]
+fn true_claims_that_need_a_split_are_proved_with_every_seed() {
+    for seed in 0..4 {
+        let cat = controls_only(true_splits(seed));
+        let p = attempt(&cat, "t.cube");
+        assert!(p.is_proved(), "seed {seed}: {:?}", p.reason);
+        assert_eq!(p.cases.len(), 2, "seed {seed}: {:?}", p.cases);
+        let p = attempt(&cat, "t.abs-square");
+        assert!(p.is_proved(), "seed {seed}: {:?}", p.reason);
+    }
+}
+
+/// The upper regime alone, E/M² between 1/B and 1/C.
+const UPPER: &str = r#"vars = [["C", "uniform(0.5, 1.5)"], ["B", "C + uniform(0.2, 1.0)"], ["A", "B + uniform(0.2, 1.0)"], ["Msq", "uniform(0.5, 2.0)"], ["E", "Msq * (1/B + uniform(0.05, 0.95) * (1/C - 1/B))"]]"#;
+
+#[test]
+fn a_sign_the_domain_fixes_is_proved_and_not_split() {
+    let x = "let = '''\nx = if B*E - Msq > 0 then 1 else -1\n'''";
+    let text = identity_claim_with("t.upper", "control", &format!("{UPPER}\n{x}"), "x", "1");
+    let p = attempt(&controls_only(text), "t.upper");
+    assert!(p.is_proved(), "{:?}", p.reason);
+    assert!(p.cases.is_empty(), "{:?}", p.cases);
+    assert!(!p.proved_signs.is_empty());
+    assert!(p.hypotheses.is_empty(), "{:?}", p.hypotheses);
+}
