@@ -565,7 +565,7 @@ class Cert:
         if self.posroots[name] is None:
             self.posroots[name] = False  # no cycles
             rad = next(a for r, _, a in self.roots if r == name)
-            self.posroots[name] = self.poly_sign(rad) == 1
+            self.posroots[name] = self.tower_sign(rad) == 1
         return self.posroots[name]
 
     def poly_sign(self, p):
@@ -597,6 +597,34 @@ class Cert:
             acc += t
         s = self.definite(acc)
         return None if s is None else s * factor
+
+    def tower_sign(self, p, depth=0):
+        """poly_sign, and where it fails and p = a + b*r in its last declared positive root
+        r (radicand proved positive): the signs of a and b, and where they differ the
+        sign of a**2 - b**2 * radicand, which says which term wins."""
+        s = self.poly_sign(p)
+        if s is not None or not p or depth >= 8:
+            return s
+        used = [k for k, deg in enumerate(p.degrees()) if deg > 0]
+        cands = [(name, i, rad) for name, i, rad in self.roots if i in used]
+        if not cands:
+            return None
+        name, i, rad = cands[-1]
+        if not self.root_positive(name) or self.tower_sign(rad, depth + 1) != 1:
+            return None
+        a = self.ring.from_dict({m: c for m, c in p.iterterms() if m[i] == 0})
+        b = self.ring.from_dict({m[:i] + (0,) + m[i + 1:]: c for m, c in p.iterterms() if m[i] == 1})
+        if any(m[i] > 1 for m in p.itermonoms()):
+            return None
+        if not a:
+            return self.tower_sign(b, depth + 1)
+        sa, sb = self.tower_sign(a, depth + 1), self.tower_sign(b, depth + 1)
+        if sa is None or sb is None:
+            return None
+        if sa == sb:
+            return sa
+        sq = self.tower_sign(self.reduce(a * a - b * b * rad), depth + 1)
+        return None if sq is None else sa * sq
 
     def keyed(self, rest, keys):
         pat = r"\s(" + "|".join(keys) + r")="
@@ -962,7 +990,7 @@ class Cert:
             t, rel, zero = rest.split()
             self.need(rel in "<>" and zero == "0", f"bad sign line {rest[:40]}")
             f = self.vals[t]
-            a, b = self.poly_sign(f.num), self.poly_sign(f.den)
+            a, b = self.tower_sign(f.num), self.tower_sign(f.den)
             self.need(a is not None and b is not None and a * b == (1 if rel == ">" else -1),
                       f"sign {t} {rel} 0 is not proved by the parametrization")
             self.checked += 1

@@ -40,6 +40,9 @@ pub(crate) struct Base {
     /// The field variable of `E(am b, k) − k'² b`, once a derivative in the modulus
     /// made it.
     pub z_var: Option<usize>,
+    /// Whether the argument is real and the modulus in `(0, 1)`, by construction
+    /// (module `elliptic_facts`).
+    pub real: bool,
 }
 
 impl Base {

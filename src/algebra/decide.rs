@@ -71,9 +71,11 @@ impl Decision {
 }
 
 /// How deep the test of rule 2 recurses (one square root per level).
-const MAX_DEPTH: usize = 8;
-/// The largest polynomial, in terms, that rule 2 forms (`a² − b²·r²`).
-const MAX_TERMS: usize = 4_000;
+const MAX_DEPTH: usize = 6;
+/// The largest polynomial, in terms, whose sign rule 2 decomposes.
+const MAX_TERMS: usize = 400;
+/// The most polynomials one sign test of rules 1–3 examines.
+const MAX_TESTS: usize = 48;
 
 impl Sym {
     /// The sign of a real value, decided as the module says; never from the points.
@@ -84,7 +86,7 @@ impl Sym {
         if let Some(q) = self.as_rational() {
             return Decision::Proved(if q < 0 { -1 } else { 1 });
         }
-        if let Some(s) = self.proved_sign() {
+        if let Some(s) = self.proved_sign().or_else(|| self.ring.fact_sign(self)) {
             return Decision::Proved(s);
         }
         if let Some(s) = self.defined_sign() {
@@ -106,9 +108,21 @@ impl Ring {
     /// The sign of a polynomial of the ring's context on the domain, proved by rules 1–3
     /// of the module; `None` where they do not prove it.
     pub(crate) fn tower_sign(&self, par: &Parametrization, p: &Poly, depth: usize) -> Option<i32> {
-        if p.is_zero() {
+        self.tower_sign_within(par, p, depth, &std::cell::Cell::new(MAX_TESTS))
+    }
+
+    /// [`Ring::tower_sign`] with a budget of polynomials to examine.
+    fn tower_sign_within(
+        &self,
+        par: &Parametrization,
+        p: &Poly,
+        depth: usize,
+        budget: &std::cell::Cell<usize>,
+    ) -> Option<i32> {
+        if p.is_zero() || budget.get() == 0 {
             return None;
         }
+        budget.set(budget.get() - 1);
         if let Some(c) = p.as_constant() {
             return Some(if c < 0 { -1 } else { 1 });
         }
@@ -131,21 +145,21 @@ impl Ring {
         let a = p.coefficient_in(rv, 0);
         let b = p.coefficient_in(rv, 1);
         if sign_symbol {
-            return self.folded_product_sign(par, &a, &b, i, depth);
+            return self.folded_product_sign(par, (&a, &b), i, depth, budget);
         }
-        if !positive || self.tower_sign(par, &radicand, depth + 1) != Some(1) {
+        if !positive || self.tower_sign_within(par, &radicand, depth + 1, budget) != Some(1) {
             return None;
         }
         if a.is_zero() {
-            return self.tower_sign(par, &b, depth + 1);
+            return self.tower_sign_within(par, &b, depth + 1, budget);
         }
-        let sa = self.tower_sign(par, &a, depth + 1)?;
-        let sb = self.tower_sign(par, &b, depth + 1)?;
+        let sa = self.tower_sign_within(par, &a, depth + 1, budget)?;
+        let sb = self.tower_sign_within(par, &b, depth + 1, budget)?;
         if sa == sb {
             return Some(sa);
         }
         let q = inner.reduce(a.mul(&a).sub(&b.mul(&b).mul(&radicand)));
-        Some(sa * self.tower_sign(par, &q, depth + 1)?)
+        Some(sa * self.tower_sign_within(par, &q, depth + 1, budget)?)
     }
 
     /// Rule 3: the sign of `a + b·σ` for the sign symbol of root `i`, where `a = 0`, `σ`
@@ -153,10 +167,10 @@ impl Ring {
     fn folded_product_sign(
         &self,
         par: &Parametrization,
-        a: &Poly,
-        b: &Poly,
+        (a, b): (&Poly, &Poly),
         i: usize,
         depth: usize,
+        budget: &std::cell::Cell<usize>,
     ) -> Option<i32> {
         if !a.is_zero() {
             return None;
@@ -166,7 +180,11 @@ impl Ring {
         let x = Poly::var(b.ctx(), var);
         let quotient = b.divides(&x).ok()??;
         // b·σ = (b/x)·(σ·x), and σ·x has the sign s by the definition of σ
-        Some(s * self.tower_sign(par, &quotient, depth + 1)?)
+        let q = self.tower_sign_within(par, &quotient, depth + 1, budget)?;
+        self.mark_uncertified(
+            "a sign proved by the definition of a sign symbol, which the certificate format does not record",
+        );
+        Some(s * q)
     }
 }
 

@@ -581,7 +581,15 @@ impl Ring {
                 }))
         })?;
         self.note(format!("sn_{nb} = sn({argtext})"));
+        let real = self.note_dn_positive(t, &arg, &d.val, &argtext);
         let mut st = self.state();
+        if real {
+            for r in st.roots.iter_mut() {
+                if r.name == format!("cn_{nb}") || r.name == format!("dn_{nb}") {
+                    r.real = true;
+                }
+            }
+        }
         st.tables[t].bases.push(Base {
             vec,
             arg,
@@ -590,6 +598,7 @@ impl Ring {
             c: c.into_val(),
             d: d.into_val(),
             z_var: None,
+            real,
         });
         Ok(())
     }
@@ -670,6 +679,7 @@ impl Ring {
             c: p.c,
             d: p.d,
             z_var: None,
+            real: false,
         });
         Ok(true)
     }

@@ -113,6 +113,7 @@ mod decide;
 mod den_factors;
 mod derive;
 pub mod elliptic;
+mod elliptic_facts;
 mod error;
 pub mod flint;
 mod lattice;

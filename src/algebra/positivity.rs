@@ -40,10 +40,16 @@ use std::sync::Arc;
 pub const MAX_PARAMS: usize = 24;
 /// Parameter slots for square roots (the ring's roots, by index).
 const ROOT_SLOTS: usize = 64;
+/// Parameter slots for `sn²` of real base arguments (the ring's field variables, by
+/// index): `sn² = u/(1 + u)`, `u > 0`.
+const UNIT_SLOTS: usize = 64;
 /// The largest numerator, in terms, whose sign is tested.
 const MAX_INPUT_TERMS: usize = 400;
 /// The largest substituted polynomial, in terms.
 const MAX_OUTPUT_TERMS: usize = 40_000;
+/// The largest numerator, in terms, tested with `sn²` as a parameter or with the
+/// alternative parametrization (their substitutions grow fast).
+const MAX_WIDENED_TERMS: usize = 64;
 
 /// How a parameter ranges.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -157,7 +163,7 @@ impl Parametrization {
     /// An empty parametrization.
     pub fn new() -> Parametrization {
         Parametrization {
-            ctx: Ctx::new(MAX_PARAMS + ROOT_SLOTS),
+            ctx: Ctx::new(MAX_PARAMS + ROOT_SLOTS + UNIT_SLOTS),
             params: Vec::new(),
             images: BTreeMap::new(),
             descriptions: Vec::new(),
@@ -285,19 +291,40 @@ impl Parametrization {
         let degs = p.degrees();
         let used = p.used_vars();
         let mut factor = 1;
-        let mut rows: Vec<(usize, Vec<Poly>, Vec<Poly>)> = Vec::new();
+        let mut rows: Vec<(usize, Vec<Poly>, Vec<Poly>, bool)> = Vec::new();
         for &i in &used {
-            let (n, d) = match images.get(i)? {
-                Image::Var(r) => (r.num.clone(), r.den.clone()),
-                Image::Root(slot) => (self.root_param(*slot)?, Poly::from_i64(&self.ctx, 1)),
+            let (n, d, halve) = match images.get(i)? {
+                Image::Var(r) => (r.num.clone(), r.den.clone(), false),
+                Image::Root(slot) => (
+                    self.root_param(*slot)?,
+                    Poly::from_i64(&self.ctx, 1),
+                    false,
+                ),
+                Image::Square(slot) => {
+                    if p.len() > MAX_WIDENED_TERMS {
+                        return None;
+                    }
+                    let u = self.unit_param(*slot)?;
+                    let one = Poly::from_i64(&self.ctx, 1);
+                    (u.clone(), one.add(&u), true)
+                }
                 Image::None => return None,
             };
-            let deg = usize::try_from(degs[i]).ok()?;
+            let mut deg = usize::try_from(degs[i]).ok()?;
+            if halve {
+                // the variable enters through its square only
+                let mut even = true;
+                p.for_each_term(|_, e| even &= e[i] % 2 == 0);
+                if !even {
+                    return None;
+                }
+                deg /= 2;
+            }
             let sd = self.definite_sign(&d)?;
             if deg % 2 == 1 {
                 factor *= sd;
             }
-            rows.push((i, powers(&n, deg)?, powers(&d, deg)?));
+            rows.push((i, powers(&n, deg)?, powers(&d, deg)?, halve));
         }
         let mut acc = Poly::zero(&self.ctx);
         let mut failed = false;
@@ -306,8 +333,8 @@ impl Parametrization {
                 return;
             }
             let mut t = Poly::from_integer(&self.ctx, c);
-            for (i, np, dp) in &rows {
-                let k = e[*i] as usize;
+            for (i, np, dp, halve) in &rows {
+                let k = if *halve { e[*i] as usize / 2 } else { e[*i] as usize };
                 t = t.mul(&np[k]).mul(&dp[dp.len() - 1 - k]);
             }
             acc = acc.add(&t);
@@ -321,6 +348,10 @@ impl Parametrization {
 
     fn root_param(&self, slot: usize) -> Option<Poly> {
         (slot < ROOT_SLOTS).then(|| Poly::var(&self.ctx, MAX_PARAMS + slot))
+    }
+
+    fn unit_param(&self, slot: usize) -> Option<Poly> {
+        (slot < UNIT_SLOTS).then(|| Poly::var(&self.ctx, MAX_PARAMS + ROOT_SLOTS + slot))
     }
 
     /// The sign of a polynomial in the parameters whose terms all have one sign.
@@ -369,6 +400,9 @@ pub(crate) enum Image<'a> {
     Var(&'a ParamRat),
     /// A positive square root, by root index.
     Root(usize),
+    /// `sn` of a real base argument at a modulus in `(0, 1)`, which enters through its
+    /// square `sn² ∈ [0, 1]` only (by field-variable index).
+    Square(usize),
     /// Anything else: the test does not apply.
     None,
 }
@@ -419,6 +453,9 @@ impl Sym {
     fn sign_by_parametrization(&self, par: &Parametrization) -> Option<i32> {
         let s = self.sign_with(par).or_else(|| {
             let alt = par.alternative.as_deref()?;
+            if self.val.num.len() + self.val.den.len() > MAX_WIDENED_TERMS {
+                return None;
+            }
             let s = self.sign_with(alt)?;
             self.ring.mark_uncertified(
                 "a sign proved with the box of the sampled intervals, which the certificate format does not record",
@@ -452,11 +489,7 @@ impl Sym {
             return Some(s);
         }
         let ring = &self.ring;
-        let s = ring.tower_sign(par, &self.val.num, 0)? * ring.tower_sign(par, &self.val.den, 0)?;
-        ring.mark_uncertified(
-            "a sign proved through its square roots (module decide), which the certificate format does not record",
-        );
-        Some(s)
+        Some(ring.tower_sign(par, &self.val.num, 0)? * ring.tower_sign(par, &self.val.den, 0)?)
     }
 }
 
@@ -479,10 +512,19 @@ impl Ring {
             .map(|i| max_roots - 1 - i)
             .collect();
         // only the roots the value uses and those their radicands use, in order
-        let (vars, roots) = {
+        let (vars, roots, squares) = {
             let st = self.state();
             let vars: Vec<Option<String>> = (st.vars.iter())
                 .map(|v| matches!(v.kind, VarKind::Indeterminate).then(|| v.name.clone()))
+                .collect();
+            // sn of a real base argument: sn² ∈ [0, 1]
+            let squares: Vec<bool> = (st.vars.iter())
+                .map(|v| match v.kind {
+                    VarKind::Sn { table, base } => {
+                        (st.tables.get(table).and_then(|t| t.bases.get(base))).is_some_and(|b| b.real)
+                    }
+                    _ => false,
+                })
                 .collect();
             let mut needed: Vec<usize> = (used_roots.iter())
                 .filter_map(|&i| st.roots.get(i))
@@ -497,7 +539,7 @@ impl Ring {
                         .map(|r| (i, r.radicand.clone(), r.is_positive()))
                 })
                 .collect();
-            (vars, roots)
+            (vars, roots, squares)
         };
         let mut images = vec![Image::None; num.ctx().nvars()];
         for (j, name) in vars.iter().enumerate() {
@@ -505,6 +547,17 @@ impl Ring {
                 && let Some(img) = par.image(n)
             {
                 *slot = Image::Var(img);
+            }
+        }
+        let used = num.used_vars();
+        for (j, real) in squares.iter().enumerate() {
+            if *real && let Some(slot) = images.get_mut(max_roots + j) {
+                *slot = Image::Square(j);
+                if used.contains(&(max_roots + j)) {
+                    self.mark_uncertified(
+                        "a sign proved with sn² ∈ [0, 1] for a real argument, which the certificate format does not record",
+                    );
+                }
             }
         }
         for (i, radicand, positive) in roots {

@@ -160,6 +160,8 @@ pub(crate) struct RootInfo {
     pub closure: Vec<usize>,
     /// What the root is, for the reader (e.g. `cn(phi)`).
     pub note: String,
+    /// Whether the root is real by construction (`cn`, `dn` of a real base argument).
+    pub real: bool,
     /// Whether the root is the principal square root of its radicand wherever that is
     /// positive (false for a sign symbol and for a root with prescribed values, such as
     /// `cn u` for `√(1 − sn²u)`): only then is it the positive root where its radicand
@@ -258,6 +260,10 @@ pub(crate) struct State {
     /// The hypotheses the claim states: a value, its sign, and the hypothesis' label
     /// (see [`Ring::state_hypothesis`]).
     pub stated: Vec<(Val, i32, String)>,
+    /// Values positive by a theorem (`dn` of a real argument), with the reason.
+    pub facts: Vec<(Val, String)>,
+    /// Opaque symbols declared real (by field-variable index).
+    pub real_opaque: Vec<usize>,
 }
 
 /// A sign symbol `σ = sign(x)` made for a folded value `x` (see
@@ -344,6 +350,8 @@ impl Ring {
             folded: Vec::new(),
             sign_memo: std::collections::HashMap::new(),
             stated: Vec::new(),
+            facts: Vec::new(),
+            real_opaque: Vec::new(),
         };
         Ring {
             inner: Arc::new(Inner {
@@ -603,6 +611,7 @@ impl Inner {
             values,
             closure,
             note,
+            real: false,
             principal: true,
         });
         Ok(i)

@@ -224,6 +224,8 @@ fn phase_param(f: ModelFn, args: &[Value<Sym>]) -> Result<Parametrized, String> 
     let delta = ring
         .opaque(&name, &d_num, false)
         .map_err(|e| e.to_string())?;
+    // the chart's parameter: δ ranges over real values, and h is solved from it
+    ring.declare_real(&delta);
     let eq = master(f, &i, &p, &delta)?;
     let h_new = solve_affine(&[eq(&h.zero())], &[eq(&h.one())], "the master equation")?;
     let checks = vec![eq(&h_new)];

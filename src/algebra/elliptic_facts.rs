@@ -1,0 +1,134 @@
+//! Signs that the theory of the Jacobi functions fixes: `dn u > 0` for real `u` and a
+//! real modulus with `0 < k² < 1` (DLMF 22.2.4 and 22.4.1: `dn` is real, even, never 0
+//! and 1 at `u = 0` on the real line).  A base argument of an elliptic table gets the
+//! fact when its argument is real by construction and the modulus is proved in
+//! `(0, 1)`: both are decided from the symbols' definitions, never from the points.
+//!
+//! **Real by construction.**  A value is real when every symbol it uses is: an
+//! indeterminate of the claim (a real draw), a named quantity whose definition is real,
+//! a sign symbol, the principal root of a radicand proved positive, `sn`, `cn`, `dn` of
+//! a real base argument, `K`, `K'` of a modulus in `(0, 1)`, and an opaque symbol
+//! declared real ([`Ring::declare_real`]: a real chart parameter).  No other opaque
+//! symbol is.
+
+use super::ring::{Ring, VarKind};
+use super::sym::Sym;
+use super::val::Val;
+
+/// How deep the realness test follows definitions.
+const MAX_DEPTH: usize = 6;
+
+impl Ring {
+    /// Declares an opaque symbol real: a chart parameter that ranges over real values
+    /// (the phase step `δ` of a map's parametrization, with `h` solved from it).
+    pub fn declare_real(&self, v: &Sym) {
+        if let Some(j) = v.as_field_var() {
+            self.state().real_opaque.push(j);
+        }
+    }
+
+    /// Records `dn > 0` for a new base argument `arg` of table `t`, whose `dn` is `d`,
+    /// when the argument is real and the modulus is proved in `(0, 1)`.
+    /// Returns whether the base is real.
+    pub(crate) fn note_dn_positive(&self, t: usize, arg: &Val, d: &Val, what: &str) -> bool {
+        let real_base = self.real_modulus(t) && self.is_real(arg, 0);
+        if real_base {
+            self.state().facts.push((
+                d.clone(),
+                format!("dn({what}) > 0: a real argument, 0 < k² < 1 (DLMF 22.4.1)"),
+            ));
+        }
+        real_base
+    }
+
+    /// Is the modulus of table `t` real with `0 < k² < 1` (proved)?
+    fn real_modulus(&self, t: usize) -> bool {
+        let (k, k2) = {
+            let st = self.state();
+            (st.tables[t].k.clone(), st.tables[t].k2.clone())
+        };
+        if !self.is_real(&k, 0) {
+            return false;
+        }
+        let k2 = Sym::from_val(self, k2, None);
+        let one = self.integer(1);
+        let Ok(rest) = one.try_sub(&k2) else {
+            return false;
+        };
+        k2.decided_sign() == Some(1) && rest.decided_sign() == Some(1)
+    }
+
+    /// Is the value real by construction (see the module)?
+    pub(crate) fn is_real(&self, v: &Val, depth: usize) -> bool {
+        if depth > MAX_DEPTH {
+            return false;
+        }
+        let inner = &self.inner;
+        let used: Vec<usize> = (v.num.used_vars().into_iter())
+            .chain(v.den.used_vars())
+            .collect();
+        used.into_iter().all(|idx| match inner.root_of_var(idx) {
+            Some(i) => self.root_is_real(i, depth),
+            None => self.var_is_real(idx - inner.opts.max_roots, depth),
+        })
+    }
+
+    fn root_is_real(&self, i: usize, depth: usize) -> bool {
+        let (radicand, principal, real) = {
+            let st = self.state();
+            let r = &st.roots[i];
+            (r.radicand.clone(), r.principal, r.real)
+        };
+        if real || radicand.is_one() {
+            return true;
+        }
+        let one = super::flint::Poly::from_i64(&self.inner.ctx, 1);
+        let sh = self.shadow_of(&radicand, &one);
+        let rad = Val {
+            num: radicand,
+            den: one,
+            sh,
+        };
+        principal
+            && self.is_real(&rad, depth + 1)
+            && Sym::from_val(self, rad, None).decided_sign() == Some(1)
+    }
+
+    fn var_is_real(&self, j: usize, depth: usize) -> bool {
+        let kind = self.state().vars[j].kind.clone();
+        match kind {
+            VarKind::Indeterminate => true,
+            VarKind::Named(def) => self.is_real(&def, depth + 1),
+            VarKind::Sn { table, base } | VarKind::Zeta { table, base } => {
+                (self.state().tables[table].bases.get(base)).is_some_and(|b| b.real)
+            }
+            VarKind::QuarterK { table } | VarKind::QuarterKp { table } => {
+                self.real_modulus(table)
+            }
+            VarKind::Opaque { .. } => self.state().real_opaque.contains(&j),
+        }
+    }
+
+    /// The sign of `x` by a fact of the theory: `x` is a fact's value times a factor of
+    /// proved sign.
+    pub(crate) fn fact_sign(&self, x: &Sym) -> Option<i32> {
+        let facts = self.state().facts.clone();
+        for (val, why) in facts {
+            let f = Sym::from_val(self, val, None);
+            let Ok(q) = x.try_div(&f) else { continue };
+            let s = match q.as_rational() {
+                Some(r) if r != 0 => Some(if r < 0 { -1 } else { 1 }),
+                Some(_) => None,
+                None => q.proved_sign_of_quotient(),
+            };
+            if let Some(s) = s {
+                self.note(why);
+                self.mark_uncertified(
+                    "a sign proved by a fact of the Jacobi functions, which the certificate format does not record",
+                );
+                return Some(s);
+            }
+        }
+        None
+    }
+}
