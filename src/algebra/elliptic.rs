@@ -806,6 +806,7 @@ impl Sym {
                 )));
             }
         }
+        ring.note_dn_of_real_argument(t, &self.val, &v[2], || self.render_short(60));
         let combo: Vec<(usize, i64)> = n
             .iter()
             .enumerate()

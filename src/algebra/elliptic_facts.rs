@@ -41,6 +41,26 @@ impl Ring {
         real_base
     }
 
+    /// Records `dn u > 0` for `dn u = d` of an argument `u` of table `t` (expanded by
+    /// the addition theorems), when `u` is real and the modulus is proved in `(0, 1)`.
+    pub(crate) fn note_dn_of_real_argument(
+        &self,
+        t: usize,
+        u: &Val,
+        d: &Val,
+        what: impl FnOnce() -> String,
+    ) {
+        let known = (self.state().facts.iter()).any(|(f, _)| f.num == d.num && f.den == d.den);
+        if known || d.num.len() > 64 || !self.real_modulus(t) || !self.is_real(u, 0) {
+            return;
+        }
+        let reason = format!(
+            "dn({}) > 0: a real argument, 0 < k² < 1 (DLMF 22.4.1)",
+            what()
+        );
+        self.state().facts.push((d.clone(), reason));
+    }
+
     /// Is the modulus of table `t` real with `0 < k² < 1` (proved)?
     fn real_modulus(&self, t: usize) -> bool {
         let (k, k2) = {
@@ -55,7 +75,7 @@ impl Ring {
         let Ok(rest) = one.try_sub(&k2) else {
             return false;
         };
-        k2.decided_sign() == Some(1) && rest.decided_sign() == Some(1)
+        positive(&k2) && positive(&rest)
     }
 
     /// Is the value real by construction (see the module)?
@@ -89,9 +109,7 @@ impl Ring {
             den: one,
             sh,
         };
-        principal
-            && self.is_real(&rad, depth + 1)
-            && Sym::from_val(self, rad, None).decided_sign() == Some(1)
+        principal && self.is_real(&rad, depth + 1) && positive(&Sym::from_val(self, rad, None))
     }
 
     fn var_is_real(&self, j: usize, depth: usize) -> bool {
@@ -102,9 +120,7 @@ impl Ring {
             VarKind::Sn { table, base } | VarKind::Zeta { table, base } => {
                 (self.state().tables[table].bases.get(base)).is_some_and(|b| b.real)
             }
-            VarKind::QuarterK { table } | VarKind::QuarterKp { table } => {
-                self.real_modulus(table)
-            }
+            VarKind::QuarterK { table } | VarKind::QuarterKp { table } => self.real_modulus(table),
             VarKind::Opaque { .. } => self.state().real_opaque.contains(&j),
         }
     }
@@ -130,5 +146,14 @@ impl Ring {
             }
         }
         None
+    }
+}
+
+/// Is the value proved positive?  The test leaves no trace: a fact it admits enters a
+/// proof only through [`Ring::fact_sign`], which records itself.
+fn positive(x: &Sym) -> bool {
+    match x.as_rational() {
+        Some(q) => q > 0,
+        None => x.proved_sign_unrecorded() == Some(1),
     }
 }

@@ -132,9 +132,9 @@ mod sym;
 mod symbols;
 mod val;
 
+pub use decide::Decision;
 pub use elliptic::BaseHint;
 pub use error::{AlgResult, AlgebraError};
 pub use proof::{Outcome, Proof, prove_components, prove_identity};
-pub use decide::Decision;
 pub use ring::{Assumption, AssumptionKind, Origin, Ring, RingOptions};
 pub use sym::Sym;

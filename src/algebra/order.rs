@@ -102,12 +102,10 @@ impl Sym {
             Some(_) => Ok(()),
             // no split: the parts x > 0 and x < 0 would leave out x = 0, the very set
             // an equality test is about
-            None => {
-                Err(AlgebraError::CannotDecide(format!(
-                    "whether {} is 0 on the domain: its sign is not proved",
-                    self.render_short(160)
-                )))
-            }
+            None => Err(AlgebraError::CannotDecide(format!(
+                "whether {} is 0 on the domain: its sign is not proved",
+                self.render_short(160)
+            ))),
         }
     }
 

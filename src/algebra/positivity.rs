@@ -295,11 +295,7 @@ impl Parametrization {
         for &i in &used {
             let (n, d, halve) = match images.get(i)? {
                 Image::Var(r) => (r.num.clone(), r.den.clone(), false),
-                Image::Root(slot) => (
-                    self.root_param(*slot)?,
-                    Poly::from_i64(&self.ctx, 1),
-                    false,
-                ),
+                Image::Root(slot) => (self.root_param(*slot)?, Poly::from_i64(&self.ctx, 1), false),
                 Image::Square(slot) => {
                     if p.len() > MAX_WIDENED_TERMS {
                         return None;
@@ -334,7 +330,11 @@ impl Parametrization {
             }
             let mut t = Poly::from_integer(&self.ctx, c);
             for (i, np, dp, halve) in &rows {
-                let k = if *halve { e[*i] as usize / 2 } else { e[*i] as usize };
+                let k = if *halve {
+                    e[*i] as usize / 2
+                } else {
+                    e[*i] as usize
+                };
                 t = t.mul(&np[k]).mul(&dp[dp.len() - 1 - k]);
             }
             acc = acc.add(&t);
@@ -443,9 +443,29 @@ impl Sym {
         let par = self.ring.domain();
         let s = self.sign_by_parametrization(&par)?;
         self.ring.mark_uncertified(
-            "a sign decided by a hypothesis, which the certificate format does not record",
+            "a sign decided through a quotient by a hypothesis or a fact of the Jacobi functions, which the certificate format does not record",
         );
         Some(s)
+    }
+
+    /// [`Sym::proved_sign`] as a test that leaves no trace in the proof (no proved sign
+    /// recorded, the certificate kept): for checks whose result enters the proof only
+    /// through a later decision, which records itself.
+    pub(crate) fn proved_sign_unrecorded(&self) -> Option<i32> {
+        let ring = &self.ring;
+        let (signs, uncertified) = {
+            let st = ring.state();
+            (st.proved_signs.len(), st.uncertified.len())
+        };
+        let s = if ring.certifying() && self.node.is_none() {
+            self.sign_by_parametrization(&ring.domain())
+        } else {
+            self.proved_sign()
+        };
+        let mut st = ring.state();
+        st.proved_signs.truncate(signs);
+        st.uncertified.truncate(uncertified);
+        s
     }
 
     /// [`Sym::proved_sign`] computed: the test (with the alternative parametrization
@@ -498,14 +518,21 @@ impl Ring {
     /// of constants and of positive roots of positive constants).
     fn domain(&self) -> Arc<Parametrization> {
         static EMPTY: std::sync::OnceLock<Arc<Parametrization>> = std::sync::OnceLock::new();
-        (self.inner.opts.positivity.clone())
-            .unwrap_or_else(|| EMPTY.get_or_init(|| Arc::new(Parametrization::new())).clone())
+        (self.inner.opts.positivity.clone()).unwrap_or_else(|| {
+            EMPTY
+                .get_or_init(|| Arc::new(Parametrization::new()))
+                .clone()
+        })
     }
 
     /// The images of the variables of the ring's context in a sign test of `num`:
     /// indeterminates by name, and square roots whose radicands are proved positive
     /// and whose values at the domain points are positive.
-    pub(crate) fn sign_images<'p>(&self, par: &'p Parametrization, num: &Poly) -> Option<Vec<Image<'p>>> {
+    pub(crate) fn sign_images<'p>(
+        &self,
+        par: &'p Parametrization,
+        num: &Poly,
+    ) -> Option<Vec<Image<'p>>> {
         let max_roots = self.inner.opts.max_roots;
         let used_roots: Vec<usize> = (num.used_vars().into_iter())
             .filter(|&i| i < max_roots)
@@ -521,7 +548,8 @@ impl Ring {
             let squares: Vec<bool> = (st.vars.iter())
                 .map(|v| match v.kind {
                     VarKind::Sn { table, base } => {
-                        (st.tables.get(table).and_then(|t| t.bases.get(base))).is_some_and(|b| b.real)
+                        (st.tables.get(table).and_then(|t| t.bases.get(base)))
+                            .is_some_and(|b| b.real)
                     }
                     _ => false,
                 })

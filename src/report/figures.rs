@@ -57,9 +57,7 @@ pub fn residual_plot(sec: &Section, claims: &[&ClaimResult], bits: &[u32]) -> St
                 continue;
             }
             let color = match r.verdict {
-                Verdict::Holds | Verdict::Proved | Verdict::Construction => {
-                    RGBColor(31, 119, 180)
-                }
+                Verdict::Holds | Verdict::Proved | Verdict::Construction => RGBColor(31, 119, 180),
                 Verdict::Refuted => RGBColor(214, 39, 40),
                 _ => RGBColor(140, 140, 140),
             };

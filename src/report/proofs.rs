@@ -139,7 +139,11 @@ fn simple_status(claims: &[&ClaimResult]) -> StatementStatus {
     // a claim that holds by construction restates the model's own equation: the
     // statement rests on the claims with content
     let content = |r: &&&ClaimResult| r.verdict != Verdict::Construction;
-    if claims.iter().filter(content).all(|r| r.verdict == Verdict::Defined) {
+    if claims
+        .iter()
+        .filter(content)
+        .all(|r| r.verdict == Verdict::Defined)
+    {
         StatementStatus::Definition
     } else if claims
         .iter()

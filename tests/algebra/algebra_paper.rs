@@ -63,7 +63,9 @@ fn wrong_addition_formulae_are_never_proved() {
 #[test]
 fn g0g1_in_both_regimes() {
     for regime in [Regime::Upper, Regime::Lower] {
-        let p = prove_components(opts_in(regime), "(G0G1)", |r| g0g1(r, regime, Variant::True, false));
+        let p = prove_components(opts_in(regime), "(G0G1)", |r| {
+            g0g1(r, regime, Variant::True, false)
+        });
         assert_proved(&p, &format!("(G0G1) {regime:?}"));
         // the roots' branches are proved on the regime, never taken at the points
         assert!(p.assumptions.is_empty(), "{:?}", p.assumptions);
@@ -89,7 +91,9 @@ fn wrong_g0g1_variants_are_never_proved() {
         Variant::Scaled,
     ] {
         for regime in [Regime::Upper, Regime::Lower] {
-            let p = prove_components(opts_in(regime), "wrong (G0G1)", |r| g0g1(r, regime, v, false));
+            let p = prove_components(opts_in(regime), "wrong (G0G1)", |r| {
+                g0g1(r, regime, v, false)
+            });
             assert!(!p.is_proved(), "{v:?} {regime:?}");
         }
     }
@@ -98,7 +102,9 @@ fn wrong_g0g1_variants_are_never_proved() {
 #[test]
 fn g1_alpha_beta_in_both_regimes() {
     for regime in [Regime::Upper, Regime::Lower] {
-        let p = prove_components(opts_in(regime), "(MV alphabeta)", |r| g1_alphabeta(r, regime));
+        let p = prove_components(opts_in(regime), "(MV alphabeta)", |r| {
+            g1_alphabeta(r, regime)
+        });
         assert_proved(&p, &format!("G1 = k²ν²(1 + α sn² − β sn⁴) {regime:?}"));
     }
 }
@@ -134,7 +140,11 @@ fn lemma_2_cayley_form() {
     // hypothesis (as 'h small enough' makes it in Section 8)
     let p = prove_components(opts(), "Lemma 2", cayley);
     assert!(!p.is_proved(), "proved without |v| < 1");
-    let p = prove_components(opts(), "Lemma 2 with |v| < 1", algebra_identities::cayley_small_v);
+    let p = prove_components(
+        opts(),
+        "Lemma 2 with |v| < 1",
+        algebra_identities::cayley_small_v,
+    );
     assert!(p.is_proved(), "{:?}", p.outcome);
     assert!(
         p.assumptions

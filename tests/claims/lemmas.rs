@@ -2,7 +2,7 @@
 //! value supplies it to the claims that use it, a wrong lemma proves nothing, and the
 //! phase of `ell_coords` is a symbol whose sn, cn, dn are known.
 
-use super::support::{assert_refused, attempt, with_catalogue};
+use super::support::{attempt, with_catalogue};
 use eulertop::claims::catalogue::Catalogue;
 
 fn control(id: &str, uses: &str, lhs: &str, rhs: &str) -> String {
@@ -18,6 +18,7 @@ location = "control: lemmas"
 printed = 'x'
 kind = "identity"
 expect = "proved"
+hypotheses = ["branch-gamma1", "branch-delta1"]
 domain = "ell_up"
 vars = [["h", "uniform(0.01, 0.1)"]]
 let = '''
@@ -45,6 +46,7 @@ location = "control: a wrong step value"
 printed = 'x'
 kind = "identity"
 expect = "proved"
+hypotheses = ["branch-gamma1", "branch-delta2"]
 domain = "ell_up"
 vars = [["h", "uniform(0.01, 0.1)"]]
 lhs = "step_gamma1(ellM(A, B, C, Msq, E, phi, sa, sc), h, A, B, C)"

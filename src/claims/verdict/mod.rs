@@ -30,10 +30,10 @@ pub mod symbolic;
 pub mod vacuity;
 
 pub use crate::claims::kind::Verdict;
+pub use proof_info::HypothesisUse;
 pub use result::{
     Cause, ClaimResult, Counterexample, Evidence, ExactInfo, FailedSample, Failure, Named, Rung,
 };
-pub use proof_info::HypothesisUse;
 pub use symbolic::{ProofInfo, ProofMethod};
 
 use crate::claims::catalogue::{Body, Catalogue, Claim};

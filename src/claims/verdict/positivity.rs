@@ -180,7 +180,10 @@ fn interval(
 ) -> Option<ParamRat> {
     let one = par.constant(&rug::Rational::from(1));
     let t = par.positive(name)?;
-    let v = par.constant(lo).add(&par.constant(hi).mul(&t)).div(&one.add(&t))?;
+    let v = par
+        .constant(lo)
+        .add(&par.constant(hi).mul(&t))
+        .div(&one.add(&t))?;
     ranges.push(format!("({lo} + {hi}*{name})/(1 + {name})"));
     Some(v)
 }
