@@ -13,10 +13,18 @@ impl Sym {
     ///
     /// ```
     /// use eulertop::algebra::{Ring, RingOptions};
-    /// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
+    /// use eulertop::algebra::positivity::Parametrization;
+    /// use std::sync::Arc;
+    /// // the domain: a and c nonzero, of either sign
+    /// let mut par = Parametrization::new();
+    /// for v in ["a", "c"] {
+    ///     let t = par.nonzero(&format!("t_{v}")).unwrap();
+    ///     par.bind(v, t, String::new());
+    /// }
+    /// let ring = Ring::new(RingOptions { points: 2, positivity: Some(Arc::new(par)), ..Default::default() });
     /// let a = ring.indeterminate_f64("a", &[2.0, 3.0]).unwrap();
     /// let c = ring.indeterminate_f64("c", &[1.0, 0.5]).unwrap();
-    /// assert_eq!((a.clone() * a.clone() + ring.integer(1)).sign().unwrap(), 1); // exact
+    /// assert_eq!((a.clone() * a.clone() + ring.integer(1)).sign().unwrap(), 1); // proved
     /// assert!((a - c).sign().is_err()); // positive at both points, but not proved
     /// ```
     pub fn sign(&self) -> AlgResult<i32> {
@@ -33,11 +41,19 @@ impl Sym {
     /// the whole domain, and otherwise `±σ`, a product of the ring's sign symbols, where
     /// the value's sign at every point is that product's there.  The sign of `x·σ`
     /// (constant on the domain, since `σ² = 1`) is then decided as [`Sym::sign`] decides
-    /// one, proved or recorded as an assumption; the value is `sign(x·σ)·σ`.
+    /// one (proved, never taken at the points); the value is `sign(x·σ)·σ`.
     ///
     /// ```
     /// use eulertop::algebra::{Ring, RingOptions};
-    /// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
+    /// use eulertop::algebra::positivity::Parametrization;
+    /// use std::sync::Arc;
+    /// // the domain: x > 0
+    /// let mut par = Parametrization::new();
+    /// for v in ["x"] {
+    ///     let t = par.positive(&format!("t_{v}")).unwrap();
+    ///     par.bind(v, t, String::new());
+    /// }
+    /// let ring = Ring::new(RingOptions { points: 2, positivity: Some(Arc::new(par)), ..Default::default() });
     /// let s = ring.sign_symbol_f64("s", &[1.0, -1.0]).unwrap();
     /// let x = ring.indeterminate_f64("x", &[0.5, 2.0]).unwrap();
     /// let v = (s.clone() * x.clone()).sign_value().unwrap();
@@ -91,7 +107,15 @@ impl Sym {
     ///
     /// ```
     /// use eulertop::algebra::{Ring, RingOptions};
-    /// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
+    /// use eulertop::algebra::positivity::Parametrization;
+    /// use std::sync::Arc;
+    /// // the domain: a nonzero, of either sign
+    /// let mut par = Parametrization::new();
+    /// for v in ["a"] {
+    ///     let t = par.nonzero(&format!("t_{v}")).unwrap();
+    ///     par.bind(v, t, String::new());
+    /// }
+    /// let ring = Ring::new(RingOptions { points: 2, positivity: Some(Arc::new(par)), ..Default::default() });
     /// let a = ring.indeterminate_f64("a", &[2.0, 3.0]).unwrap();
     /// assert!((a.clone() * a.clone() + ring.integer(1)).nonzero_on_domain().is_ok());
     /// assert!((a - ring.integer(3)).nonzero_on_domain().is_err()); // not proved

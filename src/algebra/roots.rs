@@ -413,14 +413,23 @@ impl Ring {
 }
 
 impl Sym {
-    /// The square root (principal branch at the domain points), exact in the tower:
-    /// `σ · q · Π rᵢ` with root symbols shared across the ring.  The sign σ is decided
-    /// from the shadows and recorded as an assumption; an error if the domain points
-    /// disagree.
+    /// The square root (the principal branch), exact in the tower: `σ · q · Π rᵢ` with
+    /// root symbols shared across the ring.  The values at the domain points suggest
+    /// the sign σ; the proof must prove it (the result positive, or `i` times a positive
+    /// value where the radicand is proved negative), or the branch is undecided
+    /// ([`AlgebraError::CannotDecide`]).
     ///
     /// ```
     /// use eulertop::algebra::{Ring, RingOptions};
-    /// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
+    /// use eulertop::algebra::positivity::Parametrization;
+    /// use std::sync::Arc;
+    /// // the domain: a, b > 0
+    /// let mut par = Parametrization::new();
+    /// for v in ["a", "b"] {
+    ///     let t = par.positive(&format!("t_{v}")).unwrap();
+    ///     par.bind(v, t, String::new());
+    /// }
+    /// let ring = Ring::new(RingOptions { points: 2, positivity: Some(Arc::new(par)), ..Default::default() });
     /// let a = ring.indeterminate_f64("a", &[2.0, 3.0]).unwrap();
     /// let b = ring.indeterminate_f64("b", &[0.5, 0.25]).unwrap();
     /// let r = (a.clone() * b.clone() * b.clone()).sqrt().unwrap(); // b·√a, b > 0

@@ -79,7 +79,11 @@ pub fn readme(input: &ReportInput) -> String {
     );
     let _ = writeln!(
         s,
-        "- **✓✓ proved**: the claim's formulas, evaluated symbolically (variables as indeterminates over ℚ, one symbol per square root of an irreducible factor, sn, cn, dn expanded by the addition theorems), give lhs − rhs with normal form 0; the proof rests on the relations and assumptions listed with the claim, and `eulertop prove ID --certificate FILE` writes a certificate that `scripts/recheck-certificates.py` rechecks with SymPy. Exact rational points alone never prove."
+        "- **✓✓ proved**: the claim's formulas, evaluated symbolically (variables as indeterminates over ℚ, one symbol per square root of an irreducible factor, sn, cn, dn expanded by the addition theorems), give lhs − rhs with normal form 0 on the whole stated domain: every sign, branch and comparison is proved (or split by, each part proved), never taken at sample points; the proof rests on the relations listed with the claim and on the hypotheses the claim states, each quoted from the paper (`identities/hypotheses.toml`); `eulertop prove ID --certificate FILE` writes a certificate that `scripts/recheck-certificates.py` rechecks with SymPy where the format records every step. Exact rational points alone never prove."
+    );
+    let _ = writeln!(
+        s,
+        "- **≡ by construction**: the claim restates the equation by which the model defines its map (its `construction` field says which); the normal form confirms that the solver solves it, and it is not counted among the theorems proved."
     );
     let _ = writeln!(
         s,

@@ -1,5 +1,5 @@
 //! The symbolic proof of a claim as shown in the reports: its steps and what it rests on
-//! (symbols, relations, assumptions, cases), or why there is none.  Times are left out, so the
+//! (symbols, relations, hypotheses, cases), or why there is none.  Times are left out, so the
 //! reports stay byte-identical from run to run.
 
 use crate::claims::verdict::ProofInfo;
