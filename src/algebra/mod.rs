@@ -106,6 +106,7 @@
 
 mod addition;
 mod base_table;
+mod budget;
 pub mod certificate;
 mod coordinates;
 mod den_factors;
@@ -129,6 +130,7 @@ mod sym;
 mod symbols;
 mod val;
 
+pub use budget::{BUDGET_MESSAGE, Budget, DEFAULT_MEMORY_MB, DEFAULT_TIME_MS, set_default_budget};
 pub use elliptic::BaseHint;
 pub use error::{AlgResult, AlgebraError};
 pub use proof::{Outcome, Proof, prove_components, prove_identity};

@@ -53,6 +53,39 @@ pub fn check_jobs(jobs: Option<usize>) -> Result<(), CliError> {
     }
 }
 
+/// The budget of every symbolic proof attempt (`verify`, `prove`, `report`); see
+/// [`crate::algebra::Budget`].
+#[derive(clap::Args, Debug, Clone, Copy)]
+pub struct ProofBudgetArgs {
+    /// Wall-clock time of one proof attempt in milliseconds, 1..=86400000; past it the
+    /// claim is not proved and keeps its numerical verdict.
+    #[arg(long, value_name = "MS", default_value_t = crate::algebra::DEFAULT_TIME_MS)]
+    pub proof_budget_ms: u64,
+    /// Ceiling on the resident memory while a proof runs, in MiB, 64..=1048576.
+    #[arg(long, value_name = "MB", default_value_t = crate::algebra::DEFAULT_MEMORY_MB)]
+    pub proof_memory_mb: u64,
+}
+
+impl ProofBudgetArgs {
+    /// Checks the ranges and makes the budget that of every proof attempt.
+    pub fn apply(&self) -> Result<(), CliError> {
+        if !(1..=86_400_000).contains(&self.proof_budget_ms) {
+            return Err(CliError(format!(
+                "--proof-budget-ms {} is outside 1..=86400000 (milliseconds)",
+                self.proof_budget_ms
+            )));
+        }
+        if !(64..=1 << 20).contains(&self.proof_memory_mb) {
+            return Err(CliError(format!(
+                "--proof-memory-mb {} is outside 64..=1048576 (MiB)",
+                self.proof_memory_mb
+            )));
+        }
+        crate::algebra::set_default_budget(self.proof_budget_ms, self.proof_memory_mb);
+        Ok(())
+    }
+}
+
 pub mod jacobi;
 pub mod orbit;
 mod orbit_row;

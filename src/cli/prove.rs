@@ -24,6 +24,9 @@ pub struct Args {
     /// Write the certificate (a SymPy-recheckable script) to this file.
     #[arg(long)]
     pub certificate: Option<String>,
+    /// The budget of every proof attempt.
+    #[command(flatten)]
+    pub budget: super::ProofBudgetArgs,
 }
 
 /// The derivation as text.
@@ -65,6 +68,7 @@ pub fn derivation(id: &str, printed: &str, p: &ProofInfo) -> String {
 
 /// Runs `eulertop prove`; exit status 0 if proved, 1 if not.
 pub fn run(args: Args) -> Result<i32, CliError> {
+    args.budget.apply()?;
     let cat = super::verify::load(&args.catalogue)?;
     let claim = cat
         .claims

@@ -30,6 +30,9 @@ pub struct Args {
     /// `<!-- /verdicts -->`) is rewritten; empty to skip.
     #[arg(long, default_value = "README.md")]
     pub readme: String,
+    /// The budget of every proof attempt.
+    #[command(flatten)]
+    pub budget: super::ProofBudgetArgs,
 }
 
 /// Reads `\newcommand{\name}{body}` lines from a LaTeX preamble.
@@ -171,6 +174,7 @@ fn sections(cat: &crate::claims::catalogue::Catalogue) -> Vec<Section> {
 
 /// Runs `eulertop report`: every argument is checked before anything is written.
 pub fn run(args: Args) -> Result<i32, CliError> {
+    args.budget.apply()?;
     let bits = parse_bits(&args.bits)?;
     super::check_jobs(args.jobs)?;
     let readme = match args.readme.as_str() {

@@ -30,6 +30,9 @@ pub struct Args {
     /// Print the coverage table (paper label → claim ids → verdicts).
     #[arg(long)]
     pub coverage: bool,
+    /// The budget of every proof attempt.
+    #[command(flatten)]
+    pub budget: super::ProofBudgetArgs,
 }
 
 /// Loads the catalogue with the model's functions; load errors become [`CliError`].
@@ -189,6 +192,7 @@ pub fn run_with_progress(
 
 /// Runs `eulertop verify`.
 pub fn run(args: Args) -> Result<i32, CliError> {
+    args.budget.apply()?;
     let bits = parse_bits(&args.bits)?;
     if args.format != "text" && args.format != "json" {
         return Err(CliError(format!(

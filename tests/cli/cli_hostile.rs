@@ -547,3 +547,135 @@ fn row14_usage_errors_are_one_line() {
     assert_eq!(o.code, Some(2), "no command: {}", o.stderr);
     assert!(o.stderr.contains("Usage: eulertop"), "{}", o.stderr);
 }
+
+// -- R2: every proof attempt has a budget ---------------------------------------------
+
+/// A claim with the arithmetic-geometric mean written out as a `let` chain: twelve
+/// nested square roots, whose norms the prover's square-root search multiplies out
+/// (several GB in minutes without a budget); numerically it is verified at once.
+fn agm_catalogue(name: &str) -> PathBuf {
+    let n = 12;
+    let mut lets = vec!["a0 = 1".to_string(), "b0 = sqrt(1 - k^2)".to_string()];
+    for j in 1..=n {
+        lets.push(format!("a{j} = (a{} + b{})/2", j - 1, j - 1));
+        lets.push(format!("b{j} = sqrt(a{}*b{})", j - 1, j - 1));
+    }
+    // a_n² − b_n² = (a_{n−1} − b_{n−1})²/4 exactly
+    let text = format!(
+        "[[claim]]\nid = \"t.agm\"\nlocation = \"test\"\nprinted = 'x'\n\
+         environment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\n\
+         expect = \"holds\"\nvars = [[\"k\", \"uniform(0.1, 0.9)\"]]\n\
+         let = '''\n{}\n'''\nlhs = \"a{n}^2 - b{n}^2\"\nrhs = \"(a{m} - b{m})^2/4\"\n",
+        lets.join("\n"),
+        m = n - 1
+    );
+    catalogue(name, text.as_bytes())
+}
+
+#[test]
+fn r2_a_proof_stops_at_its_time_budget_and_keeps_the_numerical_verdict() {
+    let dir = agm_catalogue("agm");
+    let cat = dir.to_str().unwrap();
+    let start = Instant::now();
+    let child = bin()
+        .args([
+            "prove",
+            "t.agm",
+            "--catalogue",
+            cat,
+            "--proof-budget-ms",
+            "1500",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let o = wait_for(child, 60);
+    assert!(
+        start.elapsed() < Duration::from_secs(30),
+        "{:?}",
+        start.elapsed()
+    );
+    assert!(
+        o.stdout
+            .contains("not proved: the proof exceeded its budget (1500 ms"),
+        "{}{}",
+        o.stdout,
+        o.stderr
+    );
+    let child = bin()
+        .args([
+            "verify",
+            "--catalogue",
+            cat,
+            "--bits",
+            "53,128",
+            "--format",
+            "json",
+            "--proof-budget-ms",
+            "1500",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let o = wait_for(child, 60);
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    let v: serde_json::Value = serde_json::from_str(&o.stdout).expect("JSON");
+    let c = &v["claims"][0];
+    assert_eq!(c["verdict"], "holds", "{c}");
+    assert!(
+        c.to_string().contains("exceeded its budget"),
+        "no budget reason in {c}"
+    );
+}
+
+#[test]
+fn r2_a_memory_ceiling_stops_the_proof() {
+    let dir = agm_catalogue("agm-memory");
+    let child = bin()
+        .args([
+            "prove",
+            "t.agm",
+            "--catalogue",
+            dir.to_str().unwrap(),
+            "--proof-memory-mb",
+            "64",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let o = wait_for(child, 60);
+    assert!(
+        o.stdout.contains("exceeded its budget") && o.stdout.contains("MiB"),
+        "{}{}",
+        o.stdout,
+        o.stderr
+    );
+}
+
+#[test]
+fn r2_the_time_budget_applies_to_catalogue_proofs() {
+    // this proof takes tens of milliseconds: one millisecond is not enough, and the
+    // claim keeps its numerical verdict
+    let o = run(&[
+        "verify",
+        "--only",
+        "sec4.prop3.constructed.poisson",
+        "--bits",
+        "53,128",
+        "--format",
+        "json",
+        "--proof-budget-ms",
+        "1",
+    ]);
+    let v: serde_json::Value = serde_json::from_str(&o.stdout).expect("JSON");
+    let c = &v["claims"][0];
+    assert_eq!(c["verdict"], "holds", "{c}");
+    assert!(c.to_string().contains("exceeded its budget (1 ms"), "{c}");
+    for bad in [["--proof-budget-ms", "0"], ["--proof-memory-mb", "1"]] {
+        let o = run(&["prove", "sec2.x", bad[0], bad[1]]);
+        assert_one_line_error(&o, &[bad[0]], bad[0]);
+    }
+}
