@@ -55,11 +55,31 @@ pub fn parse_newcommands(tex: &str) -> BTreeMap<String, String> {
     m
 }
 
+/// The text of a regular file of at most
+/// [`MAX_TEXT_FILE_BYTES`](crate::claims::catalogue::source::MAX_TEXT_FILE_BYTES), as UTF-8.
+pub fn read_text(path: &Path) -> Result<String, String> {
+    use crate::claims::catalogue::source::{MAX_TEXT_FILE_BYTES, read_regular};
+    let bytes = read_regular(path, MAX_TEXT_FILE_BYTES)?;
+    String::from_utf8(bytes)
+        .map_err(|e| format!("not UTF-8 (byte {})", e.utf8_error().valid_up_to()))
+}
+
+/// [`read_text`] of a file the catalogue may leave out: `None` when it does not exist.
+fn optional_text(path: &Path) -> Result<Option<String>, CliError> {
+    if !path.exists() && path.symlink_metadata().is_err() {
+        return Ok(None);
+    }
+    read_text(path)
+        .map(Some)
+        .map_err(|e| CliError(format!("{}: {e}", path.display())))
+}
+
 fn read_conventions(dir: &Path) -> Result<Vec<Convention>, CliError> {
     let p = dir.join("conventions.toml");
-    let Ok(text) = std::fs::read_to_string(&p) else {
+    if !p.exists() {
         return Ok(Vec::new());
-    };
+    }
+    let text = read_text(&p).map_err(|e| CliError(format!("{}: {e}", p.display())))?;
     let v: toml::Value =
         toml::from_str(&text).map_err(|e| CliError(format!("{}: {}", p.display(), e.message())))?;
     let list = v
@@ -92,8 +112,7 @@ pub struct ReadmeBlock {
 pub fn read_readme(path: &Path) -> Result<ReadmeBlock, CliError> {
     let shown = path.display();
     let skip = "pass --readme '' to skip the README update";
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError(format!("--readme {shown}: {e}; {skip}")))?;
+    let text = read_text(path).map_err(|e| CliError(format!("--readme {shown}: {e}; {skip}")))?;
     let (open, close) = ("<!-- verdicts -->", "<!-- /verdicts -->");
     let (Some(a), Some(b)) = (text.find(open), text.find(close)) else {
         return Err(CliError(format!(
@@ -185,14 +204,14 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     check_out(out, readme.as_ref())?;
     let cat = load(&args.catalogue)?;
     let dir = Path::new(&args.catalogue);
-    let macros = match std::fs::read_to_string(dir.join("paper-macros.tex")) {
-        Ok(t) => parse_newcommands(&t),
-        Err(_) => BTreeMap::new(),
+    let macros = match optional_text(&dir.join("paper-macros.tex"))? {
+        Some(t) => parse_newcommands(&t),
+        None => BTreeMap::new(),
     };
     let conventions = read_conventions(dir)?;
-    let environments = match std::fs::read_to_string(dir.join("environments.tex")) {
-        Ok(t) => crate::report::paper_text::parse(&t),
-        Err(_) => BTreeMap::new(),
+    let environments = match optional_text(&dir.join("environments.tex"))? {
+        Some(t) => crate::report::paper_text::parse(&t),
+        None => BTreeMap::new(),
     };
     let places = cat
         .claims

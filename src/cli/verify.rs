@@ -137,21 +137,26 @@ fn summary(results: &[ClaimResult], bits: &[u32]) -> Summary {
 }
 
 /// Paper labels: from the LaTeX source named by the environment variable
-/// `EULERTOP_PAPER` when it is set and readable, else the checked-in list.
-pub fn paper_labels() -> Vec<String> {
-    if let Some(t) =
-        std::env::var_os("EULERTOP_PAPER").and_then(|p| std::fs::read_to_string(p).ok())
-    {
+/// `EULERTOP_PAPER` when it is set, else the checked-in list.  A source that cannot be
+/// read or has no `\label` is an error naming the variable.
+pub fn paper_labels() -> Result<Vec<String>, CliError> {
+    if let Some(p) = std::env::var_os("EULERTOP_PAPER") {
+        let shown = Path::new(&p).display().to_string();
+        let t = super::report::read_text(Path::new(&p))
+            .map_err(|e| CliError(format!("EULERTOP_PAPER={shown}: {e}")))?;
         let l = latex_labels(&t);
-        if !l.is_empty() {
-            return l;
+        if l.is_empty() {
+            return Err(CliError(format!(
+                "EULERTOP_PAPER={shown}: no \\label in the file"
+            )));
         }
+        return Ok(l);
     }
-    include_str!("../../tests/data/paper_labels.txt")
+    Ok(include_str!("../../tests/data/paper_labels.txt")
         .lines()
         .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
         .map(|l| l.to_string())
-        .collect()
+        .collect())
 }
 
 /// Verifies the selected claims on `jobs` worker threads (default: all cores), with a
@@ -216,12 +221,18 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             args.only.unwrap_or_default()
         )));
     }
+    // the labels are read before the run, so a bad EULERTOP_PAPER costs nothing
+    let labels = if args.coverage {
+        paper_labels()?
+    } else {
+        Vec::new()
+    };
     let results = run_with_progress(&cat, &opts, &select, total, args.jobs)?;
     let sum = summary(&results, &bits);
     let code = i32::from(!sum.unexpected.is_empty());
     if args.format == "json" {
         let coverage = args.coverage.then(|| {
-            coverage_table(&paper_labels(), &results)
+            coverage_table(&labels, &results)
                 .into_iter()
                 .map(|(label, ids)| CoverageRow {
                     label,
@@ -243,7 +254,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         let mut out = super::stdout();
         let written = print_text(&mut out, &results, &bits, &sum).and_then(|()| {
             if args.coverage {
-                print_coverage(&mut out, &results)?;
+                print_coverage(&mut out, &labels, &results)?;
             }
             out.flush()
         });
@@ -350,9 +361,12 @@ fn print_text(
     )
 }
 
-fn print_coverage(w: &mut impl Write, results: &[ClaimResult]) -> std::io::Result<()> {
-    let labels = paper_labels();
-    let table = coverage_table(&labels, results);
+fn print_coverage(
+    w: &mut impl Write,
+    labels: &[String],
+    results: &[ClaimResult],
+) -> std::io::Result<()> {
+    let table = coverage_table(labels, results);
     let covered = table.iter().filter(|(_, ids)| !ids.is_empty()).count();
     writeln!(
         w,

@@ -679,3 +679,148 @@ fn r2_the_time_budget_applies_to_catalogue_proofs() {
         assert_one_line_error(&o, &[bad[0]], bad[0]);
     }
 }
+
+// -- H1, W4, W5, M10: sums and products ------------------------------------------------
+
+#[test]
+fn h1_nested_sums_are_bounded_in_all() {
+    let start = Instant::now();
+    let o = run(&["eval", "sum(k,1,100000,sum(j,1,100000,j))"]);
+    assert!(start.elapsed() < Duration::from_secs(20));
+    assert_one_line_error(&o, &["nested", "10000000000", "1000000"], "nested sums");
+    // through a function of a claim too
+    let text = format!(
+        "{CLAIM_HEAD}let = '''\nf(a) = sum(j, 1, 100000, a*j)\n'''\n\
+         lhs = \"sum(k, 1, 100000, f(k))\"\nrhs = \"x\"\n"
+    );
+    let dir = catalogue("nested-sum", text.as_bytes());
+    let start = Instant::now();
+    let o = run(&[
+        "verify",
+        "--bits",
+        "53",
+        "--catalogue",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(start.elapsed() < Duration::from_secs(30));
+    assert_ne!(o.code, Some(0), "{}", o.stdout);
+    assert!(o.stdout.contains("nested sums"), "{}{}", o.stdout, o.stderr);
+    // within the bound: Σ_{k=1}^{1000} Σ_{j=1}^{1000} 1 = 10⁶
+    let o = run(&["eval", "sum(k,1,1000,sum(j,1,1000,1))"]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(1e6),
+        "{}",
+        o.stderr
+    );
+}
+
+#[test]
+fn w5_the_term_limit_is_exact_and_m10_names_prod() {
+    let o = run(&["eval", "sum(k,1,100001,1)"]);
+    assert_one_line_error(&o, &["sum", "100001 terms", "100000"], "100001 terms");
+    let o = run(&["eval", "sum(k,1,100000,1)"]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(1e5),
+        "{}",
+        o.stderr
+    );
+    let o = run(&["eval", "prod(k,1,1000000,1)"]);
+    assert_one_line_error(&o, &["prod range"], "prod of 10⁶ terms");
+    assert!(!o.stderr.contains("sum"), "{}", o.stderr);
+}
+
+#[test]
+fn w4_a_sum_has_the_type_of_its_body() {
+    // Σ_{k=1}^{3} (k, k, k) = (6, 6, 6)
+    let o = run(&["eval", "sum(k,1,3,vec(k,k,k))"]);
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    let v: Vec<f64> = o
+        .stdout
+        .trim()
+        .trim_matches(['[', ']'])
+        .split(',')
+        .map(|x| x.trim().parse().unwrap())
+        .collect();
+    assert_eq!(v, vec![6.0, 6.0, 6.0]);
+    // an empty sum of vectors is the zero vector: adding a vector to it works
+    let o = run(&["eval", "sum(k,1,0,vec(k,k,k)) + vec(1,2,3)"]);
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    assert!(o.stdout.starts_with('['), "{}", o.stdout);
+}
+
+// -- H2, R1: only regular files of bounded size are read ------------------------------
+
+#[test]
+fn h2_a_fifo_or_device_is_not_a_catalogue_file() {
+    let dir = temp_dir("fifo");
+    let fifo = dir.join("a.toml");
+    let made = Command::new("mkfifo").arg(&fifo).status();
+    if made.is_ok_and(|s| s.success()) {
+        let child = bin()
+            .args(["verify", "--catalogue", dir.to_str().unwrap()])
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("binary runs");
+        let o = wait_for(child, 20);
+        assert_one_line_error(&o, &["a.toml", "not a regular file", "FIFO"], "FIFO");
+    }
+    let dir = temp_dir("device");
+    std::os::unix::fs::symlink("/dev/zero", dir.join("a.toml")).expect("symlink");
+    let child = bin()
+        .args(["verify", "--catalogue", dir.to_str().unwrap()])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let o = wait_for(child, 20);
+    assert_one_line_error(&o, &["a.toml", "not a regular file"], "/dev/zero");
+}
+
+#[test]
+fn r1_files_are_refused_above_their_size_limit() {
+    let dir = temp_dir("big");
+    // a sparse file of 17 MiB: refused before a byte is read
+    let f = std::fs::File::create(dir.join("a.toml")).unwrap();
+    f.set_len(17 << 20).unwrap();
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_one_line_error(&o, &["a.toml", "above the limit", "16 MiB"], "17 MiB file");
+    let child = bin()
+        .args(["report", "--readme", "/dev/zero", "--out", "unused"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let o = wait_for(child, 20);
+    assert_one_line_error(
+        &o,
+        &["--readme", "not a regular file"],
+        "--readme /dev/zero",
+    );
+    let o = run(&[
+        "report",
+        "--readme",
+        dir.join("a.toml").to_str().unwrap(),
+        "--out",
+        "unused",
+    ]);
+    assert_one_line_error(&o, &["--readme", "above the limit"], "--readme 17 MiB");
+}
+
+#[test]
+fn m21_an_unreadable_paper_source_is_an_error() {
+    let mut cmd = bin();
+    cmd.args(["verify", "--coverage", "--only", "sec2.ET"])
+        .env("EULERTOP_PAPER", "/nonexistent/paper.tex")
+        .current_dir(env!("CARGO_MANIFEST_DIR"));
+    let o = cmd.output().expect("runs");
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("EULERTOP_PAPER=/nonexistent/paper.tex"),
+        "{err}"
+    );
+}

@@ -225,9 +225,9 @@ name_table! {
         Skew = "skew"("v"): Exact(1), "vec3 → mat3", Linear, Name;
         /// inverse of skew
         Unskew = "unskew"("X"): Exact(1), "mat3 → vec3", Linear, Name;
-        /// Σ of body over the integers k = a..=b (at most 100000 terms)
+        /// Σ of body over the integers k = a..=b (at most 100000 terms; 10⁶ nested)
         Sum = "sum"("k, a, b, body"): Exact(4), "name, integer, integer, T → T", Form, Tex::Form;
-        /// Π of body over the integers k = a..=b (at most 100000 terms)
+        /// Π of body over the integers k = a..=b (at most 100000 terms; 10⁶ nested)
         Prod = "prod"("k, a, b, body"): Exact(4), "name, integer, integer, T → T", Form, Tex::Form;
         /// derivative with respect to the real variable x, or with j to component j of the vec3 variable x (forward-mode automatic differentiation)
         D = "d"("expr, x[, j]"): OneOf(&[2, 3]), "real/vec3 expression, name[, integer] → same type", Form, Tex::Form;
