@@ -107,4 +107,5 @@ pub mod audit;
 pub mod eval;
 pub mod prove;
 pub mod report;
+mod report_install;
 pub mod verify;

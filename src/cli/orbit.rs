@@ -195,6 +195,29 @@ fn run_generic<R: Real>(like: R, args: &Args) -> Result<i32, CliError> {
     Ok(0)
 }
 
+/// Whether `a` and `b` name one file: the same path once the directory is resolved, or
+/// one existing file (a hard or symbolic link).
+fn same_file(a: &Path, b: &Path) -> bool {
+    let resolved = |p: &Path| {
+        let dir = match p.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d,
+            _ => Path::new("."),
+        };
+        Some(dir.canonicalize().ok()?.join(p.file_name()?))
+    };
+    if a == b || resolved(a).is_some_and(|x| Some(x) == resolved(b)) {
+        return true;
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        if let (Ok(x), Ok(y)) = (std::fs::metadata(a), std::fs::metadata(b)) {
+            return x.dev() == y.dev() && x.ino() == y.ino();
+        }
+    }
+    false
+}
+
 /// Runs the subcommand; returns the exit status.
 pub fn run(args: Args) -> Result<i32, CliError> {
     check_bits(args.step.bits)?;
@@ -202,6 +225,15 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         return Err(CliError::new(format!(
             "--svg draws at most {MAX_SVG_STEPS} steps, got --steps {} (use --csv for longer orbits)",
             args.step.steps
+        )));
+    }
+    if let (Some(c), Some(s)) = (&args.csv, &args.svg)
+        && same_file(c, s)
+    {
+        return Err(CliError::new(format!(
+            "--csv {} and --svg {} name the same file: the figure would overwrite the table",
+            c.display(),
+            s.display()
         )));
     }
     if args.step.bits == 53 {

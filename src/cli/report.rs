@@ -242,10 +242,20 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         places,
         environments,
     };
-    let written = write_reports(&input, out)
-        .map_err(|e| CliError(format!("cannot write reports to {}: {e}", out.display())))?;
-    crate::report::figures::model::write_all(&out.join("figures"))
-        .map_err(|e| CliError(format!("cannot write figures: {e}")))?;
+    // every page is written beside --out first, then moved in (the pages of an
+    // earlier report that this one does not write are removed)
+    let staging = super::report_install::staging_dir(out)?;
+    let staged = write_reports(&input, &staging)
+        .map_err(|e| CliError(format!("cannot write the report: {e}")))
+        .and_then(|_| {
+            crate::report::figures::model::write_all(&staging.join("figures"))
+                .map_err(|e| CliError(format!("cannot write figures: {e}")))
+        });
+    if let Err(e) = staged {
+        let _ = std::fs::remove_dir_all(&staging);
+        return Err(e);
+    }
+    let written = super::report_install::install(&staging, out)?;
     if let Some(r) = &readme {
         r.update(&results)?;
     }
