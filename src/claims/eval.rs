@@ -497,7 +497,7 @@ impl<'r, T: Backend> Evaluator<'r, T> {
         if n > MAX_LOOP_TERMS as i128 {
             return Err(EvalError::at(
                 format!(
-                    "{what} range too long: {a}..{b} has {n} terms, more than {MAX_LOOP_TERMS}"
+                    "{what} range too long: {a}..{b} has {n} terms, more than {MAX_LOOP_TERMS} terms"
                 ),
                 sp,
             ));
@@ -563,16 +563,39 @@ impl<'r, T: Backend> Evaluator<'r, T> {
 
     #[inline(never)]
     fn list(&self, items: &[Expr], sp: Span) -> Result<Value<T>, EvalError> {
-        let vals: Vec<Value<T>> = items
-            .iter()
-            .map(|x| self.eval(x))
-            .collect::<Result<_, _>>()?;
         let err = || {
             EvalError::at(
                 "a list must be [a, b, c] (reals), [[..],[..],[..]] (3×3 real) or [[a, b],[c, d]] (2×2)",
                 sp,
             )
         };
+        // 2×2: the rows are lists of two scalars, which are not values on their own, so
+        // the entries are evaluated one by one
+        let pair = |e: &Expr| matches!(&e.kind, ExprKind::List(r) if r.len() == 2);
+        if items.len() == 2 && items.iter().all(pair) {
+            let mut rows = Vec::new();
+            for it in items {
+                let ExprKind::List(r) = &it.kind else {
+                    return Err(err());
+                };
+                if r.len() != 2 {
+                    return Err(err());
+                }
+                let entry = |x: &Expr| {
+                    self.eval(x)?
+                        .as_complex()
+                        .map_err(|m| EvalError::at(m, x.span))
+                };
+                rows.push([entry(&r[0])?, entry(&r[1])?]);
+            }
+            let r1 = rows.pop().ok_or_else(err)?;
+            let r0 = rows.pop().ok_or_else(err)?;
+            return Ok(Value::CMat2(Mat2([r0, r1])));
+        }
+        let vals: Vec<Value<T>> = items
+            .iter()
+            .map(|x| self.eval(x))
+            .collect::<Result<_, _>>()?;
         if vals.len() == 3 && vals.iter().all(|v| matches!(v, Value::Real(_))) {
             let r: Vec<T> = vals.iter().filter_map(|v| v.as_real().ok()).collect();
             return Ok(Value::Vec3(Vec3([
@@ -593,27 +616,6 @@ impl<'r, T: Backend> Evaluator<'r, T> {
                 rows[1].clone(),
                 rows[2].clone(),
             ])));
-        }
-        if vals.len() == 2 {
-            // 2×2: evaluate rows entry by entry (rows are lists of 2 scalars)
-            let mut rows = Vec::new();
-            for it in items {
-                let ExprKind::List(r) = &it.kind else {
-                    return Err(err());
-                };
-                if r.len() != 2 {
-                    return Err(err());
-                }
-                let entry = |x: &Expr| {
-                    self.eval(x)?
-                        .as_complex()
-                        .map_err(|m| EvalError::at(m, x.span))
-                };
-                rows.push([entry(&r[0])?, entry(&r[1])?]);
-            }
-            let r1 = rows.pop().ok_or_else(err)?;
-            let r0 = rows.pop().ok_or_else(err)?;
-            return Ok(Value::CMat2(Mat2([r0, r1])));
         }
         Err(err())
     }

@@ -141,7 +141,14 @@ impl<'a> Parser<'a> {
             let mut ps = Vec::new();
             if !self.is_sym(")") {
                 loop {
-                    ps.push(self.name()?.0);
+                    let (p, at) = self.name()?;
+                    if ps.contains(&p) {
+                        return Err(SyntaxError {
+                            message: format!("duplicate parameter '{p}' of '{name}'"),
+                            span: at,
+                        });
+                    }
+                    ps.push(p);
                     if self.is_sym(",") {
                         self.pos += 1;
                     } else {

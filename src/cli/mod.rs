@@ -40,6 +40,20 @@ pub fn print(text: &str) -> Result<(), CliError> {
     out.flush().map_err(&err)
 }
 
+/// `s` with control characters escaped (`\0`, `\u{1b}`, `\n`), for a message that
+/// quotes input.
+pub fn printable(s: &str) -> String {
+    s.chars()
+        .map(|c| {
+            if c.is_control() {
+                c.escape_default().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
+}
+
 /// The largest `--jobs` accepted (worker threads).
 pub const MAX_JOBS: usize = 1024;
 

@@ -62,7 +62,7 @@ pub struct Problem<R> {
 }
 
 /// Does the mantissa of a decimal (the part before any exponent) have a nonzero digit?
-fn nonzero_mantissa(t: &str) -> bool {
+pub(crate) fn nonzero_mantissa(t: &str) -> bool {
     let mant = t.split(['e', 'E']).next().unwrap_or("");
     mant.bytes().any(|b| (b'1'..=b'9').contains(&b))
 }
@@ -71,9 +71,7 @@ fn nonzero_mantissa(t: &str) -> bool {
 /// working precision (overflow, or underflow to 0) is reported as such.
 fn num<R: Real>(like: &R, s: &str, what: &str) -> Result<R, CliError> {
     let t = s.trim();
-    let decimal = t.parse::<f64>().is_ok()
-        && t.bytes()
-            .all(|b| b.is_ascii_digit() || b"+-.eE".contains(&b));
+    let decimal = crate::numbers::is_decimal(t);
     let bits = like.precision().unwrap_or(53);
     match like.parse_like(s) {
         Ok(v) if v.is_zero() && decimal && nonzero_mantissa(t) => Err(CliError::new(format!(

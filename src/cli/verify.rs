@@ -136,6 +136,36 @@ fn summary(results: &[ClaimResult], bits: &[u32]) -> Summary {
     }
 }
 
+/// A selected claim with `where` constraints (its own or its domain's) that no point
+/// satisfies is a data error naming the claim and the constraint, found before the run
+/// (one draw of its sampler each).
+pub fn check_domains_reachable(
+    cat: &Catalogue,
+    select: &(dyn Fn(&crate::claims::catalogue::Claim) -> bool + Sync),
+) -> Result<(), CliError> {
+    use crate::claims::sampler::{Sampler, Stream};
+    for c in cat.claims.iter().filter(|c| select(c)) {
+        let domain_wheres = (c.domain.as_ref())
+            .and_then(|d| cat.domains.get(&d.value))
+            .is_some_and(|d| !d.wheres.is_empty());
+        if c.wheres.is_empty() && !domain_wheres {
+            continue;
+        }
+        let Ok(mut s) = Sampler::new(cat, c, Stream::Samples) else {
+            continue;
+        };
+        if let Err(m) = s.draw()
+            && m.starts_with("domain too thin")
+        {
+            return Err(CliError(format!(
+                "{}: claim {}: the domain is unreachable: {m}",
+                c.position, c.id
+            )));
+        }
+    }
+    Ok(())
+}
+
 /// Paper labels: from the LaTeX source named by the environment variable
 /// `EULERTOP_PAPER` when it is set, else the checked-in list.  A source that cannot be
 /// read or has no `\label` is an error naming the variable.
@@ -221,6 +251,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             args.only.unwrap_or_default()
         )));
     }
+    check_domains_reachable(&cat, &select)?;
     // the labels are read before the run, so a bad EULERTOP_PAPER costs nothing
     let labels = if args.coverage {
         paper_labels()?

@@ -417,7 +417,7 @@ fn row07_recursive_definition_is_a_load_error() {
 #[test]
 fn row08_overflow_is_not_called_malformed() {
     let o = run_in(None, &["jacobi"], b"1e309 0.5\n", Stdio::piped());
-    assert_one_line_error(&o, &["line 1"], "jacobi 1e309");
+    assert_one_line_error(&o, &["<stdin>:1:1"], "jacobi 1e309");
     assert!(!o.stderr.contains("malformed"), "{}", o.stderr);
 }
 
@@ -433,12 +433,12 @@ fn row08_a_huge_sum_bound_is_named_too_large() {
 #[test]
 fn row09_non_utf8_and_huge_lines() {
     let o = run_in(None, &["jacobi"], b"0.5 0.5\n0.5 \xff\n", Stdio::piped());
-    assert_one_line_error(&o, &["line 2"], "non-UTF-8 line");
+    assert_one_line_error(&o, &["<stdin>:2:"], "non-UTF-8 line");
     let mut big = b"0.5 0.5\n".to_vec();
     big.extend(std::iter::repeat_n(b'x', 5 << 20));
     big.push(b'\n');
     let o = run_in(None, &["jacobi"], &big, Stdio::piped());
-    assert_one_line_error(&o, &["line 2"], "5 MB line");
+    assert_one_line_error(&o, &["<stdin>:2:"], "5 MB line");
     assert!(o.stderr.len() < 400, "message of {} bytes", o.stderr.len());
 }
 
@@ -1015,4 +1015,219 @@ fn m20_report_names_the_file_in_the_way_and_changes_nothing() {
     let o = run(&a);
     assert_one_line_error(&o, &["figures", "symbolic link"], "dangling figures");
     assert!(!out.join("README.md").exists(), "partial report written");
+}
+
+// -- W1, W2, W6, the rounded modulus: jacobi computes what was asked ------------------
+
+fn jacobi_values(args: &[&str], input: &str) -> Vec<f64> {
+    let mut a = vec!["jacobi"];
+    a.extend_from_slice(args);
+    let o = run_in(None, &a, input.as_bytes(), Stdio::piped());
+    assert_eq!(o.code, Some(0), "{args:?} {input}: {}", o.stderr);
+    o.stdout
+        .split_whitespace()
+        .map(|x| x.parse().expect("a number"))
+        .collect()
+}
+
+#[test]
+fn w1_cd_and_dc_at_k_equal_to_one_are_one() {
+    // k = 1: cn = dn = sech u, so cd = dc = 1 wherever sech u underflows too
+    assert_eq!(
+        jacobi_values(&["--functions", "cd,dc"], "800 1\n"),
+        [1.0, 1.0]
+    );
+    assert_eq!(
+        jacobi_values(&["--functions", "cd,dc", "--parameter"], "800 1\n"),
+        [1.0, 1.0]
+    );
+    assert_eq!(
+        jacobi_values(&["--functions", "cd,dc", "--bits", "256"], "1e9 1\n"),
+        [1.0, 1.0]
+    );
+    for f in ["cd", "dc"] {
+        let o = run(&["eval", &format!("{f}(1e3, 1)")]);
+        assert_eq!(o.code, Some(0), "{}", o.stderr);
+        assert_eq!(
+            o.stdout.trim().parse::<f64>().ok(),
+            Some(1.0),
+            "{}",
+            o.stdout
+        );
+    }
+    // nc = cosh u really overflows
+    let o = run_in(
+        None,
+        &["jacobi", "--functions", "nc"],
+        b"800 1\n",
+        Stdio::piped(),
+    );
+    assert_one_line_error(&o, &["overflows"], "nc(800, 1)");
+}
+
+#[test]
+fn w2_a_huge_modulus_with_a_tiny_argument() {
+    // k = 1e200, u = 1e-300: k·u = 1e-100, so sn = u(1 + O(1e-200)), cn = dn = 1
+    let v = jacobi_values(&[], "1e-300 1e200\n");
+    assert!((v[0] / 1e-300 - 1.0).abs() < 1e-15, "{v:?}");
+    assert_eq!(&v[1..], [1.0, 1.0]);
+}
+
+#[test]
+fn w6_one_number_grammar_everywhere() {
+    for bits in ["53", "256"] {
+        let o = run_in(
+            None,
+            &["jacobi", "--bits", bits],
+            b"1_000 0.8\n",
+            Stdio::piped(),
+        );
+        assert_one_line_error(
+            &o,
+            &["malformed u", "1_000"],
+            &format!("jacobi --bits {bits}"),
+        );
+        let o = run(&[
+            "step",
+            "--bits",
+            bits,
+            "--inertia",
+            "3,2,1",
+            "--h",
+            "0.1",
+            "1_0",
+            "1",
+            "1",
+        ]);
+        assert_one_line_error(&o, &["1_0"], &format!("step --bits {bits}"));
+        for bad in ["inf", "nan", "0x10", "1e", "--1"] {
+            let input = format!("{bad} 0.5\n");
+            let o = run_in(
+                None,
+                &["jacobi", "--bits", bits],
+                input.as_bytes(),
+                Stdio::piped(),
+            );
+            assert_one_line_error(&o, &["malformed u"], &format!("{bad} at {bits} bits"));
+        }
+    }
+    let o = run(&["eval", "1_000"]);
+    assert_eq!(o.code, Some(2), "{}", o.stdout);
+}
+
+#[test]
+fn a_modulus_rounded_to_one_is_refused() {
+    let o = run_in(
+        None,
+        &["jacobi"],
+        b"100 0.99999999999999999999999\n",
+        Stdio::piped(),
+    );
+    assert_one_line_error(
+        &o,
+        &["<stdin>:1:5", "rounds to 1", "53 bits"],
+        "k = 1 - 1e-23",
+    );
+    // at 128 bits k < 1: k' = √(1 − k²) ≈ 4.5e-12, K ≈ ln(4/k') ≈ 27.5, so u = 100 is
+    // a few quarter periods and cn is not sech(100) = 7.4e-44
+    let v = jacobi_values(&["--bits", "128"], "100 0.99999999999999999999999\n");
+    assert!(v[1].abs() > 1e-20, "{v:?}");
+    // k given as exactly 1 in another spelling is fine
+    let v = jacobi_values(&["--functions", "cn"], "1 1.000\n");
+    assert!((v[0] - 1.0 / 1f64.cosh()).abs() < 1e-15, "{v:?}");
+}
+
+// -- M1–M3, M5–M7: jacobi's messages --------------------------------------------------
+
+#[test]
+fn m1_m2_m3_messages_name_the_input() {
+    let o = run_in(
+        None,
+        &["jacobi", "--parameter"],
+        b"0.5 1e300\n",
+        Stdio::piped(),
+    );
+    assert_one_line_error(&o, &["given u = 5e-1"], "M1");
+    let o = run_in(
+        None,
+        &["jacobi", "--functions", "ns"],
+        b"1e-400 0.5\n",
+        Stdio::piped(),
+    );
+    assert_one_line_error(&o, &["u = 1e-400 underflows", "53 bits"], "M2");
+    assert!(!o.stderr.contains("pole"), "{}", o.stderr);
+    let o = run_in(
+        None,
+        &["jacobi", "--bits", "256"],
+        b"1e999999999999 1\n",
+        Stdio::piped(),
+    );
+    assert_one_line_error(&o, &["overflows at 256 bits"], "M3");
+    assert!(!o.stderr.contains("f64"), "{}", o.stderr);
+}
+
+#[test]
+fn m5_m6_m7_positions_control_characters_and_standard_output() {
+    let o = run_in(None, &["jacobi"], b"0.5 0.5\n0.5 x\n", Stdio::piped());
+    assert_one_line_error(&o, &["<stdin>:2:5:", "malformed modulus k 'x'"], "M5");
+    let o = run_in(None, &["jacobi"], b"0.5 0.8\0\n", Stdio::piped());
+    assert_one_line_error(&o, &["\\u{0}"], "M6 NUL");
+    assert!(!o.stderr.contains('\0'), "{:?}", o.stderr);
+    let o = run_in(None, &["jacobi"], b"0.5 0.8\x1b[31m\n", Stdio::piped());
+    assert!(!o.stderr.contains('\x1b'), "{:?}", o.stderr);
+    let o = run_in(None, &["jacobi"], b"0.5 0.5\n", dev_full());
+    assert_one_line_error(&o, &["standard output", "No space"], "M7");
+}
+
+// -- W3, W7, X1: the language and the domain ------------------------------------------
+
+#[test]
+fn w3_the_determinant_of_a_two_by_two_literal() {
+    // det [[1, 2], [3, 4]] = 1·4 − 2·3 = −2
+    let o = run(&["eval", "re(det([[1,2],[3,4]]))"]);
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(-2.0),
+        "{}",
+        o.stdout
+    );
+    let text = format!("{CLAIM_HEAD}lhs = \"re(det([[x, 2], [3, 4]]))\"\nrhs = \"4*x - 6\"\n");
+    let dir = catalogue("det2", text.as_bytes());
+    let o = run(&[
+        "verify",
+        "--bits",
+        "53,128",
+        "--catalogue",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(o.code == Some(0) || o.code == Some(1), "{}", o.stderr);
+    assert!(
+        o.stdout.contains(" holds ") || o.stdout.contains(" proved "),
+        "{}",
+        o.stdout
+    );
+}
+
+#[test]
+fn w7_a_duplicate_parameter_is_a_load_error() {
+    let text = format!("{CLAIM_HEAD}let = '''\ng(y, y) = y\n'''\nlhs = \"g(1, 2)\"\nrhs = \"2\"\n");
+    let dir = catalogue("dup-param", text.as_bytes());
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_data_error(&o, &["t.toml:", "duplicate parameter 'y'"], "g(y, y)");
+}
+
+#[test]
+fn x1_an_unreachable_domain_is_an_error_naming_the_where() {
+    let text = "[[claim]]\nid = \"t.c\"\nlocation = \"test\"\nprinted = 'x'\n\
+        environment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\n\
+        expect = \"holds\"\nvars = [[\"x\", \"uniform(0.1, 1)\"]]\nwhere = [\"x > 2\"]\n\
+        lhs = \"x\"\nrhs = \"x\"\n";
+    let dir = catalogue("unreachable", text.as_bytes());
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_one_line_error(
+        &o,
+        &["t.toml", "t.c", "unreachable", "x > 2"],
+        "where x > 2",
+    );
 }
