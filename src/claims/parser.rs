@@ -175,7 +175,9 @@ impl<'a> Parser<'a> {
         self.depth += 1;
         if self.depth > MAX_DEPTH {
             return Err(SyntaxError {
-                message: "expression nested too deeply".into(),
+                message: format!(
+                    "expression nested too deeply (more than {MAX_DEPTH} levels: a parenthesis, unary sign, 'not' or exponent counts one, a call or bracket two)"
+                ),
                 span: self.span_here(),
             });
         }
@@ -404,10 +406,9 @@ impl<'a> Parser<'a> {
                 })
             }
             Tok::Sym("(") => {
+                // one level: that of the expression inside
                 self.pos += 1;
-                self.enter()?;
                 let e = self.expr()?;
-                self.depth -= 1;
                 self.eat_sym(")")?;
                 Ok(e)
             }
@@ -447,6 +448,17 @@ impl<'a> Parser<'a> {
 fn binder(e: &Expr, what: &str) -> Result<String, SyntaxError> {
     match &e.kind {
         ExprKind::Name(n) if n != "pi" && n != "i" => Ok(n.clone()),
+        ExprKind::Name(n) => Err(SyntaxError {
+            message: format!(
+                "{what} must be a variable name, and '{n}' is the constant {}",
+                if n == "i" {
+                    "i, the imaginary unit"
+                } else {
+                    "pi"
+                }
+            ),
+            span: e.span,
+        }),
         _ => Err(SyntaxError {
             message: format!("{what} must be a variable name"),
             span: e.span,

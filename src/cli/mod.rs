@@ -110,9 +110,15 @@ pub mod step;
 pub fn parse_list<T: std::str::FromStr>(s: &str, what: &str) -> Result<Vec<T>, CliError> {
     s.split(',')
         .map(|t| {
-            t.trim()
-                .parse::<T>()
-                .map_err(|_| CliError(format!("malformed {what} '{}' in '{s}'", t.trim())))
+            let t = t.trim();
+            t.parse::<T>().map_err(|_| {
+                let digits = t.strip_prefix(['-', '+']).unwrap_or(t);
+                if !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()) {
+                    CliError(format!("{what} '{t}' in '{s}' is out of range"))
+                } else {
+                    CliError(format!("malformed {what} '{t}' in '{s}'"))
+                }
+            })
         })
         .collect()
 }

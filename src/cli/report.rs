@@ -18,7 +18,11 @@ pub struct Args {
     #[arg(long, default_value = "reports")]
     pub out: String,
     /// Precision ladder in bits.
-    #[arg(long, default_value = "53,128,256,512,1024")]
+    #[arg(
+        long,
+        default_value = "53,128,256,512,1024",
+        allow_hyphen_values = true
+    )]
     pub bits: String,
     /// Catalogue directory.
     #[arg(long, default_value = "identities")]

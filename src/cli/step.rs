@@ -38,7 +38,7 @@ pub struct Args {
     #[arg(long, default_value_t = 1)]
     pub steps: usize,
     /// Precision in bits (53 = f64).
-    #[arg(long, default_value_t = 53)]
+    #[arg(long, default_value_t = 53, allow_negative_numbers = true)]
     pub bits: u32,
     /// Start point M1 M2 M3.
     #[arg(num_args = 3, required = true, value_names = ["M1", "M2", "M3"])]

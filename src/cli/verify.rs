@@ -13,7 +13,11 @@ use std::path::Path;
 #[derive(Parser, Debug)]
 pub struct Args {
     /// Precision ladder in bits (53 = IEEE double, others MPFR).
-    #[arg(long, default_value = "53,128,256,512,1024")]
+    #[arg(
+        long,
+        default_value = "53,128,256,512,1024",
+        allow_hyphen_values = true
+    )]
     pub bits: String,
     /// Only claims whose id contains this text (`*` matches any run of characters).
     #[arg(long)]
@@ -60,15 +64,22 @@ pub fn matches_pattern(id: &str, pat: &str) -> bool {
     parts.last().is_none_or(|l| l.is_empty() || id.ends_with(l))
 }
 
+/// The one precision range of every command: 2 to 1048576 bits (53 is IEEE double,
+/// any other MPFR).
+pub fn check_precision(b: u32) -> Result<(), CliError> {
+    if !(2..=1 << 20).contains(&b) {
+        return Err(CliError(format!(
+            "precision {b} bits is out of range 2..=1048576 (53 = f64, others MPFR)"
+        )));
+    }
+    Ok(())
+}
+
 /// Parses and checks a precision ladder.
 pub fn parse_bits(s: &str) -> Result<Vec<u32>, CliError> {
     let bits: Vec<u32> = super::parse_list(s, "precision")?;
     for &b in &bits {
-        if b != 53 && !(54..=1 << 20).contains(&b) {
-            return Err(CliError(format!(
-                "precision {b} bits out of range (53 = f64, or 54..1048576 for MPFR)"
-            )));
-        }
+        check_precision(b)?;
     }
     if bits.is_empty() {
         return Err(CliError("empty precision list".into()));

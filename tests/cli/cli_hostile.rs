@@ -1231,3 +1231,94 @@ fn x1_an_unreachable_domain_is_an_error_naming_the_where() {
         "where x > 2",
     );
 }
+
+// -- M4, M8, M9, M11, M18, M22, M24 and eval's output ---------------------------------
+
+#[test]
+fn m4_out_of_range_is_not_malformed() {
+    let o = run(&["verify", "--bits", "99999999999999999999999"]);
+    assert_one_line_error(&o, &["out of range"], "--bits 1e23");
+    assert!(!o.stderr.contains("malformed"), "{}", o.stderr);
+    let o = run(&["eval", "1e309"]);
+    assert_one_line_error(&o, &["1e309", "out of range", "overflows"], "eval 1e309");
+    let o = run(&["eval", "uniform(0, 1e309)"]);
+    assert!(!o.stderr.contains("malformed"), "{}", o.stderr);
+}
+
+#[test]
+fn m8_a_negative_precision_is_named() {
+    for cmd in ["verify", "eval", "jacobi"] {
+        let mut a = vec![cmd, "--bits", "-53"];
+        if cmd == "eval" {
+            a.push("1");
+        }
+        let o = run(&a);
+        assert_one_line_error(&o, &["-53"], &format!("{cmd} --bits -53"));
+        assert!(!o.stderr.contains("'-5'"), "{}", o.stderr);
+    }
+}
+
+#[test]
+fn m9_nesting_limit_is_stated_and_parentheses_count_once() {
+    let deep = |n: usize| format!("{}1{}", "(".repeat(n), ")".repeat(n));
+    let o = run(&["eval", &deep(150)]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(1.0),
+        "{}",
+        o.stderr
+    );
+    let o = run(&["eval", &deep(250)]);
+    assert_eq!(o.code, Some(2));
+    assert!(o.stderr.contains("more than 200 levels"), "{}", o.stderr);
+    let o = run(&["eval", "--", &format!("{}1", "-".repeat(201))]);
+    assert!(o.stderr.contains("more than 200 levels"), "{}", o.stderr);
+}
+
+#[test]
+fn m11_m18_m22_messages_name_the_cause() {
+    let o = run(&["eval", "sum(i,1,3,i)"]);
+    assert!(o.stderr.contains("imaginary unit"), "{}", o.stderr);
+    let o = run(&["eval", "step_gamma1(vec(0,0,0),0.1,3,2,1)"]);
+    assert_one_line_error(&o, &["M = 0"], "M18");
+    assert!(!o.stderr.contains("h too large"), "{}", o.stderr);
+    let o = run(&["eval", "pi", "--set", "pi=3"]);
+    assert_one_line_error(&o, &["pi", "constant"], "M22");
+}
+
+#[test]
+fn m24_one_precision_range_and_eval_output() {
+    // 2 bits: 0.3 rounds to 0.25 (binary 0.01)
+    let o = run(&["eval", "--bits", "2", "0.3"]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(0.25),
+        "{}",
+        o.stderr
+    );
+    let o = run(&["eval", "--bits", "1", "0.3"]);
+    assert_one_line_error(&o, &["2..=1048576"], "--bits 1");
+    // 17 digits read back to the same double
+    let o = run(&["eval", "0.1"]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(0.1),
+        "{}",
+        o.stdout
+    );
+    let o = run(&["eval", "1/3"]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(1.0 / 3.0),
+        "{}",
+        o.stdout
+    );
+    let o = run(&["eval", "cplx(1,-2)"]);
+    assert!(
+        o.stdout.contains(" - 2") && !o.stdout.contains("+ -"),
+        "{}",
+        o.stdout
+    );
+    let o = run(&["eval", "2i"]);
+    assert!(o.stderr.contains("2*i"), "{}", o.stderr);
+}
