@@ -307,7 +307,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
 
 /// The reason, counterexample and failed samples of a claim not as expected.
 fn print_unexpected(w: &mut impl Write, r: &ClaimResult) -> std::io::Result<()> {
-    writeln!(w, "    reason: {}", r.reason)?;
+    writeln!(w, "    reason: {}", super::printable(&r.reason))?;
     if let Some(c) = &r.counterexample {
         let pt: Vec<String> = c
             .point
@@ -332,7 +332,7 @@ fn print_text(
     let idw = results.iter().map(|r| r.id.len()).max().unwrap_or(2).max(2);
     let locw = results
         .iter()
-        .map(|r| r.location.chars().count().min(40))
+        .map(|r| super::printable(&r.location).chars().count().min(40))
         .max()
         .unwrap_or(8)
         .max(8);
@@ -345,7 +345,8 @@ fn print_text(
     }
     writeln!(w, "{head}")?;
     for r in results {
-        let loc: String = r.location.chars().take(40).collect();
+        // control characters of the catalogue's text never reach the terminal
+        let loc: String = super::printable(&r.location).chars().take(40).collect();
         let mark = if r.as_expected { "" } else { " !" };
         let g = r.loss_bits.map_or("-".to_string(), |g| format!("{g:.1}"));
         let mut line = format!(

@@ -1322,3 +1322,87 @@ fn m24_one_precision_range_and_eval_output() {
     let o = run(&["eval", "2i"]);
     assert!(o.stderr.contains("2*i"), "{}", o.stderr);
 }
+
+// -- M12, M23: catalogue values and text ----------------------------------------------
+
+#[test]
+fn m12_range_errors_point_at_the_field_and_read_well() {
+    let text = format!("{CLAIM_HEAD}max_loss_bits = inf\nlhs = \"x\"\nrhs = \"x\"\n");
+    let dir = catalogue("loss-inf", text.as_bytes());
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    // the field is on line 10 of the file, its value from column 17
+    assert_data_error(
+        &o,
+        &["t.toml:10:17:", "finite", "inf"],
+        "max_loss_bits = inf",
+    );
+    let asym = "[[claim]]\nid = \"t.a\"\nlocation = \"test\"\nprinted = 'x'\n\
+        environment = \"Section 2\"\nrole = \"statement\"\nkind = \"asymptotic\"\n\
+        expect = \"holds\"\nvars = [[\"x\", \"uniform(1, 2)\"]]\nvar = \"h\"\n\
+        expr = \"h\"\norder = 1\nh0 = 1e-320\n";
+    let dir = catalogue("h0-tiny", asym.as_bytes());
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_eq!(o.code, Some(2), "{}", o.stderr);
+    assert!(o.stderr.len() < 400, "{}", o.stderr);
+    assert!(o.stderr.contains("h0"), "{}", o.stderr);
+}
+
+#[test]
+fn m23_control_characters_of_a_location_are_escaped() {
+    let text = "[[claim]]\nid = \"t.c\"\nlocation = \"loc\\u001b[31mred\"\nprinted = 'x'\n\
+        environment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\n\
+        expect = \"holds\"\nvars = [[\"x\", \"uniform(1, 2)\"]]\nlhs = \"x\"\nrhs = \"x\"\n";
+    let dir = catalogue("escape", text.as_bytes());
+    let o = run(&[
+        "verify",
+        "--bits",
+        "53",
+        "--catalogue",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(o.stdout.contains("loc\\u{1b}[31mred"), "{}", o.stdout);
+    assert!(!o.stdout.contains('\x1b'), "{:?}", o.stdout);
+}
+
+// -- M17: orbit near the separatrix ---------------------------------------------------
+
+#[test]
+fn m17_an_iterate_without_a_phase_does_not_stop_the_orbit() {
+    // M = (3, 1, √3) with inertia (3, 2, 1): 2E = 9/3 + 1/2 + 3 = 6.5, M² = 13, so
+    // 2E/M² = 1/2 = 1/B: the start is on the separatrix to the precision of the input
+    let dir = temp_dir("separatrix");
+    let args = [
+        "orbit",
+        "--inertia",
+        "3,2,1",
+        "--h",
+        "0.1",
+        "--gamma",
+        "1",
+        "--steps",
+        "200",
+        "--csv",
+        "o.csv",
+        "3",
+        "1",
+        "1.7320508075688772",
+    ];
+    let o = run_in(Some(&dir), &args, b"", Stdio::piped());
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    assert_eq!(o.stdout.lines().count(), 200);
+    // |M| is conserved by the map (the norm of every iterate stays √13)
+    for line in o.stdout.lines() {
+        let m: Vec<f64> = line
+            .split_whitespace()
+            .map(|x| x.parse().unwrap())
+            .collect();
+        let n = m.iter().map(|x| x * x).sum::<f64>();
+        assert!((n - 13.0).abs() < 1e-9, "{line}");
+    }
+    if !o.stderr.is_empty() {
+        assert_eq!(o.stderr.lines().count(), 1, "{}", o.stderr);
+        assert!(o.stderr.contains("phase is undefined"), "{}", o.stderr);
+    }
+    let csv = std::fs::read_to_string(dir.join("o.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 202);
+}
