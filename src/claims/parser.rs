@@ -406,11 +406,15 @@ impl<'a> Parser<'a> {
                 })
             }
             Tok::Sym("(") => {
-                // one level: that of the expression inside
+                // one level: that of the expression inside; the span covers the
+                // parentheses, so an excerpt of `(1+x)^n` keeps its `(`
                 self.pos += 1;
                 let e = self.expr()?;
-                self.eat_sym(")")?;
-                Ok(e)
+                let close = self.eat_sym(")")?;
+                Ok(Expr {
+                    span: t.span.join(close),
+                    ..e
+                })
             }
             Tok::Sym("[") => {
                 self.pos += 1;

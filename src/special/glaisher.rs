@@ -4,7 +4,7 @@
 use super::complex::sncndn_complex;
 use super::jacobi::sncndn_imp;
 use super::modulus::{Modulus, Spec};
-use super::{SpecialError, check_finite, check_modulus, show};
+use super::{SpecialError, check_finite, show};
 use crate::numbers::{ComplexScalar, Real, Scalar};
 
 /// One of the twelve Jacobi elliptic functions (DLMF 22.2.4–9): `sn cn dn cd dc ns nc
@@ -172,7 +172,7 @@ fn quotient<T: crate::numbers::Scalar>(
 /// assert!(jacobi(JacobiFn::Ns, &0.0_f64, &0.5).is_err()); // pole
 /// ```
 pub fn jacobi<R: Real>(f: JacobiFn, u: &R, k: &R) -> Result<R, SpecialError> {
-    check_modulus(k)?;
+    let k = &super::even_modulus(k)?;
     check_finite(u, "u")?;
     real(f, u, Spec::Modulus(k, Modulus::K), k.prec())
 }

@@ -1406,3 +1406,23 @@ fn m17_an_iterate_without_a_phase_does_not_stop_the_orbit() {
     let csv = std::fs::read_to_string(dir.join("o.csv")).unwrap();
     assert_eq!(csv.lines().count(), 202);
 }
+
+// -- R4: a negative modulus ------------------------------------------------------------
+
+#[test]
+fn r4_sn_of_a_negative_modulus_is_that_of_its_absolute_value() {
+    // DLMF 22.17.1: sn, cn, dn depend on k² only
+    let o = run(&[
+        "eval",
+        "sn(0.5,-0.3) - sn(0.5,0.3) + cd(1.2,-0.9) - cd(1.2,0.9)",
+    ]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(0.0),
+        "{}",
+        o.stderr
+    );
+    let neg = jacobi_values(&["--bits", "128"], "0.5 -0.3\n");
+    let pos = jacobi_values(&["--bits", "128"], "0.5 0.3\n");
+    assert_eq!(neg, pos);
+}

@@ -136,19 +136,19 @@ fn errors_are_one_line_with_the_line_number() {
             "<stdin>:1:1: pole",
         ),
         (
-            vec![],
-            b"0.5 -0.5\n".to_vec(),
-            "<stdin>:1:5: modulus k = -5e-1",
+            vec!["--complex"],
+            b"0.5 0.5 -0.5\n".to_vec(),
+            "<stdin>:1:9: modulus k = -5e-1",
         ),
         (
             vec!["--complex", "--parameter"],
             b"".to_vec(),
             "not available",
         ),
-        (vec![], b"0.5 0.5\n0.1 0.2\n1 -1\n".to_vec(), "<stdin>:3:"),
+        (vec![], b"0.5 0.5\n0.1 0.2\n1 x\n".to_vec(), "<stdin>:3:"),
         (vec![], b"0.5 abc\n".to_vec(), "<stdin>:1:"),
         (vec![], b"0.5\n".to_vec(), "<stdin>:1:"),
-        (vec!["--bits", "128"], b"0.5 -0.5\n".to_vec(), "<stdin>:1:"),
+        (vec!["--bits", "128"], b"0.5 -inf\n".to_vec(), "<stdin>:1:"),
         (vec!["--complex"], b"0.5 0.5\n".to_vec(), "<stdin>:1:"),
     ];
     for (args, input, want) in cases {
