@@ -151,7 +151,7 @@ fn number<R: Real>(proto: &R, s: &str, what: &str, pos: &str) -> Result<R, CliEr
     let bits = proto.precision().unwrap_or(53);
     let decimal = crate::numbers::is_decimal(s);
     match proto.parse_like(s) {
-        Ok(v) if v.is_zero() && decimal && super::step::nonzero_mantissa(s) => {
+        Ok(v) if v.is_zero() && decimal && crate::numbers::nonzero_mantissa(s) => {
             Err(CliError::new(format!(
                 "{pos}: {what} = {} underflows to 0 at {bits} bits",
                 excerpt(s)

@@ -61,12 +61,6 @@ pub struct Problem<R> {
     pub params: EllipticParams<R>,
 }
 
-/// Does the mantissa of a decimal (the part before any exponent) have a nonzero digit?
-pub(crate) fn nonzero_mantissa(t: &str) -> bool {
-    let mant = t.split(['e', 'E']).next().unwrap_or("");
-    mant.bytes().any(|b| (b'1'..=b'9').contains(&b))
-}
-
 /// Parses a decimal at the precision of `like`; a valid decimal outside the range of the
 /// working precision (overflow, or underflow to 0) is reported as such.
 fn num<R: Real>(like: &R, s: &str, what: &str) -> Result<R, CliError> {
@@ -74,9 +68,9 @@ fn num<R: Real>(like: &R, s: &str, what: &str) -> Result<R, CliError> {
     let decimal = crate::numbers::is_decimal(t);
     let bits = like.precision().unwrap_or(53);
     match like.parse_like(s) {
-        Ok(v) if v.is_zero() && decimal && nonzero_mantissa(t) => Err(CliError::new(format!(
-            "{what} = {t} underflows to 0 at {bits} bits"
-        ))),
+        Ok(v) if v.is_zero() && decimal && crate::numbers::nonzero_mantissa(t) => Err(
+            CliError::new(format!("{what} = {t} underflows to 0 at {bits} bits")),
+        ),
         Ok(v) => Ok(v),
         Err(_) if decimal => Err(CliError::new(format!(
             "{what} = {t} overflows at {bits} bits"

@@ -76,6 +76,18 @@ pub fn is_decimal(s: &str) -> bool {
     i == b.len()
 }
 
+/// Does the mantissa of a decimal (the part before any exponent) have a nonzero digit?
+/// (Then a value of 0 is an underflow.)
+///
+/// ```
+/// assert!(eulertop::numbers::nonzero_mantissa("1.5e-324"));
+/// assert!(!eulertop::numbers::nonzero_mantissa("0.0e5"));
+/// ```
+pub fn nonzero_mantissa(t: &str) -> bool {
+    let mant = t.split(['e', 'E']).next().unwrap_or("");
+    mant.bytes().any(|b| (b'1'..=b'9').contains(&b))
+}
+
 /// Is the decimal `s` exactly 1 (`1`, `1.000`, `0.1e1`, `+1`)?  `false` for anything
 /// else, text that is not a decimal included.
 ///

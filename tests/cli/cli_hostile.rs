@@ -1426,3 +1426,20 @@ fn r4_sn_of_a_negative_modulus_is_that_of_its_absolute_value() {
     let pos = jacobi_values(&["--bits", "128"], "0.5 0.3\n");
     assert_eq!(neg, pos);
 }
+
+#[test]
+fn a_literal_that_underflows_is_not_silently_zero() {
+    let o = run(&["eval", "1.5e-324"]);
+    assert_one_line_error(&o, &["1.5e-324", "underflows", "53 bits"], "eval 1.5e-324");
+    // at 100 bits it is representable (MPFR's exponent range is far wider)
+    let o = run(&["eval", "--bits", "100", "1.5e-324 * 1e324"]);
+    let v: f64 = o.stdout.trim().parse().expect("a number");
+    assert!((v - 1.5).abs() < 1e-15, "{v}");
+    let o = run(&["eval", "0e5"]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(0.0),
+        "{}",
+        o.stderr
+    );
+}
