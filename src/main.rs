@@ -43,16 +43,36 @@ fn main() -> ExitCode {
     // before any other thread runs (see the module's documentation)
     eulertop::numbers::gmp_kernels::select();
     eulertop::allocator::small_pages();
+    // a closed standard output (`>&-`) would swallow every write, and the next file
+    // opened would take its descriptor: refused before anything runs
+    if let Some(which) = closed_standard_stream() {
+        let _ = writeln!(
+            std::io::stderr(),
+            "eulertop: {which} is closed; nothing would be written (redirect it to a file or /dev/null)"
+        );
+        return ExitCode::from(2);
+    }
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         // help and version (exit 0) go to standard output, the help asked for by no
         // command at all to standard error (exit 2); a failed write exits with status 2
+        // and says so
         Err(e)
             if !e.use_stderr()
                 || e.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand =>
         {
-            let code = if e.print().is_ok() { e.exit_code() } else { 2 };
-            return ExitCode::from(u8::try_from(code).unwrap_or(2));
+            return match e.print().and_then(|()| std::io::stdout().flush()) {
+                Ok(()) => ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2)),
+                Err(w) => {
+                    let dest = if e.use_stderr() {
+                        "standard error"
+                    } else {
+                        "standard output"
+                    };
+                    let _ = writeln!(std::io::stderr(), "eulertop: cannot write to {dest}: {w}");
+                    ExitCode::from(2)
+                }
+            };
         }
         // a usage error: one line on standard error, status 2
         Err(e) => {
@@ -78,6 +98,37 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// `Some("standard output")` when it was closed when the process started.  The Rust
+/// runtime opens `/dev/null` read-write on a closed standard descriptor before `main`;
+/// a shell's `>/dev/null` opens it write-only, so a read-write `/dev/null` on descriptor
+/// 1 is a closed standard output (`>&-`).
+fn closed_standard_stream() -> Option<&'static str> {
+    #[cfg(unix)]
+    {
+        // SAFETY: F_GETFD and F_GETFL only query the descriptor; fstat and stat write
+        // into the zeroed structures passed.
+        unsafe {
+            if libc::fcntl(1, libc::F_GETFD) == -1 {
+                return Some("standard output");
+            }
+            let flags = libc::fcntl(1, libc::F_GETFL);
+            if flags == -1 || flags & libc::O_ACCMODE != libc::O_RDWR {
+                return None;
+            }
+            let mut fd: libc::stat = std::mem::zeroed();
+            let mut null: libc::stat = std::mem::zeroed();
+            if libc::fstat(1, &mut fd) == 0
+                && libc::stat(c"/dev/null".as_ptr(), &mut null) == 0
+                && fd.st_mode & libc::S_IFMT == libc::S_IFCHR
+                && fd.st_rdev == null.st_rdev
+            {
+                return Some("standard output");
+            }
+        }
+    }
+    None
 }
 
 /// clap's message for a usage error on one line: the message with the lines that

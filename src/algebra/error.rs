@@ -30,6 +30,10 @@ pub enum AlgebraError {
     /// the outcome does not depend on the machine).
     #[error("an intermediate expression has {0} terms, above the prover's bound of {1}")]
     TooLarge(usize, usize),
+    /// The attempt ran out of its budget of time or memory (module
+    /// [`super::budget`]).
+    #[error("the proof exceeded its budget ({0})")]
+    Budget(String),
     /// A derivative with respect to something that is not an indeterminate, or through
     /// a symbol whose derivative is unknown.
     #[error("derivative: {0}")]

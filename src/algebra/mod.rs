@@ -107,6 +107,7 @@
 
 mod addition;
 mod base_table;
+mod budget;
 pub mod certificate;
 mod coordinates;
 mod decide;
@@ -132,6 +133,7 @@ mod sym;
 mod symbols;
 mod val;
 
+pub use budget::{BUDGET_MESSAGE, Budget, DEFAULT_MEMORY_MB, DEFAULT_TIME_MS, set_default_budget};
 pub use decide::Decision;
 pub use elliptic::BaseHint;
 pub use error::{AlgResult, AlgebraError};

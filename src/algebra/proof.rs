@@ -7,6 +7,7 @@
 //! denominator vanishes.  A non-zero normal form proves nothing (the tower may not be a
 //! field, a named quantity may need its definition); the reason says which case it is.
 
+use super::budget::BUDGET_MESSAGE;
 use super::elliptic::BaseHint;
 use super::error::{AlgResult, AlgebraError};
 use super::ring::{Assumption, MAX_TERMS, Ring, RingOptions, VarKind};
@@ -219,6 +220,31 @@ where
 /// reached the build only as text.
 const CAPACITY_MESSAGE: &str = "too many symbols";
 
+/// The reason, if the attempt ran out of its budget (module [`super::budget`]): the
+/// error typed or as text, or the deadline passed.
+fn over_budget<T>(ring: &Ring, built: &AlgResult<T>, opts: &RingOptions) -> Option<String> {
+    let text = |e: &AlgebraError| match e {
+        AlgebraError::Budget(why) => Some(why.clone()),
+        e => {
+            let s = e.to_string();
+            let at = s.find(BUDGET_MESSAGE)?;
+            let rest = &s[at + BUDGET_MESSAGE.len()..];
+            Some(
+                rest.trim_start_matches(" (")
+                    .trim_end_matches(')')
+                    .to_string(),
+            )
+        }
+    };
+    let typed = match built {
+        Err(e) => text(e),
+        Ok(_) => None,
+    };
+    typed
+        .or_else(|| ring.error().as_ref().and_then(text))
+        .or_else(|| opts.budget.expired().then(|| opts.budget.time_reason()))
+}
+
 /// Did the build run out of symbols or roots?  A capacity error that reached the build
 /// only as text counts when no rebase is wanted (a rebase comes first: it may need
 /// fewer symbols).
@@ -272,12 +298,17 @@ where
 {
     let t0 = Instant::now();
     let mut opts = opts;
+    // one deadline for every restart of the attempt
+    opts.budget = opts.budget.started();
     let (mut attempts, mut rebases, mut grows) = (0, 0, 0);
     let ms = |t0: &Instant| t0.elapsed().as_secs_f64() * 1e3;
     loop {
         attempts += 1;
         let ring = Ring::new(opts.clone());
         let built = build(&ring);
+        if let Some(why) = over_budget(&ring, &built, &opts) {
+            return Proof::failed(format!("{BUDGET_MESSAGE} ({why})"), ms(&t0), attempts);
+        }
         let wanted = ring.state().rebase_wanted;
         let capacity = needs_room(&ring, &built, wanted);
         if capacity && grows < 3 {
@@ -322,6 +353,11 @@ where
             }
         };
         let mut proof = ring.prove_all(&pairs);
+        if !proof.is_proved()
+            && let Some(why) = over_budget(&ring, &Ok(()), &opts)
+        {
+            return Proof::failed(format!("{BUDGET_MESSAGE} ({why})"), ms(&t0), attempts);
+        }
         if !proof.is_proved() && ring.has_named() && !opts.expand_named {
             opts.expand_named = true;
             continue;

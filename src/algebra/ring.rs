@@ -50,6 +50,8 @@ pub struct RingOptions {
     /// that the proof carries as sign symbols instead of splitting the domain by them
     /// (see [`Sym::folded_sign`](super::Sym)).
     pub sign_folds: Vec<super::split::SignSplit>,
+    /// The time and memory the attempt may take (module [`super::budget`]).
+    pub budget: super::budget::Budget,
 }
 
 /// The largest numerator plus denominator, in terms, that the prover works with at
@@ -73,6 +75,7 @@ impl Default for RingOptions {
             positivity: None,
             hypotheses: Vec::new(),
             sign_folds: Vec::new(),
+            budget: super::budget::Budget::default(),
         }
     }
 }

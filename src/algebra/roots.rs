@@ -692,7 +692,12 @@ impl Ring {
         let one = Poly::from_i64(&inner.ctx, 1);
         let pp = p.coefficient_in(idx, 0);
         let qq = p.coefficient_in(idx, 1);
+        inner.opts.budget.check()?;
         let norm = inner.reduce(pp.mul(&pp).sub(&f.mul(&qq).mul(&qq)));
+        // the norms of nested roots grow geometrically: bounded like every value
+        if norm.len() > inner.opts.max_terms {
+            return Err(AlgebraError::TooLarge(norm.len(), inner.opts.max_terms));
+        }
         let Some(m) = self.exact_tower_sqrt(&norm, depth + 1)? else {
             return Ok(None);
         };

@@ -65,6 +65,7 @@ impl Inner {
         if size > self.opts.max_terms {
             return Err(AlgebraError::TooLarge(size, self.opts.max_terms));
         }
+        self.opts.budget.check()?;
         if num.is_zero() {
             return Ok((num, Poly::from_i64(&self.ctx, 1)));
         }
@@ -163,6 +164,7 @@ impl Inner {
         if size > self.opts.max_terms {
             return Err(AlgebraError::TooLarge(size, self.opts.max_terms));
         }
+        self.opts.budget.check()?;
         if num.is_zero() {
             return Ok((num, Poly::from_i64(&self.ctx, 1)));
         }
@@ -251,6 +253,7 @@ impl Inner {
         for (p, f) in &prods {
             // lcm / (the product's denominator), from the factors
             num = num.add(&p.mul(&flcm.div(f)?.expand(&lcm)?));
+            self.opts.budget.check()?;
             if far(&num) {
                 return Err(AlgebraError::TooLarge(
                     num.len() + lcm.len(),

@@ -101,7 +101,29 @@ pub trait Num: Scalar + PartialOrd {
         {
             return Ok(self.from_i64(n));
         }
-        self.parse_like(s).map_err(|e| e.to_string())
+        let v = self.parse_like(s);
+        // a literal is never silently 0: one that underflows is an error, as in jacobi
+        if let Ok(x) = &v
+            && x.is_zero()
+            && crate::numbers::is_decimal(s)
+            && crate::numbers::nonzero_mantissa(s)
+        {
+            let bits = self
+                .precision()
+                .map_or("exact".to_string(), |b| format!("{b} bits"));
+            return Err(format!("the number {s} underflows to 0 at {bits}"));
+        }
+        v.map_err(|e| {
+            // a well-formed decimal fails only by its size
+            if crate::numbers::is_decimal(s) {
+                let bits = self
+                    .precision()
+                    .map_or("exact".to_string(), |b| format!("{b} bits"));
+                format!("the number {s} is out of range (it overflows at {bits})")
+            } else {
+                e.to_string()
+            }
+        })
     }
     /// An elementary function of one argument.
     fn real_fn(&self, f: RealFn) -> Result<Self, String>;

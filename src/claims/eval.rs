@@ -207,12 +207,19 @@ pub struct Evaluator<'r, T> {
     /// The calls this evaluation has made (shared with the evaluations of function
     /// bodies at the same precision; `None` for exact backends).
     memo: Option<Rc<dyn Any>>,
+    /// How many times the innermost enclosing sum or product evaluates its body in all
+    /// (the product of the lengths of the enclosing ranges; 1 outside any).
+    loop_terms: u64,
 }
 
 /// Most nested calls of catalogue functions (a recursive definition stops here).
 pub const MAX_CALL_DEPTH: usize = 64;
 /// Most nested sub-expressions being evaluated at once, function bodies included.
 pub const MAX_NESTING: usize = 2000;
+/// Most terms of one `sum` or `prod`.
+pub const MAX_LOOP_TERMS: u64 = 100_000;
+/// Most evaluations of the body of nested sums and products, all levels together.
+pub const MAX_NESTED_LOOP_TERMS: u64 = 1_000_000;
 /// Below this much free stack, evaluation continues on a new segment...
 const STACK_RED_ZONE: usize = 128 * 1024;
 /// ... of this size.
@@ -230,6 +237,7 @@ impl<'r, T: Backend> Evaluator<'r, T> {
             nesting: Cell::new(0),
             dcache: DCache::default(),
             memo: CallMemo::<T>::for_backend(T::EXACT),
+            loop_terms: 1,
         }
     }
     /// An empty evaluator over another backend that continues this one's depth counts.
@@ -240,6 +248,7 @@ impl<'r, T: Backend> Evaluator<'r, T> {
             local_fns: Vec::new(),
             depth,
             nesting: Cell::new(self.nesting.get()),
+            loop_terms: self.loop_terms,
             dcache: DCache::default(),
             memo: match CallMemo::<U>::of(&self.memo) {
                 Some(_) if self.like.precision() == like.precision() => self.memo.clone(),
@@ -482,27 +491,56 @@ impl<'r, T: Backend> Evaluator<'r, T> {
     ) -> Result<Value<T>, EvalError> {
         let a = self.int(from)?;
         let b = self.int(to)?;
-        if b - a > 100_000 {
+        let what = if product { "prod" } else { "sum" };
+        // the number of terms, without overflow (0 for an empty range)
+        let n = (i128::from(b) - i128::from(a) + 1).max(0);
+        if n > MAX_LOOP_TERMS as i128 {
             return Err(EvalError::at(
-                format!("sum range too long: {a}..{b} has more than 100000 terms"),
+                format!(
+                    "{what} range too long: {a}..{b} has {n} terms, more than {MAX_LOOP_TERMS} terms"
+                ),
                 sp,
             ));
         }
-        let mut acc = Value::Real(if product {
-            self.like.one()
-        } else {
-            self.like.zero()
-        });
+        // nested sums and products multiply their lengths: the body is evaluated
+        // loop_terms·n times in all
+        let total = self.loop_terms.saturating_mul(n as u64);
+        if total > MAX_NESTED_LOOP_TERMS {
+            return Err(EvalError::at(
+                format!(
+                    "nested sums and products would evaluate their bodies {total} times, more than {MAX_NESTED_LOOP_TERMS} in all"
+                ),
+                sp,
+            ));
+        }
         let mut inner = self.clone();
-        for k in a..=b {
+        inner.loop_terms = total.max(1);
+        let mut term = |k: i64| -> Result<Value<T>, EvalError> {
             inner.scope.push(Bind {
                 name: var.to_string(),
                 value: Value::Real(self.like.from_i64(k)),
                 def: None,
             });
             inner.dcache.0.borrow_mut().clear();
-            let t = inner.eval(body)?;
+            let t = inner.eval(body);
             inner.scope.pop();
+            t
+        };
+        if n == 0 {
+            // the empty product is 1; the empty sum is the zero of the body's type
+            // (taken at k = a), or the real 0 where the body has no value there
+            if product {
+                return Ok(Value::Real(self.like.one()));
+            }
+            return Ok(match term(a) {
+                Ok(t) => t.map(&mut |_| self.like.zero()),
+                Err(_) => Value::Real(self.like.zero()),
+            });
+        }
+        let mut acc = term(a)?;
+        for j in 1..n as i64 {
+            // a + j ≤ b: no overflow
+            let t = term(a + j)?;
             acc = (if product { acc.mul(&t) } else { acc.add(&t) })
                 .map_err(|m| EvalError::at(m, sp))?;
         }
@@ -525,16 +563,39 @@ impl<'r, T: Backend> Evaluator<'r, T> {
 
     #[inline(never)]
     fn list(&self, items: &[Expr], sp: Span) -> Result<Value<T>, EvalError> {
-        let vals: Vec<Value<T>> = items
-            .iter()
-            .map(|x| self.eval(x))
-            .collect::<Result<_, _>>()?;
         let err = || {
             EvalError::at(
                 "a list must be [a, b, c] (reals), [[..],[..],[..]] (3×3 real) or [[a, b],[c, d]] (2×2)",
                 sp,
             )
         };
+        // 2×2: the rows are lists of two scalars, which are not values on their own, so
+        // the entries are evaluated one by one
+        let pair = |e: &Expr| matches!(&e.kind, ExprKind::List(r) if r.len() == 2);
+        if items.len() == 2 && items.iter().all(pair) {
+            let mut rows = Vec::new();
+            for it in items {
+                let ExprKind::List(r) = &it.kind else {
+                    return Err(err());
+                };
+                if r.len() != 2 {
+                    return Err(err());
+                }
+                let entry = |x: &Expr| {
+                    self.eval(x)?
+                        .as_complex()
+                        .map_err(|m| EvalError::at(m, x.span))
+                };
+                rows.push([entry(&r[0])?, entry(&r[1])?]);
+            }
+            let r1 = rows.pop().ok_or_else(err)?;
+            let r0 = rows.pop().ok_or_else(err)?;
+            return Ok(Value::CMat2(Mat2([r0, r1])));
+        }
+        let vals: Vec<Value<T>> = items
+            .iter()
+            .map(|x| self.eval(x))
+            .collect::<Result<_, _>>()?;
         if vals.len() == 3 && vals.iter().all(|v| matches!(v, Value::Real(_))) {
             let r: Vec<T> = vals.iter().filter_map(|v| v.as_real().ok()).collect();
             return Ok(Value::Vec3(Vec3([
@@ -555,27 +616,6 @@ impl<'r, T: Backend> Evaluator<'r, T> {
                 rows[1].clone(),
                 rows[2].clone(),
             ])));
-        }
-        if vals.len() == 2 {
-            // 2×2: evaluate rows entry by entry (rows are lists of 2 scalars)
-            let mut rows = Vec::new();
-            for it in items {
-                let ExprKind::List(r) = &it.kind else {
-                    return Err(err());
-                };
-                if r.len() != 2 {
-                    return Err(err());
-                }
-                let entry = |x: &Expr| {
-                    self.eval(x)?
-                        .as_complex()
-                        .map_err(|m| EvalError::at(m, x.span))
-                };
-                rows.push([entry(&r[0])?, entry(&r[1])?]);
-            }
-            let r1 = rows.pop().ok_or_else(err)?;
-            let r0 = rows.pop().ok_or_else(err)?;
-            return Ok(Value::CMat2(Mat2([r0, r1])));
         }
         Err(err())
     }

@@ -123,8 +123,14 @@ fn number(src: &str, s: usize) -> Result<Token, SyntaxError> {
         while k < b.len() && (b[k].is_ascii_alphanumeric() || b[k] == b'_') {
             k += 1;
         }
+        let word = &src[s..k];
+        let hint = if b[j] == b'i' && k == j + 1 {
+            format!(" (an imaginary number is written {}*i)", &src[s..j])
+        } else {
+            String::new()
+        };
         return Err(SyntaxError {
-            message: format!("malformed number '{}'", &src[s..k]),
+            message: format!("malformed number '{word}'{hint}"),
             span: Span { start: s, end: k },
         });
     }

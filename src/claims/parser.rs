@@ -141,7 +141,14 @@ impl<'a> Parser<'a> {
             let mut ps = Vec::new();
             if !self.is_sym(")") {
                 loop {
-                    ps.push(self.name()?.0);
+                    let (p, at) = self.name()?;
+                    if ps.contains(&p) {
+                        return Err(SyntaxError {
+                            message: format!("duplicate parameter '{p}' of '{name}'"),
+                            span: at,
+                        });
+                    }
+                    ps.push(p);
                     if self.is_sym(",") {
                         self.pos += 1;
                     } else {
@@ -168,7 +175,9 @@ impl<'a> Parser<'a> {
         self.depth += 1;
         if self.depth > MAX_DEPTH {
             return Err(SyntaxError {
-                message: "expression nested too deeply".into(),
+                message: format!(
+                    "expression nested too deeply (more than {MAX_DEPTH} levels: a parenthesis, unary sign, 'not' or exponent counts one, a call or bracket two)"
+                ),
                 span: self.span_here(),
             });
         }
@@ -397,12 +406,15 @@ impl<'a> Parser<'a> {
                 })
             }
             Tok::Sym("(") => {
+                // one level: that of the expression inside; the span covers the
+                // parentheses, so an excerpt of `(1+x)^n` keeps its `(`
                 self.pos += 1;
-                self.enter()?;
                 let e = self.expr()?;
-                self.depth -= 1;
-                self.eat_sym(")")?;
-                Ok(e)
+                let close = self.eat_sym(")")?;
+                Ok(Expr {
+                    span: t.span.join(close),
+                    ..e
+                })
             }
             Tok::Sym("[") => {
                 self.pos += 1;
@@ -440,6 +452,17 @@ impl<'a> Parser<'a> {
 fn binder(e: &Expr, what: &str) -> Result<String, SyntaxError> {
     match &e.kind {
         ExprKind::Name(n) if n != "pi" && n != "i" => Ok(n.clone()),
+        ExprKind::Name(n) => Err(SyntaxError {
+            message: format!(
+                "{what} must be a variable name, and '{n}' is the constant {}",
+                if n == "i" {
+                    "i, the imaginary unit"
+                } else {
+                    "pi"
+                }
+            ),
+            span: e.span,
+        }),
         _ => Err(SyntaxError {
             message: format!("{what} must be a variable name"),
             span: e.span,

@@ -55,7 +55,14 @@ impl<T: Num> Value<T> {
     /// Decimal rendering with `digits` significant digits in the given layout.
     pub fn render(&self, digits: usize, layout: Layout) -> String {
         let d = |x: &T| x.to_decimal(digits);
-        let c = |z: &Cplx<T>| format!("{} + {}i", d(&z.re), d(&z.im));
+        // a − bi for a negative imaginary part (not a + -bi)
+        let c = |z: &Cplx<T>| {
+            let im = d(&z.im);
+            match im.strip_prefix('-') {
+                Some(b) => format!("{} - {b}i", d(&z.re)),
+                None => format!("{} + {im}i", d(&z.re)),
+            }
+        };
         let rows = |rs: Vec<String>| match layout {
             Layout::Inline => format!("[{}]", rs.join(", ")),
             Layout::Rows => rs.join("\n"),

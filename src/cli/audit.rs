@@ -15,7 +15,11 @@ pub struct Args {
     /// The claim id.
     pub id: String,
     /// Precision ladder in bits.
-    #[arg(long, default_value = "64,128,256,512,1024,2048,4096,8192")]
+    #[arg(
+        long,
+        default_value = "64,128,256,512,1024,2048,4096,8192",
+        allow_hyphen_values = true
+    )]
     pub bits: String,
     /// Catalogue directory.
     #[arg(long, default_value = "identities")]

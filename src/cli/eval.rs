@@ -12,7 +12,7 @@ pub struct Args {
     /// The expression, e.g. `sn(0.5, 0.8)^2 + cn(0.5, 0.8)^2`.
     pub expr: String,
     /// Precision in bits (53 = IEEE double; else MPFR).
-    #[arg(long, default_value_t = 53)]
+    #[arg(long, default_value_t = 53, allow_negative_numbers = true)]
     pub bits: u32,
     /// Variable bindings `name=expression`, evaluated in order.
     #[arg(long = "set")]
@@ -40,6 +40,13 @@ fn go<T: Backend>(args: &Args, like: T) -> Result<String, CliError> {
         ) {
             return Err(CliError(format!(
                 "--set '{s}': '{n}' is not a variable name"
+            )));
+        }
+        // the constants keep their values: a name set to another would change every
+        // formula that uses it without a word
+        if ["pi", "i", "I2", "I3"].contains(&n) {
+            return Err(CliError(format!(
+                "--set '{s}': '{n}' is a constant of the language and cannot be set"
             )));
         }
         let ex = parse_expr(e).map_err(|err| {
@@ -72,7 +79,8 @@ fn go<T: Backend>(args: &Args, like: T) -> Result<String, CliError> {
         ))
     })?;
     let v = ev.eval(&ex).map_err(|err| CliError(err.message))?;
-    let digits = ((f64::from(args.bits) * std::f64::consts::LOG10_2).floor() as usize).max(2);
+    // enough digits to read the value back: 17 at 53 bits, ceil(p·log10 2) + 1 at p
+    let digits = (f64::from(args.bits) * std::f64::consts::LOG10_2).ceil() as usize + 1;
     Ok(v.render(digits, Layout::Rows))
 }
 
@@ -81,15 +89,11 @@ const EXCERPT_MAX: usize = 160;
 
 /// Runs `eulertop eval`.
 pub fn run(args: Args) -> Result<i32, CliError> {
+    super::verify::check_precision(args.bits)?;
     let out = if args.bits == 53 {
         go(&args, 0.0f64)?
-    } else if (54..=1 << 20).contains(&args.bits) {
-        go(&args, rug::Float::new(args.bits))?
     } else {
-        return Err(CliError(format!(
-            "precision {} bits out of range (53 = f64, or 54..1048576)",
-            args.bits
-        )));
+        go(&args, rug::Float::new(args.bits))?
     };
     super::print(&out)?;
     Ok(0)

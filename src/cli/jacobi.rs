@@ -9,8 +9,10 @@
 //! digits; any other `N ≥ 2` uses MPFR at `N` bits and prints `ceil(N·log10 2) + 2`
 //! digits.  Inputs are read as decimals rounded to the working precision.  A malformed
 //! line (also one that is not UTF-8 or longer than 4096 bytes), a number that overflows
-//! `f64`, an out-of-domain modulus or a pole stops with `eulertop: line L: …` (the
-//! offending text cut to 40 characters) on standard error and exit status 2.
+//! the working precision (or underflows to 0 there), a modulus or parameter that rounds
+//! to 1 without being 1, an out-of-domain modulus or a pole stops with
+//! `eulertop: <stdin>:LINE:COL: …` (the offending text cut to 40 characters, control
+//! characters escaped) on standard error and exit status 2.
 
 use super::CliError;
 use crate::numbers::{Cplx, Real};
@@ -24,7 +26,7 @@ const MAX_LINE: usize = 4096;
 #[derive(clap::Args, Debug)]
 pub struct Args {
     /// Precision in bits: 53 = f64 code path, otherwise MPFR at this many bits.
-    #[arg(long, default_value_t = 53)]
+    #[arg(long, default_value_t = 53, allow_negative_numbers = true)]
     pub bits: u32,
     /// Complex argument: lines are `re(u) im(u) k`.
     #[arg(long)]
@@ -98,20 +100,30 @@ pub struct Options {
     pub functions: Vec<JacobiFn>,
 }
 
-/// `s` cut to 40 characters (with `…` when cut).
+/// `s` cut to 40 characters (with `…` when cut), control characters escaped (`\0`,
+/// `\u{1b}`) so that none reaches the terminal.
 fn excerpt(s: &str) -> String {
-    let mut t: String = s.chars().take(40).collect();
-    if s.chars().nth(40).is_some() {
-        t.push('…');
-    }
-    t
+    super::printable(&s.chars().take(40).collect::<String>())
+        + if s.chars().nth(40).is_some() {
+            "…"
+        } else {
+            ""
+        }
+}
+
+/// The position `<stdin>:LINE:COL` of `field`, a slice of `line` (columns count
+/// characters from 1).
+fn at(line: &str, field: &str, lno: usize) -> String {
+    let offset = (field.as_ptr() as usize).saturating_sub(line.as_ptr() as usize);
+    let col = line.get(..offset).map_or(1, |h| h.chars().count() + 1);
+    format!("<stdin>:{lno}:{col}")
 }
 
 /// Reads the next line (without its end) into `buf`, at most [`MAX_LINE`] bytes;
 /// `Ok(false)` at the end of the input.
 fn next_line(input: &mut impl BufRead, buf: &mut Vec<u8>, lno: usize) -> Result<bool, CliError> {
     buf.clear();
-    let io = |e: std::io::Error| CliError::new(format!("line {lno}: I/O error: {e}"));
+    let io = |e: std::io::Error| CliError::new(format!("<stdin>:{lno}: cannot read: {e}"));
     let n = input
         .by_ref()
         .take(MAX_LINE as u64 + 1)
@@ -125,27 +137,54 @@ fn next_line(input: &mut impl BufRead, buf: &mut Vec<u8>, lno: usize) -> Result<
     } else if buf.len() > MAX_LINE {
         let head = String::from_utf8_lossy(&buf[..40]).into_owned();
         return Err(CliError::new(format!(
-            "line {lno}: longer than {MAX_LINE} bytes ('{}…')",
+            "<stdin>:{lno}:1: longer than {MAX_LINE} bytes ('{}…')",
             excerpt(&head)
         )));
     }
     Ok(true)
 }
 
-/// Parses one number of a line at the precision of `proto`.
-fn number<R: Real>(proto: &R, s: &str, what: &str, lno: usize) -> Result<R, CliError> {
-    proto.parse_like(s).map_err(|_| {
-        let overflow = s.parse::<f64>().is_ok_and(|v| v.is_infinite())
-            && !s.to_ascii_lowercase().contains("inf");
-        if overflow {
-            CliError::new(format!(
-                "line {lno}: {what} = {} overflows the largest f64 (about 1.8e308)",
+/// Parses one number `s` of a line at the precision of `proto` (the decimal grammar of
+/// [`crate::numbers::is_decimal`]); `pos` is its position.  A decimal that overflows or
+/// underflows to 0 at the working precision is an error saying so.
+fn number<R: Real>(proto: &R, s: &str, what: &str, pos: &str) -> Result<R, CliError> {
+    let bits = proto.precision().unwrap_or(53);
+    let decimal = crate::numbers::is_decimal(s);
+    match proto.parse_like(s) {
+        Ok(v) if v.is_zero() && decimal && crate::numbers::nonzero_mantissa(s) => {
+            Err(CliError::new(format!(
+                "{pos}: {what} = {} underflows to 0 at {bits} bits",
                 excerpt(s)
-            ))
-        } else {
-            CliError::new(format!("line {lno}: malformed {what} '{}'", excerpt(s)))
+            )))
         }
-    })
+        Ok(v) => Ok(v),
+        Err(_) if decimal => Err(CliError::new(format!(
+            "{pos}: {what} = {} overflows at {bits} bits",
+            excerpt(s)
+        ))),
+        Err(_) => Err(CliError::new(format!(
+            "{pos}: malformed {what} '{}' (a decimal such as 0.5, -2 or 1e-3)",
+            excerpt(s)
+        ))),
+    }
+}
+
+/// Refuses a modulus or parameter that the rounding to the working precision made 1
+/// (where the functions change regime: cn = dn = sech u) although the text is not 1.
+fn check_not_rounded_to_one<R: Real>(
+    k: &R,
+    s: &str,
+    what: &str,
+    pos: &str,
+) -> Result<(), CliError> {
+    if (k.clone() - k.one()).is_zero() && !crate::numbers::decimal_is_one(s) {
+        let bits = k.precision().unwrap_or(53);
+        return Err(CliError::new(format!(
+            "{pos}: {what} = {} rounds to 1 at {bits} bits, where the functions differ (cn = dn = sech u); give more --bits",
+            excerpt(s)
+        )));
+    }
+    Ok(())
 }
 
 /// Reads all lines from `input` and writes the results, generically over the real type
@@ -157,7 +196,7 @@ pub fn process<R: Real>(
     digits: usize,
     opts: &Options,
 ) -> Result<i32, CliError> {
-    let io = |e: std::io::Error| CliError::new(format!("I/O error: {e}"));
+    let io = super::write_error("standard output");
     let mut buf = Vec::new();
     let mut lno = 0usize;
     while {
@@ -167,7 +206,8 @@ pub fn process<R: Real>(
         let line = std::str::from_utf8(&buf).map_err(|_| {
             let lossy = String::from_utf8_lossy(&buf).into_owned();
             CliError::new(format!(
-                "line {lno}: not valid UTF-8 ('{}')",
+                "<stdin>:{lno}:{}: not valid UTF-8 ('{}')",
+                std::str::from_utf8(&buf).map_or_else(|e| e.valid_up_to(), |_| 0) + 1,
                 excerpt(&lossy)
             ))
         })?;
@@ -176,9 +216,9 @@ pub fn process<R: Real>(
             continue;
         }
         let text = line_values(&proto, t, lno, digits, opts)?;
-        writeln!(out, "{text}").map_err(io)?;
+        writeln!(out, "{text}").map_err(&io)?;
     }
-    out.flush().map_err(io)?;
+    out.flush().map_err(&io)?;
     Ok(0)
 }
 
@@ -203,17 +243,26 @@ fn line_values<R: Real>(
             fields.len().to_string()
         };
         return Err(CliError::new(format!(
-            "line {lno}: expected {want} numbers ({shape}), found {found} in '{}'",
+            "<stdin>:{lno}:1: expected {want} numbers ({shape}), found {found} in '{}'",
             excerpt(t)
         )));
     }
-    let err = |e: SpecialError| CliError::new(format!("line {lno}: {e}"));
+    let pos = |j: usize| at(t, fields[j], lno);
+    // a modulus out of range is at the modulus, anything else at u
+    let err = |e: SpecialError| {
+        let j = match e {
+            SpecialError::ModulusOutOfRange(_) => fields.len() - 1,
+            _ => 0,
+        };
+        CliError::new(format!("{}: {e}", pos(j)))
+    };
     let values: Vec<String> = if opts.complex {
         let u = Cplx::new(
-            number(proto, fields[0], "re(u)", lno)?,
-            number(proto, fields[1], "im(u)", lno)?,
+            number(proto, fields[0], "re(u)", &pos(0))?,
+            number(proto, fields[1], "im(u)", &pos(1))?,
         );
-        let k = number(proto, fields[2], "modulus k", lno)?;
+        let k = number(proto, fields[2], "modulus k", &pos(2))?;
+        check_not_rounded_to_one(&k, fields[2], "modulus k", &pos(2))?;
         let mut v = Vec::new();
         for f in &opts.functions {
             let z = jacobi_complex(*f, &u, &k).map_err(err)?;
@@ -222,13 +271,14 @@ fn line_values<R: Real>(
         }
         v
     } else {
-        let u = number(proto, fields[0], "u", lno)?;
+        let u = number(proto, fields[0], "u", &pos(0))?;
         let second = if opts.parameter {
             "parameter m"
         } else {
             "modulus k"
         };
-        let k = number(proto, fields[1], second, lno)?;
+        let k = number(proto, fields[1], second, &pos(1))?;
+        check_not_rounded_to_one(&k, fields[1], second, &pos(1))?;
         let mut v = Vec::new();
         for f in &opts.functions {
             let x = if opts.parameter {

@@ -40,6 +40,20 @@ pub fn print(text: &str) -> Result<(), CliError> {
     out.flush().map_err(&err)
 }
 
+/// `s` with control characters escaped (`\0`, `\u{1b}`, `\n`), for a message that
+/// quotes input.
+pub fn printable(s: &str) -> String {
+    s.chars()
+        .map(|c| {
+            if c.is_control() {
+                c.escape_default().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
+}
+
 /// The largest `--jobs` accepted (worker threads).
 pub const MAX_JOBS: usize = 1024;
 
@@ -53,6 +67,39 @@ pub fn check_jobs(jobs: Option<usize>) -> Result<(), CliError> {
     }
 }
 
+/// The budget of every symbolic proof attempt (`verify`, `prove`, `report`); see
+/// [`crate::algebra::Budget`].
+#[derive(clap::Args, Debug, Clone, Copy)]
+pub struct ProofBudgetArgs {
+    /// Wall-clock time of one proof attempt in milliseconds, 1..=86400000; past it the
+    /// claim is not proved and keeps its numerical verdict.
+    #[arg(long, value_name = "MS", default_value_t = crate::algebra::DEFAULT_TIME_MS)]
+    pub proof_budget_ms: u64,
+    /// Ceiling on the resident memory while a proof runs, in MiB, 64..=1048576.
+    #[arg(long, value_name = "MB", default_value_t = crate::algebra::DEFAULT_MEMORY_MB)]
+    pub proof_memory_mb: u64,
+}
+
+impl ProofBudgetArgs {
+    /// Checks the ranges and makes the budget that of every proof attempt.
+    pub fn apply(&self) -> Result<(), CliError> {
+        if !(1..=86_400_000).contains(&self.proof_budget_ms) {
+            return Err(CliError(format!(
+                "--proof-budget-ms {} is outside 1..=86400000 (milliseconds)",
+                self.proof_budget_ms
+            )));
+        }
+        if !(64..=1 << 20).contains(&self.proof_memory_mb) {
+            return Err(CliError(format!(
+                "--proof-memory-mb {} is outside 64..=1048576 (MiB)",
+                self.proof_memory_mb
+            )));
+        }
+        crate::algebra::set_default_budget(self.proof_budget_ms, self.proof_memory_mb);
+        Ok(())
+    }
+}
+
 pub mod jacobi;
 pub mod orbit;
 mod orbit_row;
@@ -63,9 +110,15 @@ pub mod step;
 pub fn parse_list<T: std::str::FromStr>(s: &str, what: &str) -> Result<Vec<T>, CliError> {
     s.split(',')
         .map(|t| {
-            t.trim()
-                .parse::<T>()
-                .map_err(|_| CliError(format!("malformed {what} '{}' in '{s}'", t.trim())))
+            let t = t.trim();
+            t.parse::<T>().map_err(|_| {
+                let digits = t.strip_prefix(['-', '+']).unwrap_or(t);
+                if !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()) {
+                    CliError(format!("{what} '{t}' in '{s}' is out of range"))
+                } else {
+                    CliError(format!("malformed {what} '{t}' in '{s}'"))
+                }
+            })
         })
         .collect()
 }
@@ -74,4 +127,5 @@ pub mod audit;
 pub mod eval;
 pub mod prove;
 pub mod report;
+mod report_install;
 pub mod verify;

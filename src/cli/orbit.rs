@@ -49,6 +49,9 @@ pub struct Table<'a, R> {
     c0: EllCoords<R>,
     prev_phi: R,
     n: usize,
+    /// Iterates whose phase is undefined (near the separatrix the iterate's own
+    /// modulus may round to 1 or beyond), and the first reason.
+    phaseless: (usize, Option<String>),
 }
 
 impl<'a, R: Real> Table<'a, R> {
@@ -62,6 +65,17 @@ impl<'a, R: Real> Table<'a, R> {
             c0,
             prev_phi,
             n: 0,
+            phaseless: (0, None),
+        })
+    }
+
+    /// A note on the iterates without a phase, if any.
+    pub fn phaseless_note(&self) -> Option<String> {
+        let (count, first) = &self.phaseless;
+        first.as_ref().map(|why| {
+            format!(
+                "eulertop: note: the phase is undefined at {count} iterates (their phibar and dphi are empty; first: {why})"
+            )
         })
     }
 
@@ -80,13 +94,23 @@ impl<'a, R: Real> Table<'a, R> {
         let phase = if n == 0 {
             None
         } else {
-            let c = phi_near(&p.inertia, &m, &self.prev_phi)
-                .map_err(|e| CliError::new(format!("step {n}: {e}")))?;
-            let half = p.h.from_ratio(1, 2);
-            let bar = (c.phi.clone() + self.prev_phi.clone()) * half.clone();
-            let d = (c.phi.clone() - self.prev_phi.clone()) * half;
-            self.prev_phi = c.phi;
-            Some((bar, d))
+            match phi_near(&p.inertia, &m, &self.prev_phi) {
+                Ok(c) => {
+                    let half = p.h.from_ratio(1, 2);
+                    let bar = (c.phi.clone() + self.prev_phi.clone()) * half.clone();
+                    let d = (c.phi.clone() - self.prev_phi.clone()) * half;
+                    self.prev_phi = c.phi;
+                    Some((bar, d))
+                }
+                // the iterate itself is fine: only its phase is left out
+                Err(e) => {
+                    self.phaseless.0 += 1;
+                    self.phaseless
+                        .1
+                        .get_or_insert_with(|| format!("step {n}: {e}"));
+                    None
+                }
+            }
         };
         self.n += 1;
         Ok(Row {
@@ -192,7 +216,33 @@ fn run_generic<R: Real>(like: R, args: &Args) -> Result<i32, CliError> {
         sinks.emit(table.row(m?)?)?;
     }
     sinks.finish(args.svg.as_deref(), pred)?;
+    if let Some(note) = table.phaseless_note() {
+        let _ = writeln!(std::io::stderr(), "{note}");
+    }
     Ok(0)
+}
+
+/// Whether `a` and `b` name one file: the same path once the directory is resolved, or
+/// one existing file (a hard or symbolic link).
+fn same_file(a: &Path, b: &Path) -> bool {
+    let resolved = |p: &Path| {
+        let dir = match p.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d,
+            _ => Path::new("."),
+        };
+        Some(dir.canonicalize().ok()?.join(p.file_name()?))
+    };
+    if a == b || resolved(a).is_some_and(|x| Some(x) == resolved(b)) {
+        return true;
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        if let (Ok(x), Ok(y)) = (std::fs::metadata(a), std::fs::metadata(b)) {
+            return x.dev() == y.dev() && x.ino() == y.ino();
+        }
+    }
+    false
 }
 
 /// Runs the subcommand; returns the exit status.
@@ -202,6 +252,15 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         return Err(CliError::new(format!(
             "--svg draws at most {MAX_SVG_STEPS} steps, got --steps {} (use --csv for longer orbits)",
             args.step.steps
+        )));
+    }
+    if let (Some(c), Some(s)) = (&args.csv, &args.svg)
+        && same_file(c, s)
+    {
+        return Err(CliError::new(format!(
+            "--csv {} and --svg {} name the same file: the figure would overwrite the table",
+            c.display(),
+            s.display()
         )));
     }
     if args.step.bits == 53 {

@@ -24,6 +24,9 @@ pub struct Args {
     /// Write the certificate (a SymPy-recheckable script) to this file.
     #[arg(long)]
     pub certificate: Option<String>,
+    /// The budget of every proof attempt.
+    #[command(flatten)]
+    pub budget: super::ProofBudgetArgs,
 }
 
 /// The derivation as text.
@@ -65,6 +68,7 @@ pub fn derivation(id: &str, printed: &str, p: &ProofInfo) -> String {
 
 /// Runs `eulertop prove`; exit status 0 if proved, 1 if not.
 pub fn run(args: Args) -> Result<i32, CliError> {
+    args.budget.apply()?;
     let cat = super::verify::load(&args.catalogue)?;
     let claim = cat
         .claims
@@ -83,6 +87,9 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             )));
         }
     };
+    if let Some(path) = &args.certificate {
+        check_certificate_path(path)?;
+    }
     let p = prove(
         Ctx { cat: &cat, claim },
         &lhs,
@@ -96,13 +103,48 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     out.write_all(derivation(&claim.id, &claim.printed, &p).as_bytes())
         .and_then(|()| out.flush())
         .map_err(write_error("standard output"))?;
-    if let (Some(path), None, true) = (&args.certificate, &p.certificate, p.is_proved()) {
-        // proved, but a step recorded no derivation: say so rather than write nothing
-        eprintln!(
-            "eulertop: no certificate written to {path}: the certificate format does not record {}",
-            p.uncertified.join("; ")
+    if let (Some(path), None) = (&args.certificate, &p.certificate) {
+        // no certificate: an older file at the path must not pass for this proof's
+        let removed = match std::fs::remove_file(path) {
+            Ok(()) => format!("; the older {path} was removed"),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => String::new(),
+            Err(e) => return Err(CliError(format!("cannot remove the older {path}: {e}"))),
+        };
+        let why = if p.is_proved() {
+            // proved, but a step recorded no derivation
+            format!(
+                "the certificate format does not record {}",
+                p.uncertified.join("; ")
+            )
+        } else {
+            "the claim is not proved".to_string()
+        };
+        let _ = writeln!(
+            std::io::stderr(),
+            "eulertop: no certificate written to {path}: {why}{removed}"
         );
         return Ok(1);
     }
     Ok(i32::from(!p.is_proved()))
+}
+
+/// Checks `--certificate PATH` before the proof runs: a file name in an existing
+/// directory, not a directory itself.
+fn check_certificate_path(path: &str) -> Result<(), CliError> {
+    let p = std::path::Path::new(path);
+    let bad = |why: &str| Err(CliError(format!("--certificate '{path}': {why}")));
+    if path.is_empty() {
+        return bad("an empty file name");
+    }
+    if p.is_dir() {
+        return bad("is a directory");
+    }
+    let parent = match p.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => std::path::Path::new("."),
+    };
+    if !parent.is_dir() {
+        return bad(&format!("no directory {}", parent.display()));
+    }
+    Ok(())
 }

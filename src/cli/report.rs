@@ -18,7 +18,11 @@ pub struct Args {
     #[arg(long, default_value = "reports")]
     pub out: String,
     /// Precision ladder in bits.
-    #[arg(long, default_value = "53,128,256,512,1024")]
+    #[arg(
+        long,
+        default_value = "53,128,256,512,1024",
+        allow_hyphen_values = true
+    )]
     pub bits: String,
     /// Catalogue directory.
     #[arg(long, default_value = "identities")]
@@ -30,6 +34,9 @@ pub struct Args {
     /// `<!-- /verdicts -->`) is rewritten; empty to skip.
     #[arg(long, default_value = "README.md")]
     pub readme: String,
+    /// The budget of every proof attempt.
+    #[command(flatten)]
+    pub budget: super::ProofBudgetArgs,
 }
 
 /// Reads `\newcommand{\name}{body}` lines from a LaTeX preamble.
@@ -52,11 +59,31 @@ pub fn parse_newcommands(tex: &str) -> BTreeMap<String, String> {
     m
 }
 
+/// The text of a regular file of at most
+/// [`MAX_TEXT_FILE_BYTES`](crate::claims::catalogue::source::MAX_TEXT_FILE_BYTES), as UTF-8.
+pub fn read_text(path: &Path) -> Result<String, String> {
+    use crate::claims::catalogue::source::{MAX_TEXT_FILE_BYTES, read_regular};
+    let bytes = read_regular(path, MAX_TEXT_FILE_BYTES)?;
+    String::from_utf8(bytes)
+        .map_err(|e| format!("not UTF-8 (byte {})", e.utf8_error().valid_up_to()))
+}
+
+/// [`read_text`] of a file the catalogue may leave out: `None` when it does not exist.
+fn optional_text(path: &Path) -> Result<Option<String>, CliError> {
+    if !path.exists() && path.symlink_metadata().is_err() {
+        return Ok(None);
+    }
+    read_text(path)
+        .map(Some)
+        .map_err(|e| CliError(format!("{}: {e}", path.display())))
+}
+
 fn read_conventions(dir: &Path) -> Result<Vec<Convention>, CliError> {
     let p = dir.join("conventions.toml");
-    let Ok(text) = std::fs::read_to_string(&p) else {
+    if !p.exists() {
         return Ok(Vec::new());
-    };
+    }
+    let text = read_text(&p).map_err(|e| CliError(format!("{}: {e}", p.display())))?;
     let v: toml::Value =
         toml::from_str(&text).map_err(|e| CliError(format!("{}: {}", p.display(), e.message())))?;
     let list = v
@@ -89,8 +116,7 @@ pub struct ReadmeBlock {
 pub fn read_readme(path: &Path) -> Result<ReadmeBlock, CliError> {
     let shown = path.display();
     let skip = "pass --readme '' to skip the README update";
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError(format!("--readme {shown}: {e}; {skip}")))?;
+    let text = read_text(path).map_err(|e| CliError(format!("--readme {shown}: {e}; {skip}")))?;
     let (open, close) = ("<!-- verdicts -->", "<!-- /verdicts -->");
     let (Some(a), Some(b)) = (text.find(open), text.find(close)) else {
         return Err(CliError(format!(
@@ -171,6 +197,7 @@ fn sections(cat: &crate::claims::catalogue::Catalogue) -> Vec<Section> {
 
 /// Runs `eulertop report`: every argument is checked before anything is written.
 pub fn run(args: Args) -> Result<i32, CliError> {
+    args.budget.apply()?;
     let bits = parse_bits(&args.bits)?;
     super::check_jobs(args.jobs)?;
     let readme = match args.readme.as_str() {
@@ -181,14 +208,14 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     check_out(out, readme.as_ref())?;
     let cat = load(&args.catalogue)?;
     let dir = Path::new(&args.catalogue);
-    let macros = match std::fs::read_to_string(dir.join("paper-macros.tex")) {
-        Ok(t) => parse_newcommands(&t),
-        Err(_) => BTreeMap::new(),
+    let macros = match optional_text(&dir.join("paper-macros.tex"))? {
+        Some(t) => parse_newcommands(&t),
+        None => BTreeMap::new(),
     };
     let conventions = read_conventions(dir)?;
-    let environments = match std::fs::read_to_string(dir.join("environments.tex")) {
-        Ok(t) => crate::report::paper_text::parse(&t),
-        Err(_) => BTreeMap::new(),
+    let environments = match optional_text(&dir.join("environments.tex"))? {
+        Some(t) => crate::report::paper_text::parse(&t),
+        None => BTreeMap::new(),
     };
     let places = cat
         .claims
@@ -219,10 +246,20 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         places,
         environments,
     };
-    let written = write_reports(&input, out)
-        .map_err(|e| CliError(format!("cannot write reports to {}: {e}", out.display())))?;
-    crate::report::figures::model::write_all(&out.join("figures"))
-        .map_err(|e| CliError(format!("cannot write figures: {e}")))?;
+    // every page is written beside --out first, then moved in (the pages of an
+    // earlier report that this one does not write are removed)
+    let staging = super::report_install::staging_dir(out)?;
+    let staged = write_reports(&input, &staging)
+        .map_err(|e| CliError(format!("cannot write the report: {e}")))
+        .and_then(|_| {
+            crate::report::figures::model::write_all(&staging.join("figures"))
+                .map_err(|e| CliError(format!("cannot write figures: {e}")))
+        });
+    if let Err(e) = staged {
+        let _ = std::fs::remove_dir_all(&staging);
+        return Err(e);
+    }
+    let written = super::report_install::install(&staging, out)?;
     if let Some(r) = &readme {
         r.update(&results)?;
     }

@@ -38,7 +38,7 @@ pub struct Args {
     #[arg(long, default_value_t = 1)]
     pub steps: usize,
     /// Precision in bits (53 = f64).
-    #[arg(long, default_value_t = 53)]
+    #[arg(long, default_value_t = 53, allow_negative_numbers = true)]
     pub bits: u32,
     /// Start point M1 M2 M3.
     #[arg(num_args = 3, required = true, value_names = ["M1", "M2", "M3"])]
@@ -61,24 +61,16 @@ pub struct Problem<R> {
     pub params: EllipticParams<R>,
 }
 
-/// Does the mantissa of a decimal (the part before any exponent) have a nonzero digit?
-fn nonzero_mantissa(t: &str) -> bool {
-    let mant = t.split(['e', 'E']).next().unwrap_or("");
-    mant.bytes().any(|b| (b'1'..=b'9').contains(&b))
-}
-
 /// Parses a decimal at the precision of `like`; a valid decimal outside the range of the
 /// working precision (overflow, or underflow to 0) is reported as such.
 fn num<R: Real>(like: &R, s: &str, what: &str) -> Result<R, CliError> {
     let t = s.trim();
-    let decimal = t.parse::<f64>().is_ok()
-        && t.bytes()
-            .all(|b| b.is_ascii_digit() || b"+-.eE".contains(&b));
+    let decimal = crate::numbers::is_decimal(t);
     let bits = like.precision().unwrap_or(53);
     match like.parse_like(s) {
-        Ok(v) if v.is_zero() && decimal && nonzero_mantissa(t) => Err(CliError::new(format!(
-            "{what} = {t} underflows to 0 at {bits} bits"
-        ))),
+        Ok(v) if v.is_zero() && decimal && crate::numbers::nonzero_mantissa(t) => Err(
+            CliError::new(format!("{what} = {t} underflows to 0 at {bits} bits")),
+        ),
         Ok(v) => Ok(v),
         Err(_) if decimal => Err(CliError::new(format!(
             "{what} = {t} overflows at {bits} bits"

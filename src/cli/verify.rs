@@ -13,7 +13,11 @@ use std::path::Path;
 #[derive(Parser, Debug)]
 pub struct Args {
     /// Precision ladder in bits (53 = IEEE double, others MPFR).
-    #[arg(long, default_value = "53,128,256,512,1024")]
+    #[arg(
+        long,
+        default_value = "53,128,256,512,1024",
+        allow_hyphen_values = true
+    )]
     pub bits: String,
     /// Only claims whose id contains this text (`*` matches any run of characters).
     #[arg(long)]
@@ -34,6 +38,9 @@ pub struct Args {
     /// seeds): the samples change, and the set of proved claims must not.
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
+    /// The budget of every proof attempt.
+    #[command(flatten)]
+    pub budget: super::ProofBudgetArgs,
 }
 
 /// Loads the catalogue with the model's functions; load errors become [`CliError`].
@@ -61,15 +68,22 @@ pub fn matches_pattern(id: &str, pat: &str) -> bool {
     parts.last().is_none_or(|l| l.is_empty() || id.ends_with(l))
 }
 
+/// The one precision range of every command: 2 to 1048576 bits (53 is IEEE double,
+/// any other MPFR).
+pub fn check_precision(b: u32) -> Result<(), CliError> {
+    if !(2..=1 << 20).contains(&b) {
+        return Err(CliError(format!(
+            "precision {b} bits is out of range 2..=1048576 (53 = f64, others MPFR)"
+        )));
+    }
+    Ok(())
+}
+
 /// Parses and checks a precision ladder.
 pub fn parse_bits(s: &str) -> Result<Vec<u32>, CliError> {
     let bits: Vec<u32> = super::parse_list(s, "precision")?;
     for &b in &bits {
-        if b != 53 && !(54..=1 << 20).contains(&b) {
-            return Err(CliError(format!(
-                "precision {b} bits out of range (53 = f64, or 54..1048576 for MPFR)"
-            )));
-        }
+        check_precision(b)?;
     }
     if bits.is_empty() {
         return Err(CliError("empty precision list".into()));
@@ -139,22 +153,57 @@ fn summary(results: &[ClaimResult], bits: &[u32]) -> Summary {
     }
 }
 
-/// Paper labels: from the LaTeX source named by the environment variable
-/// `EULERTOP_PAPER` when it is set and readable, else the checked-in list.
-pub fn paper_labels() -> Vec<String> {
-    if let Some(t) =
-        std::env::var_os("EULERTOP_PAPER").and_then(|p| std::fs::read_to_string(p).ok())
-    {
-        let l = latex_labels(&t);
-        if !l.is_empty() {
-            return l;
+/// A selected claim with `where` constraints (its own or its domain's) that no point
+/// satisfies is a data error naming the claim and the constraint, found before the run
+/// (one draw of its sampler each).
+pub fn check_domains_reachable(
+    cat: &Catalogue,
+    select: &(dyn Fn(&crate::claims::catalogue::Claim) -> bool + Sync),
+) -> Result<(), CliError> {
+    use crate::claims::sampler::{Sampler, Stream};
+    for c in cat.claims.iter().filter(|c| select(c)) {
+        let domain_wheres = (c.domain.as_ref())
+            .and_then(|d| cat.domains.get(&d.value))
+            .is_some_and(|d| !d.wheres.is_empty());
+        if c.wheres.is_empty() && !domain_wheres {
+            continue;
+        }
+        let Ok(mut s) = Sampler::new(cat, c, Stream::Samples) else {
+            continue;
+        };
+        if let Err(m) = s.draw()
+            && m.starts_with("domain too thin")
+        {
+            return Err(CliError(format!(
+                "{}: claim {}: the domain is unreachable: {m}",
+                c.position, c.id
+            )));
         }
     }
-    include_str!("../../tests/data/paper_labels.txt")
+    Ok(())
+}
+
+/// Paper labels: from the LaTeX source named by the environment variable
+/// `EULERTOP_PAPER` when it is set, else the checked-in list.  A source that cannot be
+/// read or has no `\label` is an error naming the variable.
+pub fn paper_labels() -> Result<Vec<String>, CliError> {
+    if let Some(p) = std::env::var_os("EULERTOP_PAPER") {
+        let shown = Path::new(&p).display().to_string();
+        let t = super::report::read_text(Path::new(&p))
+            .map_err(|e| CliError(format!("EULERTOP_PAPER={shown}: {e}")))?;
+        let l = latex_labels(&t);
+        if l.is_empty() {
+            return Err(CliError(format!(
+                "EULERTOP_PAPER={shown}: no \\label in the file"
+            )));
+        }
+        return Ok(l);
+    }
+    Ok(include_str!("../../tests/data/paper_labels.txt")
         .lines()
         .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
         .map(|l| l.to_string())
-        .collect()
+        .collect())
 }
 
 /// Verifies the selected claims on `jobs` worker threads (default: all cores), with a
@@ -195,6 +244,7 @@ pub fn run_with_progress(
 
 /// Runs `eulertop verify`.
 pub fn run(args: Args) -> Result<i32, CliError> {
+    args.budget.apply()?;
     let bits = parse_bits(&args.bits)?;
     if args.format != "text" && args.format != "json" {
         return Err(CliError(format!(
@@ -219,12 +269,19 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             args.only.unwrap_or_default()
         )));
     }
+    check_domains_reachable(&cat, &select)?;
+    // the labels are read before the run, so a bad EULERTOP_PAPER costs nothing
+    let labels = if args.coverage {
+        paper_labels()?
+    } else {
+        Vec::new()
+    };
     let results = run_with_progress(&cat, &opts, &select, total, args.jobs)?;
     let sum = summary(&results, &bits);
     let code = i32::from(!sum.unexpected.is_empty());
     if args.format == "json" {
         let coverage = args.coverage.then(|| {
-            coverage_table(&paper_labels(), &results)
+            coverage_table(&labels, &results)
                 .into_iter()
                 .map(|(label, ids)| CoverageRow {
                     label,
@@ -246,7 +303,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         let mut out = super::stdout();
         let written = print_text(&mut out, &results, &bits, &sum).and_then(|()| {
             if args.coverage {
-                print_coverage(&mut out, &results)?;
+                print_coverage(&mut out, &labels, &results)?;
             }
             out.flush()
         });
@@ -257,7 +314,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
 
 /// The reason, counterexample and failed samples of a claim not as expected.
 fn print_unexpected(w: &mut impl Write, r: &ClaimResult) -> std::io::Result<()> {
-    writeln!(w, "    reason: {}", r.reason)?;
+    writeln!(w, "    reason: {}", super::printable(&r.reason))?;
     if let Some(c) = &r.counterexample {
         let pt: Vec<String> = c
             .point
@@ -282,7 +339,7 @@ fn print_text(
     let idw = results.iter().map(|r| r.id.len()).max().unwrap_or(2).max(2);
     let locw = results
         .iter()
-        .map(|r| r.location.chars().count().min(40))
+        .map(|r| super::printable(&r.location).chars().count().min(40))
         .max()
         .unwrap_or(8)
         .max(8);
@@ -295,7 +352,8 @@ fn print_text(
     }
     writeln!(w, "{head}")?;
     for r in results {
-        let loc: String = r.location.chars().take(40).collect();
+        // control characters of the catalogue's text never reach the terminal
+        let loc: String = super::printable(&r.location).chars().take(40).collect();
         let mark = if r.as_expected { "" } else { " !" };
         let g = r.loss_bits.map_or("-".to_string(), |g| format!("{g:.1}"));
         let mut line = format!(
@@ -354,9 +412,12 @@ fn print_text(
     )
 }
 
-fn print_coverage(w: &mut impl Write, results: &[ClaimResult]) -> std::io::Result<()> {
-    let labels = paper_labels();
-    let table = coverage_table(&labels, results);
+fn print_coverage(
+    w: &mut impl Write,
+    labels: &[String],
+    results: &[ClaimResult],
+) -> std::io::Result<()> {
+    let table = coverage_table(labels, results);
     let covered = table.iter().filter(|(_, ids)| !ids.is_empty()).count();
     writeln!(
         w,

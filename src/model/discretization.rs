@@ -356,6 +356,13 @@ pub fn step_report<R: Real>(
     let what = || format!("(impl spec) with {}", gamma.name());
     let eps = h.epsilon();
     let mnorm = inf_norm(m);
+    if mnorm.is_zero() {
+        // the stopping rule is relative to ‖M‖: at rest it cannot judge a step
+        return Err(ModelError::Undefined(format!(
+            "{}: M = 0 (the top at rest) is not a start point; the step needs M ≠ 0",
+            what()
+        )));
+    }
     let mut x = ladder(h, |q| {
         let (i, m, h) = (inertia.at_prec(q), m.at_prec(q), h.at_prec(q));
         step_report(&i, gamma, &m, &h, opts).map(|r| r.m)

@@ -17,6 +17,9 @@ impl Scalar for f64 {
     }
     fn parse_like(&self, s: &str) -> Result<Self, NumError> {
         let t = s.trim();
+        if !super::is_decimal(t) {
+            return Err(NumError::Parse(s.to_string()));
+        }
         match t.parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(v),
             _ => Err(NumError::Parse(s.to_string())),

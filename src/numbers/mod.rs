@@ -37,6 +37,76 @@ pub use rational::{Rational, parse_rational};
 use std::fmt::Debug;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
+/// Is `s` (trimmed) a decimal of the one number grammar of every input:
+/// `[+-]? (d+ (. d*)? | . d+) ([eE] [+-]? d+)?` with ASCII digits `d`: no underscores,
+/// no `inf` or `nan`, no hexadecimal.
+///
+/// ```
+/// use eulertop::numbers::is_decimal;
+/// assert!(is_decimal("-1.5e-3") && is_decimal(".5") && is_decimal("2."));
+/// assert!(!is_decimal("1_000") && !is_decimal("inf") && !is_decimal("0x10"));
+/// ```
+pub fn is_decimal(s: &str) -> bool {
+    let b = s.trim().as_bytes();
+    let mut i = usize::from(matches!(b.first(), Some(b'+' | b'-')));
+    let digits = |i: &mut usize| {
+        let start = *i;
+        while b.get(*i).is_some_and(u8::is_ascii_digit) {
+            *i += 1;
+        }
+        *i - start
+    };
+    let mut n = digits(&mut i);
+    if b.get(i) == Some(&b'.') {
+        i += 1;
+        n += digits(&mut i);
+    }
+    if n == 0 {
+        return false;
+    }
+    if matches!(b.get(i), Some(b'e' | b'E')) {
+        i += 1;
+        if matches!(b.get(i), Some(b'+' | b'-')) {
+            i += 1;
+        }
+        if digits(&mut i) == 0 {
+            return false;
+        }
+    }
+    i == b.len()
+}
+
+/// Does the mantissa of a decimal (the part before any exponent) have a nonzero digit?
+/// (Then a value of 0 is an underflow.)
+///
+/// ```
+/// assert!(eulertop::numbers::nonzero_mantissa("1.5e-324"));
+/// assert!(!eulertop::numbers::nonzero_mantissa("0.0e5"));
+/// ```
+pub fn nonzero_mantissa(t: &str) -> bool {
+    let mant = t.split(['e', 'E']).next().unwrap_or("");
+    mant.bytes().any(|b| (b'1'..=b'9').contains(&b))
+}
+
+/// Is the decimal `s` exactly 1 (`1`, `1.000`, `0.1e1`, `+1`)?  `false` for anything
+/// else, text that is not a decimal included.
+///
+/// ```
+/// use eulertop::numbers::decimal_is_one;
+/// assert!(decimal_is_one("1.000") && decimal_is_one("10e-1"));
+/// assert!(!decimal_is_one("0.99999999999999999999999"));
+/// ```
+pub fn decimal_is_one(s: &str) -> bool {
+    let t = s.trim();
+    if !is_decimal(t) {
+        return false;
+    }
+    // a decimal of n digits other than 1 differs from 1 by at least 10^-n, far more
+    // than the rounding at 4n + 64 bits
+    let bits = u32::try_from(4 * t.len() + 64).unwrap_or(u32::MAX);
+    rug::Float::parse(t).is_ok_and(|p| rug::Float::with_val(bits, p) == 1)
+}
+
 /// Errors of the numbers layer.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum NumError {

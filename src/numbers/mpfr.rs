@@ -26,6 +26,9 @@ impl Scalar for Float {
     }
     fn parse_like(&self, s: &str) -> Result<Self, NumError> {
         let t = s.trim();
+        if !super::is_decimal(t) {
+            return Err(NumError::Parse(s.to_string()));
+        }
         match Float::parse(t) {
             Ok(p) => {
                 let v = Float::with_val(self.prec(), p);

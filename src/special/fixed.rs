@@ -134,6 +134,13 @@ fn fixed_modulus<R: Real>(spec: Spec<'_, R>) -> (Dd<R>, Dd<R>, Dd<R>, Form) {
                 Modulus::Complement => (c, k2, one, Form::Direct),
             }
         }
+        Spec::Modulus(k, _) if k.to_f64() > 1e150 => {
+            // κ = 1/k, where k² would overflow: κ² = (1/k)², κ'² = (1 − κ)(1 + κ)
+            let inv = dd(&k.one()).div(&dd(k));
+            let m = inv.sqr();
+            let mc = one_minus_any(&m);
+            (m.norm(), mc, dd(k), Form::Reciprocal)
+        }
         Spec::Modulus(k, _) => {
             // κ = 1/k: κ² = 1/k², κ'² = (k − 1)(k + 1)/k²
             let m = dd(&k.one()).div(&dd(k).sqr());

@@ -4,7 +4,7 @@
 use super::complex::sncndn_complex;
 use super::jacobi::sncndn_imp;
 use super::modulus::{Modulus, Spec};
-use super::{SpecialError, check_finite, check_modulus, show};
+use super::{SpecialError, check_finite, show};
 use crate::numbers::{ComplexScalar, Real, Scalar};
 
 /// One of the twelve Jacobi elliptic functions (DLMF 22.2.4–9): `sn cn dn cd dc ns nc
@@ -172,7 +172,7 @@ fn quotient<T: crate::numbers::Scalar>(
 /// assert!(jacobi(JacobiFn::Ns, &0.0_f64, &0.5).is_err()); // pole
 /// ```
 pub fn jacobi<R: Real>(f: JacobiFn, u: &R, k: &R) -> Result<R, SpecialError> {
-    check_modulus(k)?;
+    let k = &super::even_modulus(k)?;
     check_finite(u, "u")?;
     real(f, u, Spec::Modulus(k, Modulus::K), k.prec())
 }
@@ -199,7 +199,33 @@ pub fn jacobi_m<R: Real>(f: JacobiFn, u: &R, m: &R) -> Result<R, SpecialError> {
 /// `f(u)` for the modulus `spec` given at `prec` bits.
 fn real<R: Real>(f: JacobiFn, u: &R, spec: Spec<'_, R>, prec: u32) -> Result<R, SpecialError> {
     let n = u.prec().max(prec);
-    let values = sncndn_imp(u, spec, n)?;
+    // at k = 1 (m = 1) cn = dn = sech u: cd = dc = 1 exactly, also where sech u
+    // underflows
+    let unit = match spec {
+        Spec::Modulus(k, super::modulus::Modulus::K) => *k == k.one(),
+        Spec::Parameter(m) => *m == m.one(),
+        Spec::Modulus(..) => false,
+    };
+    if unit && matches!(f, JacobiFn::Cd | JacobiFn::Dc) {
+        return Ok(u.one().with_prec(n));
+    }
+    let values = sncndn_imp(u, spec, n).map_err(|e| match e {
+        // the reduction names the argument after the modulus transformation (k·u for
+        // k > 1, DLMF 22.17): the message names the given one too
+        SpecialError::ArgumentTooLarge(m) => {
+            let given = format!("u = {}", show(u));
+            if m.contains(&format!("({given})")) {
+                SpecialError::ArgumentTooLarge(m)
+            } else {
+                let m = m.replace(
+                    "(u = ",
+                    "(the argument after the transformation of the modulus to [0, 1] is ",
+                );
+                SpecialError::ArgumentTooLarge(format!("{m} at the given {given}"))
+            }
+        }
+        e => e,
+    })?;
     let at = || format!("u = {}", show(u));
     quotient(f, values, |v: &R| v.is_finite(), at).map(|v| v.with_prec(n))
 }

@@ -5,7 +5,7 @@ use super::bottom::{Bottom, sine_cases, tanh_sech};
 use super::fixed::{sncndn_fixed, sncndn_fixed_many};
 use super::modulus::{Form, Modulus, Spec, mp_modulus, untransform};
 use super::multi::reduced;
-use super::{GUARD, SpecialError, check_finite, check_modulus, show};
+use super::{GUARD, SpecialError, check_finite, check_modulus, even_modulus, show};
 use crate::numbers::Real;
 
 /// `(sn, cn, dn)(u)` for the modulus `spec`, at working precision (at least `n` bits;
@@ -75,7 +75,7 @@ pub fn sncndn_many<R: Real>(us: &[R], k: &R) -> Result<Vec<(R, R, R)>, SpecialEr
     if R::BY_RULE {
         return us.iter().map(|u| sncndn(u, k)).collect();
     }
-    check_modulus(k)?;
+    let k = &even_modulus(k)?;
     let name = |i: usize| format!("u[{i}]");
     if let Some(i) = us.iter().position(|u| !u.is_finite()) {
         check_finite(&us[i], &name(i))?;
@@ -130,13 +130,14 @@ pub fn sncndn_many<R: Real>(us: &[R], k: &R) -> Result<Vec<(R, R, R)>, SpecialEr
 /// // k = 1: tanh, sech, sech
 /// let (s1, c1, _) = sncndn(&0.7_f64, &1.0).unwrap();
 /// assert!((s1 - 0.7_f64.tanh()).abs() < 1e-16 && (c1 - 1.0 / 0.7_f64.cosh()).abs() < 1e-16);
-/// assert!(sncndn(&0.7_f64, &-0.5).is_err());
+/// // sn, cn, dn depend on k² only (DLMF 22.17.1)
+/// assert_eq!(sncndn(&0.7_f64, &-0.5).unwrap(), sncndn(&0.7_f64, &0.5).unwrap());
 /// ```
 pub fn sncndn<R: Real>(u: &R, k: &R) -> Result<(R, R, R), SpecialError> {
     if R::BY_RULE {
         return R::sncndn_by_rule(u, k).map_err(SpecialError::Rule);
     }
-    check_modulus(k)?;
+    let k = &even_modulus(k)?;
     check_finite(u, "u")?;
     let n = u.prec().max(k.prec());
     let (s, c, d) = sncndn_imp(u, Spec::Modulus(k, Modulus::K), n)?;

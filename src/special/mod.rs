@@ -166,6 +166,17 @@ pub(crate) fn check_modulus<R: Real>(k: &R) -> Result<(), SpecialError> {
     Ok(())
 }
 
+/// `|k|` for the functions that depend on `k²` only, such as sn, cn, dn (DLMF 22.17.1:
+/// a negative modulus gives the values of its absolute value); a modulus that is not
+/// finite is an error.
+#[inline]
+pub(crate) fn even_modulus<R: Real>(k: &R) -> Result<R, SpecialError> {
+    if !k.is_finite() {
+        return Err(modulus_error(k, "(-∞, ∞)"));
+    }
+    Ok(if *k < k.zero() { -k.clone() } else { k.clone() })
+}
+
 /// Checks `0 ≤ k < 1` and finiteness (elliptic integrals, complex argument).
 #[inline]
 pub(crate) fn check_modulus_below_one<R: Real>(k: &R) -> Result<(), SpecialError> {

@@ -417,7 +417,7 @@ fn row07_recursive_definition_is_a_load_error() {
 #[test]
 fn row08_overflow_is_not_called_malformed() {
     let o = run_in(None, &["jacobi"], b"1e309 0.5\n", Stdio::piped());
-    assert_one_line_error(&o, &["line 1"], "jacobi 1e309");
+    assert_one_line_error(&o, &["<stdin>:1:1"], "jacobi 1e309");
     assert!(!o.stderr.contains("malformed"), "{}", o.stderr);
 }
 
@@ -433,12 +433,12 @@ fn row08_a_huge_sum_bound_is_named_too_large() {
 #[test]
 fn row09_non_utf8_and_huge_lines() {
     let o = run_in(None, &["jacobi"], b"0.5 0.5\n0.5 \xff\n", Stdio::piped());
-    assert_one_line_error(&o, &["line 2"], "non-UTF-8 line");
+    assert_one_line_error(&o, &["<stdin>:2:"], "non-UTF-8 line");
     let mut big = b"0.5 0.5\n".to_vec();
     big.extend(std::iter::repeat_n(b'x', 5 << 20));
     big.push(b'\n');
     let o = run_in(None, &["jacobi"], &big, Stdio::piped());
-    assert_one_line_error(&o, &["line 2"], "5 MB line");
+    assert_one_line_error(&o, &["<stdin>:2:"], "5 MB line");
     assert!(o.stderr.len() < 400, "message of {} bytes", o.stderr.len());
 }
 
@@ -546,4 +546,900 @@ fn row14_usage_errors_are_one_line() {
     let o = run(&[]);
     assert_eq!(o.code, Some(2), "no command: {}", o.stderr);
     assert!(o.stderr.contains("Usage: eulertop"), "{}", o.stderr);
+}
+
+// -- R2: every proof attempt has a budget ---------------------------------------------
+
+/// A claim with the arithmetic-geometric mean written out as a `let` chain: twelve
+/// nested square roots, whose norms the prover's square-root search multiplies out
+/// (several GB in minutes without a budget); numerically it is verified at once.
+fn agm_catalogue(name: &str) -> PathBuf {
+    let n = 12;
+    let mut lets = vec!["a0 = 1".to_string(), "b0 = sqrt(1 - k^2)".to_string()];
+    for j in 1..=n {
+        lets.push(format!("a{j} = (a{} + b{})/2", j - 1, j - 1));
+        lets.push(format!("b{j} = sqrt(a{}*b{})", j - 1, j - 1));
+    }
+    // a_n² − b_n² = (a_{n−1} − b_{n−1})²/4 exactly
+    let text = format!(
+        "[[claim]]\nid = \"t.agm\"\nlocation = \"test\"\nprinted = 'x'\n\
+         environment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\n\
+         expect = \"holds\"\nvars = [[\"k\", \"uniform(0.1, 0.9)\"]]\n\
+         let = '''\n{}\n'''\nlhs = \"a{n}^2 - b{n}^2\"\nrhs = \"(a{m} - b{m})^2/4\"\n",
+        lets.join("\n"),
+        m = n - 1
+    );
+    catalogue(name, text.as_bytes())
+}
+
+#[test]
+fn r2_a_proof_stops_at_its_time_budget_and_keeps_the_numerical_verdict() {
+    let dir = agm_catalogue("agm");
+    let cat = dir.to_str().unwrap();
+    let start = Instant::now();
+    let child = bin()
+        .args([
+            "prove",
+            "t.agm",
+            "--catalogue",
+            cat,
+            "--proof-budget-ms",
+            "1500",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let o = wait_for(child, 60);
+    assert!(
+        start.elapsed() < Duration::from_secs(30),
+        "{:?}",
+        start.elapsed()
+    );
+    assert!(
+        o.stdout
+            .contains("not proved: the proof exceeded its budget (1500 ms"),
+        "{}{}",
+        o.stdout,
+        o.stderr
+    );
+    let child = bin()
+        .args([
+            "verify",
+            "--catalogue",
+            cat,
+            "--bits",
+            "53,128",
+            "--format",
+            "json",
+            "--proof-budget-ms",
+            "1500",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let o = wait_for(child, 60);
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    let v: serde_json::Value = serde_json::from_str(&o.stdout).expect("JSON");
+    let c = &v["claims"][0];
+    assert_eq!(c["verdict"], "holds", "{c}");
+    assert!(
+        c.to_string().contains("exceeded its budget"),
+        "no budget reason in {c}"
+    );
+}
+
+#[test]
+fn r2_a_memory_ceiling_stops_the_proof() {
+    let dir = agm_catalogue("agm-memory");
+    let child = bin()
+        .args([
+            "prove",
+            "t.agm",
+            "--catalogue",
+            dir.to_str().unwrap(),
+            "--proof-memory-mb",
+            "64",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let o = wait_for(child, 60);
+    assert!(
+        o.stdout.contains("exceeded its budget") && o.stdout.contains("MiB"),
+        "{}{}",
+        o.stdout,
+        o.stderr
+    );
+}
+
+#[test]
+fn r2_the_time_budget_applies_to_catalogue_proofs() {
+    // this proof takes tens of milliseconds: one millisecond is not enough, and the
+    // claim keeps its numerical verdict
+    let o = run(&[
+        "verify",
+        "--only",
+        "sec4.prop3.constructed.poisson",
+        "--bits",
+        "53,128",
+        "--format",
+        "json",
+        "--proof-budget-ms",
+        "1",
+    ]);
+    let v: serde_json::Value = serde_json::from_str(&o.stdout).expect("JSON");
+    let c = &v["claims"][0];
+    assert_eq!(c["verdict"], "holds", "{c}");
+    assert!(c.to_string().contains("exceeded its budget (1 ms"), "{c}");
+    for bad in [["--proof-budget-ms", "0"], ["--proof-memory-mb", "1"]] {
+        let o = run(&["prove", "sec2.x", bad[0], bad[1]]);
+        assert_one_line_error(&o, &[bad[0]], bad[0]);
+    }
+}
+
+// -- H1, W4, W5, M10: sums and products ------------------------------------------------
+
+#[test]
+fn h1_nested_sums_are_bounded_in_all() {
+    let start = Instant::now();
+    let o = run(&["eval", "sum(k,1,100000,sum(j,1,100000,j))"]);
+    assert!(start.elapsed() < Duration::from_secs(20));
+    assert_one_line_error(&o, &["nested", "10000000000", "1000000"], "nested sums");
+    // through a function of a claim too
+    let text = format!(
+        "{CLAIM_HEAD}let = '''\nf(a) = sum(j, 1, 100000, a*j)\n'''\n\
+         lhs = \"sum(k, 1, 100000, f(k))\"\nrhs = \"x\"\n"
+    );
+    let dir = catalogue("nested-sum", text.as_bytes());
+    let start = Instant::now();
+    let o = run(&[
+        "verify",
+        "--bits",
+        "53",
+        "--catalogue",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(start.elapsed() < Duration::from_secs(30));
+    assert_ne!(o.code, Some(0), "{}", o.stdout);
+    assert!(o.stdout.contains("nested sums"), "{}{}", o.stdout, o.stderr);
+    // within the bound: Σ_{k=1}^{1000} Σ_{j=1}^{1000} 1 = 10⁶
+    let o = run(&["eval", "sum(k,1,1000,sum(j,1,1000,1))"]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(1e6),
+        "{}",
+        o.stderr
+    );
+}
+
+#[test]
+fn w5_the_term_limit_is_exact_and_m10_names_prod() {
+    let o = run(&["eval", "sum(k,1,100001,1)"]);
+    assert_one_line_error(&o, &["sum", "100001 terms", "100000"], "100001 terms");
+    let o = run(&["eval", "sum(k,1,100000,1)"]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(1e5),
+        "{}",
+        o.stderr
+    );
+    let o = run(&["eval", "prod(k,1,1000000,1)"]);
+    assert_one_line_error(&o, &["prod range"], "prod of 10⁶ terms");
+    assert!(!o.stderr.contains("sum"), "{}", o.stderr);
+}
+
+#[test]
+fn w4_a_sum_has_the_type_of_its_body() {
+    // Σ_{k=1}^{3} (k, k, k) = (6, 6, 6)
+    let o = run(&["eval", "sum(k,1,3,vec(k,k,k))"]);
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    let v: Vec<f64> = o
+        .stdout
+        .trim()
+        .trim_matches(['[', ']'])
+        .split(',')
+        .map(|x| x.trim().parse().unwrap())
+        .collect();
+    assert_eq!(v, vec![6.0, 6.0, 6.0]);
+    // an empty sum of vectors is the zero vector: adding a vector to it works
+    let o = run(&["eval", "sum(k,1,0,vec(k,k,k)) + vec(1,2,3)"]);
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    assert!(o.stdout.starts_with('['), "{}", o.stdout);
+}
+
+// -- H2, R1: only regular files of bounded size are read ------------------------------
+
+#[test]
+fn h2_a_fifo_or_device_is_not_a_catalogue_file() {
+    let dir = temp_dir("fifo");
+    let fifo = dir.join("a.toml");
+    let made = Command::new("mkfifo").arg(&fifo).status();
+    if made.is_ok_and(|s| s.success()) {
+        let child = bin()
+            .args(["verify", "--catalogue", dir.to_str().unwrap()])
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("binary runs");
+        let o = wait_for(child, 20);
+        assert_one_line_error(&o, &["a.toml", "not a regular file", "FIFO"], "FIFO");
+    }
+    let dir = temp_dir("device");
+    std::os::unix::fs::symlink("/dev/zero", dir.join("a.toml")).expect("symlink");
+    let child = bin()
+        .args(["verify", "--catalogue", dir.to_str().unwrap()])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let o = wait_for(child, 20);
+    assert_one_line_error(&o, &["a.toml", "not a regular file"], "/dev/zero");
+}
+
+#[test]
+fn r1_files_are_refused_above_their_size_limit() {
+    let dir = temp_dir("big");
+    // a sparse file of 17 MiB: refused before a byte is read
+    let f = std::fs::File::create(dir.join("a.toml")).unwrap();
+    f.set_len(17 << 20).unwrap();
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_one_line_error(&o, &["a.toml", "above the limit", "16 MiB"], "17 MiB file");
+    let child = bin()
+        .args(["report", "--readme", "/dev/zero", "--out", "unused"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let o = wait_for(child, 20);
+    assert_one_line_error(
+        &o,
+        &["--readme", "not a regular file"],
+        "--readme /dev/zero",
+    );
+    let o = run(&[
+        "report",
+        "--readme",
+        dir.join("a.toml").to_str().unwrap(),
+        "--out",
+        "unused",
+    ]);
+    assert_one_line_error(&o, &["--readme", "above the limit"], "--readme 17 MiB");
+}
+
+#[test]
+fn m21_an_unreadable_paper_source_is_an_error() {
+    let mut cmd = bin();
+    cmd.args(["verify", "--coverage", "--only", "sec2.ET"])
+        .env("EULERTOP_PAPER", "/nonexistent/paper.tex")
+        .current_dir(env!("CARGO_MANIFEST_DIR"));
+    let o = cmd.output().expect("runs");
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("EULERTOP_PAPER=/nonexistent/paper.tex"),
+        "{err}"
+    );
+}
+
+// -- L1, M25: a closed or full standard output is reported ----------------------------
+
+/// Runs the binary with standard output closed (`>&-`).
+fn run_stdout_closed(args: &[&str], stdin: &[u8]) -> Outcome {
+    use std::os::unix::process::CommandExt;
+    let mut cmd = bin();
+    cmd.args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped());
+    // SAFETY: close(2) is async-signal-safe; it runs in the child before exec.
+    unsafe {
+        cmd.pre_exec(|| {
+            libc::close(1);
+            Ok(())
+        });
+    }
+    let mut child = cmd.spawn().expect("binary runs");
+    let mut input = child.stdin.take().expect("stdin piped");
+    let _ = input.write_all(stdin);
+    drop(input);
+    let o = child.wait_with_output().expect("binary finishes");
+    Outcome {
+        code: o.status.code(),
+        stdout: String::new(),
+        stderr: String::from_utf8_lossy(&o.stderr).into_owned(),
+    }
+}
+
+#[test]
+fn l1_a_closed_standard_output_is_an_error() {
+    let cases: [(&[&str], &[u8]); 8] = [
+        (
+            &["step", "--inertia", "3,2,1", "--h", "0.1", "1", "2", "3"],
+            b"",
+        ),
+        (&["jacobi"], b"0.5 0.5\n"),
+        (&["eval", "1"], b""),
+        (&["verify", "--only", "sec2.ET", "--bits", "53"], b""),
+        (
+            &["orbit", "--inertia", "3,2,1", "--h", "0.1", "1", "2", "3"],
+            b"",
+        ),
+        (&["prove", "sec2.ET-v.printed"], b""),
+        (&["audit", "sec2.ET-v.printed", "--bits", "64,128"], b""),
+        (&["--version"], b""),
+    ];
+    for (args, input) in cases {
+        let o = run_stdout_closed(args, input);
+        assert_one_line_error(&o, &["standard output", "closed"], &format!("{args:?} >&-"));
+    }
+}
+
+#[test]
+fn m25_help_and_version_to_a_full_disk() {
+    for args in [
+        &["--help"][..],
+        &["--version"],
+        &["help", "step"],
+        &["step", "--help"],
+    ] {
+        let o = run_in(None, args, b"", dev_full());
+        assert_one_line_error(&o, &["standard output", "No space"], &format!("{args:?}"));
+    }
+}
+
+// -- L2: one file for two outputs -----------------------------------------------------
+
+#[test]
+fn l2_csv_and_svg_on_one_file_are_refused() {
+    let dir = temp_dir("same-out");
+    let base = ["orbit", "--inertia", "3,2,1", "--h", "0.1", "--steps", "5"];
+    for (csv, svg) in [("same.out", "same.out"), ("same.out", "./same.out")] {
+        let mut a = base.to_vec();
+        a.extend_from_slice(&["--csv", csv, "--svg", svg, "1", "2", "3"]);
+        let o = run_in(Some(&dir), &a, b"", Stdio::piped());
+        assert_one_line_error(
+            &o,
+            &["--csv", "--svg", "same file"],
+            &format!("{csv} {svg}"),
+        );
+        assert!(!dir.join("same.out").exists(), "written before the check");
+    }
+}
+
+// -- L3, M19: the certificate ---------------------------------------------------------
+
+#[test]
+fn l3_no_stale_certificate_and_m19_the_path_is_checked_first() {
+    let dir = agm_catalogue("stale-cert");
+    let cert = dir.join("c.py");
+    std::fs::write(&cert, "# an older certificate\n").unwrap();
+    let o = run(&[
+        "prove",
+        "t.agm",
+        "--catalogue",
+        dir.to_str().unwrap(),
+        "--proof-budget-ms",
+        "200",
+        "--certificate",
+        cert.to_str().unwrap(),
+    ]);
+    assert_eq!(o.code, Some(1), "{}", o.stderr);
+    assert!(!cert.exists(), "the older certificate is still there");
+    assert_eq!(o.stderr.lines().count(), 1, "{}", o.stderr);
+    assert!(
+        o.stderr.contains("no certificate written") && o.stderr.contains("removed"),
+        "{}",
+        o.stderr
+    );
+    for bad in ["", "/nonexistent/dir/c.py"] {
+        let start = Instant::now();
+        let o = run(&[
+            "prove",
+            "sec4.prop3.constructed.poisson",
+            "--certificate",
+            bad,
+        ]);
+        assert_one_line_error(&o, &["--certificate"], &format!("--certificate '{bad}'"));
+        assert!(start.elapsed() < Duration::from_secs(5));
+    }
+}
+
+// -- L4, M20: report replaces the pages of an earlier report --------------------------
+
+fn small_catalogue(name: &str) -> PathBuf {
+    let text = format!("{CLAIM_HEAD}lhs = \"x + x\"\nrhs = \"2*x\"\n");
+    catalogue(name, text.as_bytes())
+}
+
+#[test]
+fn l4_report_removes_the_pages_of_an_earlier_report() {
+    let cat = small_catalogue("report-cat");
+    let out = temp_dir("report-stale");
+    std::fs::create_dir_all(out.join("proofs")).unwrap();
+    let old = "# Section 9\n\n[← report index](README.md) · generated by `eulertop report`\n";
+    std::fs::write(out.join("09-old.md"), old).unwrap();
+    std::fs::write(out.join("proofs/lemma-9.md"), old).unwrap();
+    std::fs::write(out.join("notes.md"), "# my notes\n").unwrap();
+    let args = [
+        "report",
+        "--catalogue",
+        cat.to_str().unwrap(),
+        "--readme",
+        "",
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    let o = run(&args);
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    assert!(!out.join("09-old.md").exists(), "old section page kept");
+    assert!(
+        !out.join("proofs/lemma-9.md").exists(),
+        "old proof page kept"
+    );
+    assert!(
+        out.join("notes.md").exists(),
+        "a page not written by report removed"
+    );
+    assert!(out.join("README.md").exists());
+}
+
+#[test]
+fn m20_report_names_the_file_in_the_way_and_changes_nothing() {
+    let cat = small_catalogue("report-cat2");
+    let out = temp_dir("report-blocked");
+    std::fs::create_dir_all(out.join("README.md")).unwrap();
+    std::fs::write(out.join("errata.md"), "old").unwrap();
+    let args = [
+        "report",
+        "--catalogue",
+        cat.to_str().unwrap(),
+        "--readme",
+        "",
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    let o = run(&args);
+    assert_one_line_error(&o, &["README.md", "directory"], "README.md a directory");
+    assert_eq!(
+        std::fs::read_to_string(out.join("errata.md")).unwrap(),
+        "old"
+    );
+    let out = temp_dir("report-dangling");
+    std::os::unix::fs::symlink("/nonexistent/figures", out.join("figures")).unwrap();
+    let mut a = args.to_vec();
+    a[6] = out.to_str().unwrap();
+    let o = run(&a);
+    assert_one_line_error(&o, &["figures", "symbolic link"], "dangling figures");
+    assert!(!out.join("README.md").exists(), "partial report written");
+}
+
+// -- W1, W2, W6, the rounded modulus: jacobi computes what was asked ------------------
+
+fn jacobi_values(args: &[&str], input: &str) -> Vec<f64> {
+    let mut a = vec!["jacobi"];
+    a.extend_from_slice(args);
+    let o = run_in(None, &a, input.as_bytes(), Stdio::piped());
+    assert_eq!(o.code, Some(0), "{args:?} {input}: {}", o.stderr);
+    o.stdout
+        .split_whitespace()
+        .map(|x| x.parse().expect("a number"))
+        .collect()
+}
+
+#[test]
+fn w1_cd_and_dc_at_k_equal_to_one_are_one() {
+    // k = 1: cn = dn = sech u, so cd = dc = 1 wherever sech u underflows too
+    assert_eq!(
+        jacobi_values(&["--functions", "cd,dc"], "800 1\n"),
+        [1.0, 1.0]
+    );
+    assert_eq!(
+        jacobi_values(&["--functions", "cd,dc", "--parameter"], "800 1\n"),
+        [1.0, 1.0]
+    );
+    assert_eq!(
+        jacobi_values(&["--functions", "cd,dc", "--bits", "256"], "1e9 1\n"),
+        [1.0, 1.0]
+    );
+    for f in ["cd", "dc"] {
+        let o = run(&["eval", &format!("{f}(1e3, 1)")]);
+        assert_eq!(o.code, Some(0), "{}", o.stderr);
+        assert_eq!(
+            o.stdout.trim().parse::<f64>().ok(),
+            Some(1.0),
+            "{}",
+            o.stdout
+        );
+    }
+    // nc = cosh u really overflows
+    let o = run_in(
+        None,
+        &["jacobi", "--functions", "nc"],
+        b"800 1\n",
+        Stdio::piped(),
+    );
+    assert_one_line_error(&o, &["overflows"], "nc(800, 1)");
+}
+
+#[test]
+fn w2_a_huge_modulus_with_a_tiny_argument() {
+    // k = 1e200, u = 1e-300: k·u = 1e-100, so sn = u(1 + O(1e-200)), cn = dn = 1
+    let v = jacobi_values(&[], "1e-300 1e200\n");
+    assert!((v[0] / 1e-300 - 1.0).abs() < 1e-15, "{v:?}");
+    assert_eq!(&v[1..], [1.0, 1.0]);
+}
+
+#[test]
+fn w6_one_number_grammar_everywhere() {
+    for bits in ["53", "256"] {
+        let o = run_in(
+            None,
+            &["jacobi", "--bits", bits],
+            b"1_000 0.8\n",
+            Stdio::piped(),
+        );
+        assert_one_line_error(
+            &o,
+            &["malformed u", "1_000"],
+            &format!("jacobi --bits {bits}"),
+        );
+        let o = run(&[
+            "step",
+            "--bits",
+            bits,
+            "--inertia",
+            "3,2,1",
+            "--h",
+            "0.1",
+            "1_0",
+            "1",
+            "1",
+        ]);
+        assert_one_line_error(&o, &["1_0"], &format!("step --bits {bits}"));
+        for bad in ["inf", "nan", "0x10", "1e", "--1"] {
+            let input = format!("{bad} 0.5\n");
+            let o = run_in(
+                None,
+                &["jacobi", "--bits", bits],
+                input.as_bytes(),
+                Stdio::piped(),
+            );
+            assert_one_line_error(&o, &["malformed u"], &format!("{bad} at {bits} bits"));
+        }
+    }
+    let o = run(&["eval", "1_000"]);
+    assert_eq!(o.code, Some(2), "{}", o.stdout);
+}
+
+#[test]
+fn a_modulus_rounded_to_one_is_refused() {
+    let o = run_in(
+        None,
+        &["jacobi"],
+        b"100 0.99999999999999999999999\n",
+        Stdio::piped(),
+    );
+    assert_one_line_error(
+        &o,
+        &["<stdin>:1:5", "rounds to 1", "53 bits"],
+        "k = 1 - 1e-23",
+    );
+    // at 128 bits k < 1: k' = √(1 − k²) ≈ 4.5e-12, K ≈ ln(4/k') ≈ 27.5, so u = 100 is
+    // a few quarter periods and cn is not sech(100) = 7.4e-44
+    let v = jacobi_values(&["--bits", "128"], "100 0.99999999999999999999999\n");
+    assert!(v[1].abs() > 1e-20, "{v:?}");
+    // k given as exactly 1 in another spelling is fine
+    let v = jacobi_values(&["--functions", "cn"], "1 1.000\n");
+    assert!((v[0] - 1.0 / 1f64.cosh()).abs() < 1e-15, "{v:?}");
+}
+
+// -- M1–M3, M5–M7: jacobi's messages --------------------------------------------------
+
+#[test]
+fn m1_m2_m3_messages_name_the_input() {
+    let o = run_in(
+        None,
+        &["jacobi", "--parameter"],
+        b"0.5 1e300\n",
+        Stdio::piped(),
+    );
+    assert_one_line_error(&o, &["given u = 5e-1"], "M1");
+    let o = run_in(
+        None,
+        &["jacobi", "--functions", "ns"],
+        b"1e-400 0.5\n",
+        Stdio::piped(),
+    );
+    assert_one_line_error(&o, &["u = 1e-400 underflows", "53 bits"], "M2");
+    assert!(!o.stderr.contains("pole"), "{}", o.stderr);
+    let o = run_in(
+        None,
+        &["jacobi", "--bits", "256"],
+        b"1e999999999999 1\n",
+        Stdio::piped(),
+    );
+    assert_one_line_error(&o, &["overflows at 256 bits"], "M3");
+    assert!(!o.stderr.contains("f64"), "{}", o.stderr);
+}
+
+#[test]
+fn m5_m6_m7_positions_control_characters_and_standard_output() {
+    let o = run_in(None, &["jacobi"], b"0.5 0.5\n0.5 x\n", Stdio::piped());
+    assert_one_line_error(&o, &["<stdin>:2:5:", "malformed modulus k 'x'"], "M5");
+    let o = run_in(None, &["jacobi"], b"0.5 0.8\0\n", Stdio::piped());
+    assert_one_line_error(&o, &["\\u{0}"], "M6 NUL");
+    assert!(!o.stderr.contains('\0'), "{:?}", o.stderr);
+    let o = run_in(None, &["jacobi"], b"0.5 0.8\x1b[31m\n", Stdio::piped());
+    assert!(!o.stderr.contains('\x1b'), "{:?}", o.stderr);
+    let o = run_in(None, &["jacobi"], b"0.5 0.5\n", dev_full());
+    assert_one_line_error(&o, &["standard output", "No space"], "M7");
+}
+
+// -- W3, W7, X1: the language and the domain ------------------------------------------
+
+#[test]
+fn w3_the_determinant_of_a_two_by_two_literal() {
+    // det [[1, 2], [3, 4]] = 1·4 − 2·3 = −2
+    let o = run(&["eval", "re(det([[1,2],[3,4]]))"]);
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(-2.0),
+        "{}",
+        o.stdout
+    );
+    let text = format!("{CLAIM_HEAD}lhs = \"re(det([[x, 2], [3, 4]]))\"\nrhs = \"4*x - 6\"\n");
+    let dir = catalogue("det2", text.as_bytes());
+    let o = run(&[
+        "verify",
+        "--bits",
+        "53,128",
+        "--catalogue",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(o.code == Some(0) || o.code == Some(1), "{}", o.stderr);
+    assert!(
+        o.stdout.contains(" holds ") || o.stdout.contains(" proved "),
+        "{}",
+        o.stdout
+    );
+}
+
+#[test]
+fn w7_a_duplicate_parameter_is_a_load_error() {
+    let text = format!("{CLAIM_HEAD}let = '''\ng(y, y) = y\n'''\nlhs = \"g(1, 2)\"\nrhs = \"2\"\n");
+    let dir = catalogue("dup-param", text.as_bytes());
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_data_error(&o, &["t.toml:", "duplicate parameter 'y'"], "g(y, y)");
+}
+
+#[test]
+fn x1_an_unreachable_domain_is_an_error_naming_the_where() {
+    let text = "[[claim]]\nid = \"t.c\"\nlocation = \"test\"\nprinted = 'x'\n\
+        environment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\n\
+        expect = \"holds\"\nvars = [[\"x\", \"uniform(0.1, 1)\"]]\nwhere = [\"x > 2\"]\n\
+        lhs = \"x\"\nrhs = \"x\"\n";
+    let dir = catalogue("unreachable", text.as_bytes());
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_one_line_error(
+        &o,
+        &["t.toml", "t.c", "unreachable", "x > 2"],
+        "where x > 2",
+    );
+}
+
+// -- M4, M8, M9, M11, M18, M22, M24 and eval's output ---------------------------------
+
+#[test]
+fn m4_out_of_range_is_not_malformed() {
+    let o = run(&["verify", "--bits", "99999999999999999999999"]);
+    assert_one_line_error(&o, &["out of range"], "--bits 1e23");
+    assert!(!o.stderr.contains("malformed"), "{}", o.stderr);
+    let o = run(&["eval", "1e309"]);
+    assert_one_line_error(&o, &["1e309", "out of range", "overflows"], "eval 1e309");
+    let o = run(&["eval", "uniform(0, 1e309)"]);
+    assert!(!o.stderr.contains("malformed"), "{}", o.stderr);
+}
+
+#[test]
+fn m8_a_negative_precision_is_named() {
+    for cmd in ["verify", "eval", "jacobi"] {
+        let mut a = vec![cmd, "--bits", "-53"];
+        if cmd == "eval" {
+            a.push("1");
+        }
+        let o = run(&a);
+        assert_one_line_error(&o, &["-53"], &format!("{cmd} --bits -53"));
+        assert!(!o.stderr.contains("'-5'"), "{}", o.stderr);
+    }
+}
+
+#[test]
+fn m9_nesting_limit_is_stated_and_parentheses_count_once() {
+    let deep = |n: usize| format!("{}1{}", "(".repeat(n), ")".repeat(n));
+    let o = run(&["eval", &deep(150)]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(1.0),
+        "{}",
+        o.stderr
+    );
+    let o = run(&["eval", &deep(250)]);
+    assert_eq!(o.code, Some(2));
+    assert!(o.stderr.contains("more than 200 levels"), "{}", o.stderr);
+    let o = run(&["eval", "--", &format!("{}1", "-".repeat(201))]);
+    assert!(o.stderr.contains("more than 200 levels"), "{}", o.stderr);
+}
+
+#[test]
+fn m11_m18_m22_messages_name_the_cause() {
+    let o = run(&["eval", "sum(i,1,3,i)"]);
+    assert!(o.stderr.contains("imaginary unit"), "{}", o.stderr);
+    let o = run(&["eval", "step_gamma1(vec(0,0,0),0.1,3,2,1)"]);
+    assert_one_line_error(&o, &["M = 0"], "M18");
+    assert!(!o.stderr.contains("h too large"), "{}", o.stderr);
+    let o = run(&["eval", "pi", "--set", "pi=3"]);
+    assert_one_line_error(&o, &["pi", "constant"], "M22");
+}
+
+#[test]
+fn m24_one_precision_range_and_eval_output() {
+    // 2 bits: 0.3 rounds to 0.25 (binary 0.01)
+    let o = run(&["eval", "--bits", "2", "0.3"]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(0.25),
+        "{}",
+        o.stderr
+    );
+    let o = run(&["eval", "--bits", "1", "0.3"]);
+    assert_one_line_error(&o, &["2..=1048576"], "--bits 1");
+    // 17 digits read back to the same double
+    let o = run(&["eval", "0.1"]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(0.1),
+        "{}",
+        o.stdout
+    );
+    let o = run(&["eval", "1/3"]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(1.0 / 3.0),
+        "{}",
+        o.stdout
+    );
+    let o = run(&["eval", "cplx(1,-2)"]);
+    assert!(
+        o.stdout.contains(" - 2") && !o.stdout.contains("+ -"),
+        "{}",
+        o.stdout
+    );
+    let o = run(&["eval", "2i"]);
+    assert!(o.stderr.contains("2*i"), "{}", o.stderr);
+}
+
+// -- M12, M23: catalogue values and text ----------------------------------------------
+
+#[test]
+fn m12_range_errors_point_at_the_field_and_read_well() {
+    let text = format!("{CLAIM_HEAD}max_loss_bits = inf\nlhs = \"x\"\nrhs = \"x\"\n");
+    let dir = catalogue("loss-inf", text.as_bytes());
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    // the field is on line 10 of the file, its value from column 17
+    assert_data_error(
+        &o,
+        &["t.toml:10:17:", "finite", "inf"],
+        "max_loss_bits = inf",
+    );
+    let asym = "[[claim]]\nid = \"t.a\"\nlocation = \"test\"\nprinted = 'x'\n\
+        environment = \"Section 2\"\nrole = \"statement\"\nkind = \"asymptotic\"\n\
+        expect = \"holds\"\nvars = [[\"x\", \"uniform(1, 2)\"]]\nvar = \"h\"\n\
+        expr = \"h\"\norder = 1\nh0 = 1e-320\n";
+    let dir = catalogue("h0-tiny", asym.as_bytes());
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_eq!(o.code, Some(2), "{}", o.stderr);
+    assert!(o.stderr.len() < 400, "{}", o.stderr);
+    assert!(o.stderr.contains("h0"), "{}", o.stderr);
+}
+
+#[test]
+fn m23_control_characters_of_a_location_are_escaped() {
+    let text = "[[claim]]\nid = \"t.c\"\nlocation = \"loc\\u001b[31mred\"\nprinted = 'x'\n\
+        environment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\n\
+        expect = \"holds\"\nvars = [[\"x\", \"uniform(1, 2)\"]]\nlhs = \"x\"\nrhs = \"x\"\n";
+    let dir = catalogue("escape", text.as_bytes());
+    let o = run(&[
+        "verify",
+        "--bits",
+        "53",
+        "--catalogue",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(o.stdout.contains("loc\\u{1b}[31mred"), "{}", o.stdout);
+    assert!(!o.stdout.contains('\x1b'), "{:?}", o.stdout);
+}
+
+// -- M17: orbit near the separatrix ---------------------------------------------------
+
+#[test]
+fn m17_an_iterate_without_a_phase_does_not_stop_the_orbit() {
+    // M = (3, 1, √3) with inertia (3, 2, 1): 2E = 9/3 + 1/2 + 3 = 6.5, M² = 13, so
+    // 2E/M² = 1/2 = 1/B: the start is on the separatrix to the precision of the input
+    let dir = temp_dir("separatrix");
+    let args = [
+        "orbit",
+        "--inertia",
+        "3,2,1",
+        "--h",
+        "0.1",
+        "--gamma",
+        "1",
+        "--steps",
+        "200",
+        "--csv",
+        "o.csv",
+        "3",
+        "1",
+        "1.7320508075688772",
+    ];
+    let o = run_in(Some(&dir), &args, b"", Stdio::piped());
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    assert_eq!(o.stdout.lines().count(), 200);
+    // |M| is conserved by the map (the norm of every iterate stays √13)
+    for line in o.stdout.lines() {
+        let m: Vec<f64> = line
+            .split_whitespace()
+            .map(|x| x.parse().unwrap())
+            .collect();
+        let n = m.iter().map(|x| x * x).sum::<f64>();
+        assert!((n - 13.0).abs() < 1e-9, "{line}");
+    }
+    if !o.stderr.is_empty() {
+        assert_eq!(o.stderr.lines().count(), 1, "{}", o.stderr);
+        assert!(o.stderr.contains("phase is undefined"), "{}", o.stderr);
+    }
+    let csv = std::fs::read_to_string(dir.join("o.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 202);
+}
+
+// -- R4: a negative modulus ------------------------------------------------------------
+
+#[test]
+fn r4_sn_of_a_negative_modulus_is_that_of_its_absolute_value() {
+    // DLMF 22.17.1: sn, cn, dn depend on k² only
+    let o = run(&[
+        "eval",
+        "sn(0.5,-0.3) - sn(0.5,0.3) + cd(1.2,-0.9) - cd(1.2,0.9)",
+    ]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(0.0),
+        "{}",
+        o.stderr
+    );
+    let neg = jacobi_values(&["--bits", "128"], "0.5 -0.3\n");
+    let pos = jacobi_values(&["--bits", "128"], "0.5 0.3\n");
+    assert_eq!(neg, pos);
+}
+
+#[test]
+fn a_literal_that_underflows_is_not_silently_zero() {
+    let o = run(&["eval", "1.5e-324"]);
+    assert_one_line_error(&o, &["1.5e-324", "underflows", "53 bits"], "eval 1.5e-324");
+    // at 100 bits it is representable (MPFR's exponent range is far wider)
+    let o = run(&["eval", "--bits", "100", "1.5e-324 * 1e324"]);
+    let v: f64 = o.stdout.trim().parse().expect("a number");
+    assert!((v - 1.5).abs() < 1e-15, "{v}");
+    let o = run(&["eval", "0e5"]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(0.0),
+        "{}",
+        o.stderr
+    );
 }

@@ -122,39 +122,44 @@ fn errors_are_one_line_with_the_line_number() {
         (
             vec![],
             b"0.5 0.5\n1e309 0.5\n".to_vec(),
-            "line 2: u = 1e309 overflows",
+            "<stdin>:2:1: u = 1e309 overflows",
         ),
         (
             vec![],
             b"0.5 0.5\n\xff\xfe 0.5\n".to_vec(),
-            "line 2: not valid UTF-8",
+            "<stdin>:2:1: not valid UTF-8",
         ),
-        (vec![], long, "line 1: longer than 4096 bytes"),
+        (vec![], long, "<stdin>:1:1: longer than 4096 bytes"),
         (
             vec!["--functions", "ns"],
             b"0 0.5\n".to_vec(),
-            "line 1: pole",
+            "<stdin>:1:1: pole",
         ),
-        (vec![], b"0.5 -0.5\n".to_vec(), "line 1: modulus k = -5e-1"),
+        (
+            vec!["--complex"],
+            b"0.5 0.5 -0.5\n".to_vec(),
+            "<stdin>:1:9: modulus k = -5e-1",
+        ),
         (
             vec!["--complex", "--parameter"],
             b"".to_vec(),
             "not available",
         ),
-        (vec![], b"0.5 0.5\n0.1 0.2\n1 -1\n".to_vec(), "line 3:"),
-        (vec![], b"0.5 abc\n".to_vec(), "line 1:"),
-        (vec![], b"0.5\n".to_vec(), "line 1:"),
-        (vec!["--bits", "128"], b"0.5 -0.5\n".to_vec(), "line 1:"),
-        (vec!["--complex"], b"0.5 0.5\n".to_vec(), "line 1:"),
+        (vec![], b"0.5 0.5\n0.1 0.2\n1 x\n".to_vec(), "<stdin>:3:"),
+        (vec![], b"0.5 abc\n".to_vec(), "<stdin>:1:"),
+        (vec![], b"0.5\n".to_vec(), "<stdin>:1:"),
+        (vec!["--bits", "128"], b"0.5 -inf\n".to_vec(), "<stdin>:1:"),
+        (vec!["--complex"], b"0.5 0.5\n".to_vec(), "<stdin>:1:"),
     ];
     for (args, input, want) in cases {
         let (code, _, err) = run(&args, &input);
         assert_eq!(code, 2, "{want}: {err}");
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(err.len() < 200, "{err}");
-        // an error about an input line starts with its number
-        if let Some((line, _)) = want.split_once(':').filter(|(l, _)| l.starts_with("line ")) {
-            assert!(err.starts_with(&format!("eulertop: {line}:")), "{err}");
+        // an error about an input line starts with its position <stdin>:LINE:COL
+        if want.starts_with("<stdin>:") {
+            let pos = want.split(": ").next().unwrap_or(want);
+            assert!(err.starts_with(&format!("eulertop: {pos}")), "{err}");
         }
         assert!(err.contains(want), "{want}: {err}");
     }

@@ -175,6 +175,12 @@ pub fn jacobi_pick<T: Num>(
         return Err(format!("pole: sn(u, k) = 0 at u = {}", at(&a[0])));
     }
     let overflow = || format!("overflows at u = {}", at(&a[0]));
+    // at k = 1, cn = dn = sech u: cd = dc = 1 exactly, also where sech u underflows
+    let unit = (k.clone() - k.one()).is_zero()
+        && matches!((p, q), (Some(1), Some(2)) | (Some(2), Some(1)));
+    if unit && matches!(a[0], Value::Real(_)) {
+        return Ok(Value::Real(k.one()));
+    }
     if zero {
         return Err(overflow());
     }

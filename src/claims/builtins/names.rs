@@ -157,7 +157,7 @@ name_table! {
         Arg = "arg"("z"): Exact(1), "complex → real", Complex, Operator;
         /// a + b·i
         Cplx = "cplx"("a, b"): Exact(2), "real, real → complex", Complex, Name;
-        /// Jacobi sn (modulus k, not the parameter m = k²; real u: any k ≥ 0, complex u: 0 ≤ k < 1)
+        /// Jacobi sn (modulus k, not the parameter m = k²; real u: any real k, a negative one as |k| by DLMF 22.17.1; complex u: 0 ≤ k < 1)
         Sn = "sn"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
         /// Jacobi cn (modulus k)
         Cn = "cn"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
@@ -225,9 +225,9 @@ name_table! {
         Skew = "skew"("v"): Exact(1), "vec3 → mat3", Linear, Name;
         /// inverse of skew
         Unskew = "unskew"("X"): Exact(1), "mat3 → vec3", Linear, Name;
-        /// Σ of body over the integers k = a..=b (at most 100000 terms)
+        /// Σ of body over the integers k = a..=b (at most 100000 terms; 10⁶ nested)
         Sum = "sum"("k, a, b, body"): Exact(4), "name, integer, integer, T → T", Form, Tex::Form;
-        /// Π of body over the integers k = a..=b (at most 100000 terms)
+        /// Π of body over the integers k = a..=b (at most 100000 terms; 10⁶ nested)
         Prod = "prod"("k, a, b, body"): Exact(4), "name, integer, integer, T → T", Form, Tex::Form;
         /// derivative with respect to the real variable x, or with j to component j of the vec3 variable x (forward-mode automatic differentiation)
         D = "d"("expr, x[, j]"): OneOf(&[2, 3]), "real/vec3 expression, name[, integer] → same type", Form, Tex::Form;

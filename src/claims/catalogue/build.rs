@@ -66,10 +66,37 @@ impl Table<'_> {
     }
     /// A numeric field with its default and range.
     fn number(&self, field: &str, own: Option<f64>) -> Result<f64, LoadError> {
-        pick(field, own).map_err(|m| self.error(m))
+        pick(field, own).map_err(|m| self.field_error(field, m))
     }
     fn count(&self, field: &str, own: Option<usize>) -> Result<usize, LoadError> {
-        pick_count(field, own).map_err(|m| self.error(m))
+        pick_count(field, own).map_err(|m| self.field_error(field, m))
+    }
+    /// An error at the line `field = …` of this table (the value's text underlined),
+    /// or at the table where the field is not written there (an inherited value).
+    fn field_error(&self, field: &str, message: String) -> LoadError {
+        let text = &self.file.text;
+        let start = self.at.0.min(text.len());
+        // the table ends where the next one starts
+        let end = text[start + 1.min(text.len() - start)..]
+            .find("\n[")
+            .map_or(text.len(), |j| start + 1 + j);
+        let mut at = start;
+        for line in text[start..end].split_inclusive('\n') {
+            let t = line.trim_start();
+            if let Some(rest) = t.strip_prefix(field)
+                && rest.trim_start().starts_with('=')
+            {
+                let eq = at + (line.len() - t.len()) + field.len();
+                let value_start = eq + rest.find('=').map_or(0, |j| j + 1);
+                let value = &text[value_start..at + line.trim_end().len()];
+                let lead = value.len() - value.trim_start().len();
+                let v0 = value_start + lead;
+                let v1 = (v0 + value.trim().len()).max(v0 + 1).min(text.len());
+                return self.file.error_at(v0, v1, message);
+            }
+            at += line.len();
+        }
+        self.error(message)
     }
 }
 

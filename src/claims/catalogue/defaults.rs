@@ -120,8 +120,24 @@ pub fn pick(field: &str, own: Option<f64>) -> Result<f64, String> {
     let v = own.unwrap_or(d.value);
     if v.is_finite() && v >= d.min && v <= d.max {
         Ok(v)
+    } else if !v.is_finite() {
+        Err(format!(
+            "{field} must be a finite number {}, not {v}",
+            range(d)
+        ))
     } else {
-        Err(format!("{field} must be {}, not {v}", range(d)))
+        // a short form of very small or large values (1e-320, not 320 digits)
+        let shown = if v != 0.0 && !(1e-6..1e15).contains(&v.abs()) {
+            format!("{v:e}")
+        } else {
+            format!("{v}")
+        };
+        let sub = if v > 0.0 && v < f64::MIN_POSITIVE {
+            " (below the smallest normal double, 2.2e-308)"
+        } else {
+            ""
+        };
+        Err(format!("{field} must be {}, not {shown}{sub}", range(d)))
     }
 }
 

@@ -66,8 +66,8 @@ pub fn read_sources(path: &Path) -> Result<Vec<(String, String)>, LoadError> {
     let mut sources = Vec::new();
     for p in files {
         let name = p.display().to_string();
-        let bytes =
-            std::fs::read(&p).map_err(|e| LoadError::whole(&name, format!("cannot read: {e}")))?;
+        let bytes = source::read_regular(&p, source::MAX_TEXT_FILE_BYTES)
+            .map_err(|e| LoadError::whole(&name, e))?;
         let text = source::utf8(&name, bytes)?;
         sources.push((name, text));
     }

@@ -229,6 +229,72 @@ impl Located {
     }
 }
 
+/// The largest text file read whole: a catalogue file, a README, a LaTeX source (the
+/// largest catalogue file is under 100 KB).
+pub const MAX_TEXT_FILE_BYTES: u64 = 16 << 20;
+
+/// The bytes of the regular file `path` (a symbolic link is followed), refused before
+/// anything is read if it is not a regular file (a FIFO, a device, a directory) or is
+/// larger than `limit` bytes; the message names the cause, not the file.
+///
+/// ```
+/// use eulertop::claims::catalogue::source::read_regular;
+/// let e = read_regular(std::path::Path::new("/dev/zero"), 1 << 20).unwrap_err();
+/// assert!(e.contains("not a regular file"), "{e}");
+/// ```
+pub fn read_regular(path: &std::path::Path, limit: u64) -> Result<Vec<u8>, String> {
+    use std::io::Read;
+    let meta = std::fs::metadata(path).map_err(|e| format!("cannot read: {e}"))?;
+    let ft = meta.file_type();
+    if !ft.is_file() {
+        return Err(format!(
+            "not a regular file ({}); only regular files are read",
+            file_kind(&ft)
+        ));
+    }
+    let too_big = |n: u64| {
+        format!(
+            "{n} bytes, above the limit of {} MiB for a text file",
+            limit >> 20
+        )
+    };
+    if meta.len() > limit {
+        return Err(too_big(meta.len()));
+    }
+    let f = std::fs::File::open(path).map_err(|e| format!("cannot read: {e}"))?;
+    let mut bytes = Vec::new();
+    f.take(limit + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| format!("cannot read: {e}"))?;
+    if bytes.len() as u64 > limit {
+        // the file grew while it was read
+        return Err(too_big(bytes.len() as u64));
+    }
+    Ok(bytes)
+}
+
+/// What a file that is not a regular file is, for the message.
+fn file_kind(ft: &std::fs::FileType) -> &'static str {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if ft.is_fifo() {
+            return "a FIFO";
+        }
+        if ft.is_char_device() || ft.is_block_device() {
+            return "a device";
+        }
+        if ft.is_socket() {
+            return "a socket";
+        }
+    }
+    if ft.is_dir() {
+        "a directory"
+    } else {
+        "not a file"
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
