@@ -7,3 +7,4 @@ mod jacobi;
 mod model_cli;
 mod prove_cli;
 mod report_figures;
+mod seeds;
