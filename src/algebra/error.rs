@@ -30,8 +30,7 @@ pub enum AlgebraError {
     /// the outcome does not depend on the machine).
     #[error("an intermediate expression has {0} terms, above the prover's bound of {1}")]
     TooLarge(usize, usize),
-    /// The attempt ran out of its budget of time or memory (module
-    /// [`super::budget`]).
+    /// The attempt ran out of its budget of time or memory (see [`super::Budget`]).
     #[error("the proof exceeded its budget ({0})")]
     Budget(String),
     /// A derivative with respect to something that is not an indeterminate, or through

@@ -362,16 +362,21 @@ where
             opts.expand_named = true;
             continue;
         }
-        if let Some(c) = proof.certificate.as_mut() {
-            *c = c.replacen(
-                "# claim: lhs = rhs",
-                &format!("# claim: {}", title.replace('\n', " ")),
-                1,
-            );
-        }
         proof.ms = ms(&t0);
         proof.attempts = attempts;
-        proof.base_hints = opts.base_hints;
-        return proof;
+        return titled(proof, title, opts.base_hints);
     }
+}
+
+/// The finished proof: its certificate titled with the claim, and the bases it ended on.
+fn titled(mut proof: Proof, title: &str, base_hints: Vec<BaseHint>) -> Proof {
+    if let Some(c) = proof.certificate.as_mut() {
+        *c = c.replacen(
+            "# claim: lhs = rhs",
+            &format!("# claim: {}", title.replace('\n', " ")),
+            1,
+        );
+    }
+    proof.base_hints = base_hints;
+    proof
 }

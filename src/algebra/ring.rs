@@ -50,7 +50,7 @@ pub struct RingOptions {
     /// that the proof carries as sign symbols instead of splitting the domain by them
     /// (see [`Sym::folded_sign`](super::Sym)).
     pub sign_folds: Vec<super::split::SignSplit>,
-    /// The time and memory the attempt may take (module [`super::budget`]).
+    /// The time and memory the attempt may take (see [`super::Budget`]).
     pub budget: super::budget::Budget,
 }
 

@@ -106,3 +106,17 @@ fn a_sign_the_domain_fixes_is_proved_and_not_split() {
     assert!(!p.proved_signs.is_empty());
     assert!(p.hypotheses.is_empty(), "{:?}", p.hypotheses);
 }
+
+#[test]
+fn dn_of_a_real_argument_is_its_positive_root() {
+    // dn u > 0 for real u and 0 < k < 1: the branch of √(dn²) is proved, not sampled;
+    // cn changes sign on the same domain, and √(cn²) = cn is not proved
+    let vars = r#"vars = [["u", "uniform(-3, 3)"], ["k", "uniform(0.1, 0.9)"]]"#;
+    let text = identity_claim_with("t.dn", "control", vars, "sqrt(dn(u, k)^2)", "dn(u, k)")
+        + &identity_claim_with("t.cn", "control", vars, "sqrt(cn(u, k)^2)", "cn(u, k)");
+    let cat = controls_only(text);
+    let p = attempt(&cat, "t.dn");
+    assert!(p.is_proved(), "{:?}", p.reason);
+    assert!(p.notes.iter().any(|n| n.contains("dn(")), "{:?}", p.notes);
+    assert!(!attempt(&cat, "t.cn").is_proved());
+}
