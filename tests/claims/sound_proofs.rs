@@ -120,3 +120,14 @@ fn dn_of_a_real_argument_is_its_positive_root() {
     assert!(p.notes.iter().any(|n| n.contains("dn(")), "{:?}", p.notes);
     assert!(!attempt(&cat, "t.cn").is_proved());
 }
+
+#[test]
+fn a_nonzero_normal_form_is_not_called_zero_at_the_points() {
+    // 500x − 1 with x ∈ (1, 2): a long sum's carried error scale once made it look 0
+    let vars = r#"vars = [["x", "uniform(1, 2)"]]"#;
+    let text = identity_claim_with("t.long-sum", "control", vars, "sum(n, 1, 500, x)", "1");
+    let p = attempt(&controls_only(text), "t.long-sum");
+    assert!(!p.is_proved());
+    let why = p.reason.unwrap_or_default();
+    assert!(why.contains("differ at domain point"), "{why}");
+}
