@@ -9,13 +9,18 @@
 //! **Proved signs.**  A value `N/D` has the sign of `N` times that of `D`.  The sign of
 //! a polynomial is proved, in this order,
 //! 1. by the parametrization of the domain by positive parameters (module
-//!    [`super::positivity`]), where the positive square roots count as parameters;
+//!    [`super::positivity`]), where the positive square roots count as parameters, and
+//!    `sn²` of a real base argument as a parameter in `[0, 1]`; where that proves
+//!    nothing, by the box of the sampled intervals (the parametrization's alternative);
 //! 2. where the polynomial is `a + b·r` in its most significant square root `r` (the
 //!    positive root of a radicand proved positive): from the signs of `a` and `b`, and,
 //!    where they differ, from the sign of `a² − b²·r²` (the side that wins), each proved
 //!    the same way;
 //! 3. where it is `b·σ` for a sign symbol `σ = sign(x)` and `x` divides `b`: from the sign
 //!    of `b/x`, since `σ·x > 0`.
+//!
+//! A value is also proved of one sign when it is a fact's value (`dn u > 0` for a real
+//! argument, module `elliptic_facts`) times a factor proved as above.
 //!
 //! ```
 //! use eulertop::algebra::{Ring, RingOptions};
