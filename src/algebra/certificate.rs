@@ -175,7 +175,7 @@ impl Ring {
             let rel = if *s > 0 { ">" } else { "<" };
             let _ = writeln!(out, "# part of the domain (hypothesis): {} {rel} 0", h.what);
         }
-        for f in &self.state().folded {
+        for f in &self.state().signs.folded {
             let _ = writeln!(
                 out,
                 "# sign symbol (definition): {} = sign({}), so {} > 0",
@@ -202,7 +202,7 @@ impl Ring {
                 .filter(|r| r.is_positive())
                 .map(|r| r.name.clone())
                 .collect();
-            (st.proved_signs.clone(), vars, roots)
+            (st.signs.proved_signs.clone(), vars, roots)
         };
         let Some(par) = self
             .inner

@@ -181,7 +181,7 @@ impl Ring {
             return None;
         }
         let (var, s) =
-            (self.state().folded.iter()).find_map(|f| (f.root == i).then_some(f.var))??;
+            (self.state().signs.folded.iter()).find_map(|f| (f.root == i).then_some(f.var))??;
         let x = Poly::var(b.ctx(), var);
         let quotient = b.divides(&x).ok()??;
         // b·σ = (b/x)·(σ·x), and σ·x has the sign s by the definition of σ
@@ -198,10 +198,10 @@ impl Sym {
     /// value `x` ([`Sym::folded_sign`]): the definition of `σ`.
     pub(crate) fn defined_sign(&self) -> Option<i32> {
         let st = self.ring.state();
-        if st.folded.is_empty() {
+        if st.signs.folded.is_empty() {
             return None;
         }
-        let defs: Vec<String> = st.folded.iter().map(|f| f.positive.clone()).collect();
+        let defs: Vec<String> = st.signs.folded.iter().map(|f| f.positive.clone()).collect();
         drop(st);
         let text = self.render();
         if defs.contains(&text) {
@@ -217,7 +217,7 @@ impl Sym {
     /// negative).
     pub(crate) fn hypothesis_sign(&self) -> Option<(i32, String)> {
         let parts = &self.ring.options().hypotheses;
-        let stated = self.ring.state().stated.clone();
+        let stated = self.ring.state().signs.stated.clone();
         if parts.is_empty() && stated.is_empty() {
             return None;
         }
@@ -290,6 +290,6 @@ impl Ring {
     pub fn state_hypothesis(&self, value: &Sym, sign: i32, label: String) {
         let val = (*value.val).clone();
         let mut st = self.state();
-        st.stated.push((val, sign, label));
+        st.signs.stated.push((val, sign, label));
     }
 }

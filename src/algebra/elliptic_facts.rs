@@ -23,7 +23,7 @@ impl Ring {
     /// (the phase step `δ` of a map's parametrization, with `h` solved from it).
     pub fn declare_real(&self, v: &Sym) {
         if let Some(j) = v.as_field_var() {
-            self.state().real_opaque.push(j);
+            self.state().signs.real_opaque.push(j);
         }
     }
 
@@ -33,7 +33,7 @@ impl Ring {
     pub(crate) fn note_dn_positive(&self, t: usize, arg: &Val, d: &Val, what: &str) -> bool {
         let real_base = self.real_modulus(t) && self.is_real(arg, 0);
         if real_base {
-            self.state().facts.push((
+            self.state().signs.facts.push((
                 d.clone(),
                 format!("dn({what}) > 0: a real argument, 0 < k² < 1 (DLMF 22.4.1)"),
             ));
@@ -50,7 +50,8 @@ impl Ring {
         d: &Val,
         what: impl FnOnce() -> String,
     ) {
-        let known = (self.state().facts.iter()).any(|(f, _)| f.num == d.num && f.den == d.den);
+        let known =
+            (self.state().signs.facts.iter()).any(|(f, _)| f.num == d.num && f.den == d.den);
         if known || d.num.len() > 64 || !self.real_modulus(t) || !self.is_real(u, 0) {
             return;
         }
@@ -58,7 +59,7 @@ impl Ring {
             "dn({}) > 0: a real argument, 0 < k² < 1 (DLMF 22.4.1)",
             what()
         );
-        self.state().facts.push((d.clone(), reason));
+        self.state().signs.facts.push((d.clone(), reason));
     }
 
     /// Is the modulus of table `t` real with `0 < k² < 1` (proved)?
@@ -121,14 +122,14 @@ impl Ring {
                 (self.state().tables[table].bases.get(base)).is_some_and(|b| b.real)
             }
             VarKind::QuarterK { table } | VarKind::QuarterKp { table } => self.real_modulus(table),
-            VarKind::Opaque { .. } => self.state().real_opaque.contains(&j),
+            VarKind::Opaque { .. } => self.state().signs.real_opaque.contains(&j),
         }
     }
 
     /// The sign of `x` by a fact of the theory: `x` is a fact's value times a factor of
     /// proved sign.
     pub(crate) fn fact_sign(&self, x: &Sym) -> Option<i32> {
-        let facts = self.state().facts.clone();
+        let facts = self.state().signs.facts.clone();
         for (val, why) in facts {
             let f = Sym::from_val(self, val, None);
             let Ok(q) = x.try_div(&f) else { continue };

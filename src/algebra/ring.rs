@@ -14,6 +14,7 @@ use super::error::{AlgResult, AlgebraError};
 use super::flint::{Ctx, Poly};
 use super::node::Node;
 use super::shadow::Shadow;
+use super::sign_state::SignState;
 use super::square_classes::FactorBasis;
 use super::val::Val;
 use rug::{Assign, Complex, Float, Rational};
@@ -42,14 +43,14 @@ pub struct RingOptions {
     pub base_hints: Vec<super::base_table::BaseHint>,
     /// A parametrization of the domain with which signs are proved (module
     /// [`super::positivity`]): the signs that `abs` and `sign` in a claim's formulas take.
-    pub positivity: Option<Arc<super::positivity::Parametrization>>,
+    pub positivity: Option<Arc<super::parametrization::Parametrization>>,
     /// The signs that define the part of the domain the proof is on (module
     /// [`super::split`]): a value equal to one of them, or to its negative, has that sign.
-    pub hypotheses: Vec<(super::split::SignSplit, i32)>,
+    pub hypotheses: Vec<(super::sign_state::SignSplit, i32)>,
     /// Values of the claim's indeterminates whose sign differs between domain points and
     /// that the proof carries as sign symbols instead of splitting the domain by them
     /// (see [`Sym::folded_sign`](super::Sym)).
-    pub sign_folds: Vec<super::split::SignSplit>,
+    pub sign_folds: Vec<super::sign_state::SignSplit>,
     /// The time and memory the attempt may take (see [`super::Budget`]).
     pub budget: super::budget::Budget,
 }
@@ -222,9 +223,6 @@ pub(crate) struct State {
     pub assumptions: Vec<Assumption>,
     /// Steps the certificate format does not record (a proof with one has no certificate).
     pub uncertified: Vec<String>,
-    /// Signs proved with the parametrization of the domain, with the derivation of each
-    /// value (for certificates).
-    pub proved_signs: Vec<(Option<Arc<Node>>, i32, String)>,
     pub notes: Vec<String>,
     pub error: Option<AlgebraError>,
     pub origin: Origin,
@@ -247,43 +245,13 @@ pub(crate) struct State {
     /// The symbol `Z = E(am v, k) − k'² v` of an opaque symbol `v` with prescribed sn, cn,
     /// dn, by the field variable of `v` (for its derivative when the modulus varies).
     pub opaque_zeta: std::collections::BTreeMap<usize, usize>,
-    /// The first sign that differed between domain points (module [`super::split`]).
-    pub undecided: Option<super::split::SignSplit>,
     /// The change of variables of a parametrization, for derivatives.
     pub coordinates: Option<Coordinates>,
     /// [`Inner::var_values`] as last built; emptied when a variable or root is added or
     /// a root's values change.
     pub values_table: Option<Arc<Vec<Vec<Complex>>>>,
-    /// The sign symbols made for [`RingOptions::sign_folds`]: the folded value (rendered),
-    /// the symbol's name and root index, and `σ·x` rendered (positive by definition).
-    pub folded: Vec<Folded>,
-    /// The outcome of the sign test with the parametrization of the domain, by value
-    /// (numerator, denominator); emptied when a root's values change.
-    pub sign_memo: std::collections::HashMap<(Poly, Poly), Option<i32>>,
-    /// The hypotheses the claim states: a value, its sign, and the hypothesis' label
-    /// (see [`Ring::state_hypothesis`]).
-    pub stated: Vec<(Val, i32, String)>,
-    /// Values positive by a theorem (`dn` of a real argument), with the reason.
-    pub facts: Vec<(Val, String)>,
-    /// Opaque symbols declared real (by field-variable index).
-    pub real_opaque: Vec<usize>,
-}
-
-/// A sign symbol `σ = sign(x)` made for a folded value `x` (see
-/// [`RingOptions::sign_folds`]).
-#[derive(Clone, Debug)]
-pub(crate) struct Folded {
-    /// `x`, rendered.
-    pub value: String,
-    /// The symbol's name (`sgnx`).
-    pub name: String,
-    /// The symbol's root index.
-    pub root: usize,
-    /// `σ·x`, rendered: positive at every point, by the definition of `σ`.
-    pub positive: String,
-    /// The indeterminate of `x` (its context variable) and the sign of `σ` times it,
-    /// by the definition of `σ` (`x` is a constant multiple of the indeterminate).
-    pub var: Option<(usize, i32)>,
+    /// The sign-only state: proved signs, stated hypotheses, facts, sign symbols.
+    pub signs: SignState,
 }
 
 pub(crate) struct Inner {
@@ -332,7 +300,6 @@ impl Ring {
             tables: Vec::new(),
             assumptions: Vec::new(),
             uncertified: Vec::new(),
-            proved_signs: Vec::new(),
             notes: Vec::new(),
             error: None,
             origin: Origin::Claim,
@@ -348,13 +315,8 @@ impl Ring {
             capacity_hit: false,
             opaque_args: std::collections::BTreeMap::new(),
             opaque_zeta: std::collections::BTreeMap::new(),
-            undecided: None,
             values_table: None,
-            folded: Vec::new(),
-            sign_memo: std::collections::HashMap::new(),
-            stated: Vec::new(),
-            facts: Vec::new(),
-            real_opaque: Vec::new(),
+            signs: SignState::default(),
         };
         Ring {
             inner: Arc::new(Inner {
@@ -412,12 +374,16 @@ impl Ring {
     /// The signs proved with the parametrization of the domain (`x > 0`), in order.
     pub fn proved_signs(&self) -> Vec<String> {
         let st = self.state();
-        st.proved_signs.iter().map(|(_, _, s)| s.clone()).collect()
+        st.signs
+            .proved_signs
+            .iter()
+            .map(|(_, _, s)| s.clone())
+            .collect()
     }
 
     /// The parametrization of the domain, for the reader, when a sign was proved with it.
     pub fn parametrization(&self) -> Option<String> {
-        let used = !self.state().proved_signs.is_empty();
+        let used = !self.state().signs.proved_signs.is_empty();
         (self.inner.opts.positivity.as_ref())
             .filter(|_| used)
             .map(|p| p.describe())

@@ -371,7 +371,7 @@ impl Ring {
             }
         }
         st.values_table = None;
-        st.sign_memo.clear();
+        st.signs.sign_memo.clear();
     }
 
     /// The shadow of `v` evaluated afresh from its normal form at the points' values,

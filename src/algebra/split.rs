@@ -15,24 +15,12 @@
 
 use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
-use super::ring::{Folded, Ring, VarKind};
+use super::ring::{Ring, VarKind};
+use super::sign_state::Folded;
+pub use super::sign_state::SignSplit;
 use super::sym::Sym;
 use rug::ops::Pow;
 use rug::{Complex, Float};
-
-/// A rational function of the claim's indeterminates whose sign is not constant on the
-/// domain.
-#[derive(Clone, Debug)]
-pub struct SignSplit {
-    /// The value as the prover renders it (cut to a readable length).
-    pub what: String,
-    /// The whole rendering, by which a later ring recognises the value.
-    pub(crate) text: String,
-    num: Poly,
-    den: Poly,
-    /// The names of the context's variables (indeterminates by name, others empty).
-    names: Vec<String>,
-}
 
 /// Precision of the evaluation of a split's sign at a point.
 const PREC: u32 = 128;
@@ -174,15 +162,15 @@ impl Ring {
     /// The first sign that differed between domain points in this ring, when it can
     /// split the domain (see [`SignSplit`]).
     pub fn undecided_sign(&self) -> Option<SignSplit> {
-        self.state().undecided.clone()
+        self.state().signs.undecided.clone()
     }
 
     /// Remembers the first undecided sign of the ring that can split the domain.
     pub(crate) fn note_undecided(&self, x: &Sym) {
-        if self.state().undecided.is_none()
+        if self.state().signs.undecided.is_none()
             && let Some(split) = x.split()
         {
-            self.state().undecided = Some(split);
+            self.state().signs.undecided = Some(split);
         }
     }
 }
@@ -212,6 +200,7 @@ impl Sym {
         let known = self
             .ring
             .state()
+            .signs
             .folded
             .iter()
             .find(|f| f.value == fold.text)
@@ -237,7 +226,7 @@ impl Sym {
                         AlgebraError::Internal("a sign symbol that is not a root".into())
                     })?;
                 let var = x.single_indeterminate();
-                self.ring.state().folded.push(Folded {
+                self.ring.state().signs.folded.push(Folded {
                     value: fold.text.clone(),
                     name: name.clone(),
                     root,

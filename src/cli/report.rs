@@ -4,6 +4,7 @@
 
 use super::CliError;
 use super::verify::{load, parse_bits, run_with_progress};
+use crate::claims::catalogue::source::read_text;
 use crate::claims::verdict::{ClaimResult, Options};
 use crate::report::{Convention, ReportInput, Section, write_reports};
 use clap::Parser;
@@ -57,15 +58,6 @@ pub fn parse_newcommands(tex: &str) -> BTreeMap<String, String> {
         }
     }
     m
-}
-
-/// The text of a regular file of at most
-/// [`MAX_TEXT_FILE_BYTES`](crate::claims::catalogue::source::MAX_TEXT_FILE_BYTES), as UTF-8.
-pub fn read_text(path: &Path) -> Result<String, String> {
-    use crate::claims::catalogue::source::{MAX_TEXT_FILE_BYTES, read_regular};
-    let bytes = read_regular(path, MAX_TEXT_FILE_BYTES)?;
-    String::from_utf8(bytes)
-        .map_err(|e| format!("not UTF-8 (byte {})", e.utf8_error().valid_up_to()))
 }
 
 /// [`read_text`] of a file the catalogue may leave out: `None` when it does not exist.

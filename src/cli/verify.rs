@@ -189,7 +189,7 @@ pub fn check_domains_reachable(
 pub fn paper_labels() -> Result<Vec<String>, CliError> {
     if let Some(p) = std::env::var_os("EULERTOP_PAPER") {
         let shown = Path::new(&p).display().to_string();
-        let t = super::report::read_text(Path::new(&p))
+        let t = crate::claims::catalogue::source::read_text(Path::new(&p))
             .map_err(|e| CliError(format!("EULERTOP_PAPER={shown}: {e}")))?;
         let l = latex_labels(&t);
         if l.is_empty() {

@@ -295,6 +295,19 @@ fn file_kind(ft: &std::fs::FileType) -> &'static str {
     }
 }
 
+/// The text of a regular file of at most [`MAX_TEXT_FILE_BYTES`], as UTF-8.
+///
+/// ```
+/// use eulertop::claims::catalogue::source::read_text;
+/// let e = read_text(std::path::Path::new("/dev/zero")).unwrap_err();
+/// assert!(e.contains("not a regular file"), "{e}");
+/// ```
+pub fn read_text(path: &std::path::Path) -> Result<String, String> {
+    let bytes = read_regular(path, MAX_TEXT_FILE_BYTES)?;
+    String::from_utf8(bytes)
+        .map_err(|e| format!("not UTF-8 (byte {})", e.utf8_error().valid_up_to()))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

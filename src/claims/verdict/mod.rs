@@ -25,7 +25,6 @@ pub mod negation;
 mod positivity;
 pub mod proof_info;
 pub mod result;
-mod split;
 pub mod symbolic;
 pub mod vacuity;
 

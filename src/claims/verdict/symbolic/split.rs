@@ -5,28 +5,20 @@
 //! sign's value is 0.  At most [`MAX_SPLITS`] nested splits per case; a claim that
 //! states a condition is not split (its signs must be proved, never assumed per part).
 
-use super::context::Ctx;
-use super::symbolic::{MAX_DRAWS, POINTS, Role, Signs, case_key, prove_case};
+use super::case::{Region, Signs, prove_case};
+use super::cases::{MAX_DRAWS, POINTS, Role, case_key};
 use crate::algebra::split::SignSplit;
 use crate::algebra::{BaseHint, Proof};
 use crate::claims::catalogue::PExpr;
 use crate::claims::sampler::{Point, Stream};
 use crate::claims::value::Value;
+use crate::claims::verdict::context::Ctx;
 
 /// The most nested splits of one case.
-const MAX_SPLITS: usize = 3;
+pub(super) const MAX_SPLITS: usize = 3;
 
 /// The most indeterminates whose signs one proof carries as sign symbols.
-const MAX_FOLDS: usize = 3;
-
-/// The conditions of a part of the domain: the signs that hold on it, and the
-/// indeterminates whose signs the proof carries as sign symbols instead of splitting by
-/// them ([`crate::algebra::RingOptions::sign_folds`]).
-#[derive(Clone, Default)]
-pub(super) struct Region {
-    pub signs: Vec<(SignSplit, i32)>,
-    pub folds: Vec<SignSplit>,
-}
+pub(super) const MAX_FOLDS: usize = 3;
 
 /// A part of the domain with its proof: the labels of its case and of its signs.
 pub(super) type Part = (Vec<String>, Proof);
@@ -59,7 +51,7 @@ pub(super) fn prove_parts(
     )
 }
 
-fn parts(
+pub(super) fn parts(
     input: &CaseInput<'_, '_>,
     case: &[String],
     label: Vec<String>,
@@ -115,7 +107,7 @@ fn parts(
 }
 
 /// [`POINTS`] points of the case on which every sign condition holds.
-fn draw(
+pub(super) fn draw(
     input: &CaseInput<'_, '_>,
     case: &[String],
     conds: &[(SignSplit, i32)],
@@ -147,7 +139,7 @@ fn draw(
 
 /// The value of an indeterminate at a point: a real variable, or a component `M2` of a
 /// vector variable `M`.
-fn value_of(p: &Point, name: &str) -> Option<f64> {
+pub(super) fn value_of(p: &Point, name: &str) -> Option<f64> {
     if let Some(Value::Real(x)) = p.get(name) {
         return Some(*x);
     }

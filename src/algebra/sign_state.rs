@@ -1,0 +1,70 @@
+//! The sign-only state of a ring: the signs its proof has proved (with the derivation
+//! of each value, for certificates), the signs the claim states, the facts of the
+//! theory (`dn > 0` of a real argument), the sign symbols of folded values, the first
+//! sign left undecided, and the memo of the sign test.  Module [`super::decide`] reads
+//! and writes it; the rest of the ring state knows nothing of signs.
+//!
+//! ```
+//! use eulertop::algebra::{Ring, RingOptions};
+//! let ring = Ring::new(RingOptions { points: 1, ..Default::default() });
+//! assert!(ring.proved_signs().is_empty());
+//! ```
+
+use super::flint::Poly;
+use super::node::Node;
+use super::val::Val;
+use std::sync::Arc;
+
+/// A rational function of the claim's indeterminates whose sign is not constant on the
+/// domain (module [`super::split`]).
+#[derive(Clone, Debug)]
+pub struct SignSplit {
+    /// The value as the prover renders it (cut to a readable length).
+    pub what: String,
+    /// The whole rendering, by which a later ring recognises the value.
+    pub(crate) text: String,
+    pub(crate) num: Poly,
+    pub(crate) den: Poly,
+    /// The names of the context's variables (indeterminates by name, others empty).
+    pub(crate) names: Vec<String>,
+}
+
+/// A sign symbol `σ = sign(x)` made for a folded value `x` (see
+/// [`RingOptions::sign_folds`](super::RingOptions::sign_folds)).
+#[derive(Clone, Debug)]
+pub(crate) struct Folded {
+    /// `x`, rendered.
+    pub value: String,
+    /// The symbol's name (`sgnx`).
+    pub name: String,
+    /// The symbol's root index.
+    pub root: usize,
+    /// `σ·x`, rendered: positive at every point, by the definition of `σ`.
+    pub positive: String,
+    /// The indeterminate of `x` (its context variable) and the sign of `σ` times it,
+    /// by the definition of `σ` (`x` is a constant multiple of the indeterminate).
+    pub var: Option<(usize, i32)>,
+}
+
+/// The sign-only state of a ring (see the module).
+#[derive(Default)]
+pub(crate) struct SignState {
+    /// Signs proved with the parametrization of the domain, with the derivation of each
+    /// value (for certificates).
+    pub proved_signs: Vec<(Option<Arc<Node>>, i32, String)>,
+    /// The first sign that differed between domain points (module [`super::split`]).
+    pub undecided: Option<SignSplit>,
+    /// The sign symbols made for [`RingOptions::sign_folds`](super::RingOptions::sign_folds): the folded value (rendered),
+    /// the symbol's name and root index, and `σ·x` rendered (positive by definition).
+    pub folded: Vec<Folded>,
+    /// The outcome of the sign test with the parametrization of the domain, by value
+    /// (numerator, denominator); emptied when a root's values change.
+    pub sign_memo: std::collections::HashMap<(Poly, Poly), Option<i32>>,
+    /// The hypotheses the claim states: a value, its sign, and the hypothesis' label
+    /// (see [`Ring::state_hypothesis`](super::Ring::state_hypothesis)).
+    pub stated: Vec<(Val, i32, String)>,
+    /// Values positive by a theorem (`dn` of a real argument), with the reason.
+    pub facts: Vec<(Val, String)>,
+    /// Opaque symbols declared real (by field-variable index).
+    pub real_opaque: Vec<usize>,
+}

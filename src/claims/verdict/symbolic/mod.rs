@@ -1,0 +1,318 @@
+//! Symbolic proofs of identities: the claim's formulas evaluated exactly in the prover's
+//! tower ([`crate::algebra`]), and `lhs − rhs` reduced to its normal form.  A claim is
+//! `proved` when that normal form is 0, and only then.
+//!
+//! **Variables.**  A sampled variable whose definition draws a continuous primitive
+//! (`uniform`, `randint`, `normal`) becomes an indeterminate (one per component of a
+//! vec3): an identity proved for independent indeterminates holds in particular on the
+//! sampled domain.  A variable drawn only by `sign()` or `choice(…)` takes finitely many
+//! values: the proof enumerates them as cases and every case must be proved.  A variable
+//! without primitives is evaluated symbolically from the earlier ones.
+//!
+//! **Decisions.**  Comparisons, `abs`, `sign`, `min`, `max`, the branch of a square
+//! root, the condition of an `if` and the choice of a regime are decided as
+//! [`crate::algebra::Decision`]s: proved on the domain (its parametrization by
+//! positive parameters, module `positivity`), given by a hypothesis the claim states
+//! (field `hypotheses`), fixed by the definition of a sign symbol, or by the part of a
+//! split domain the proof is on.  The values at the domain points never decide one: a
+//! sign that none of these decides splits the domain by it (module `split`), or leaves
+//! the claim unproved with that sign as the reason.
+//! A comparison yields a truth value, which only an `if` can use.
+//!
+//! ```
+//! use eulertop::bindings::euler_top::registry;
+//! use eulertop::claims::catalogue::load_sources;
+//! use eulertop::claims::verdict::{run_claim, Options, ProofMethod, Verdict};
+//! let toml = r#"
+//! [[claim]]
+//! id = "double-angle"
+//! environment = "Section 2"
+//! role = "statement"
+//! labels = []
+//! location = "a doc example"
+//! printed = 'sn(2u)'
+//! kind = "identity"
+//! expect = "proved"
+//! vars = [["u", "uniform(-1, 1)"], ["k", "uniform(0.1, 0.9)"]]
+//! lhs = "sn(2*u, k)"
+//! rhs = "2*sn(u, k)*cn(u, k)*dn(u, k) / (1 - k^2*sn(u, k)^4)"
+//! "#;
+//! let cat = load_sources(&[("doc.toml".into(), toml.into())], registry().unwrap()).unwrap();
+//! let r = run_claim(&cat, &cat.claims[0], &Options::default());
+//! assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+//! assert_eq!(r.proof.method, ProofMethod::Symbolic);
+//! ```
+
+mod binding;
+mod case;
+mod cases;
+mod linear;
+mod scope;
+mod split;
+
+use super::context::Ctx;
+pub use super::proof_info::{ProofInfo, ProofMethod};
+use super::result::Evidence;
+use crate::algebra::{Outcome, Proof};
+use crate::claims::catalogue::PExpr;
+use crate::claims::kind::Verdict;
+use crate::claims::sampler::{Point, Stream};
+use crate::claims::value::Value;
+use case::{Signs, prove_case};
+use cases::{Cases, Role, case_points, role_of};
+use scope::{iteration, not_analytic, states_condition};
+use std::time::Instant;
+
+/// Attempts a symbolic proof of `lhs = rhs` on the claim's domain.
+pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> ProofInfo {
+    let t0 = Instant::now();
+    let condition = states_condition(ctx, &[lhs, rhs]);
+    let sampler = match ctx.sampler(Stream::Proof) {
+        Ok(s) => s,
+        Err(c) => return ProofInfo::none(c.to_string()),
+    };
+    if let Some(why) = not_analytic(ctx, sampler.variables(), &[lhs, rhs]) {
+        return ProofInfo::none(why);
+    }
+    if let Some(why) = iteration(ctx, &[lhs, rhs]) {
+        return ProofInfo::none(why);
+    }
+    let signs = Signs {
+        positivity: super::positivity::parametrization(sampler.variables()),
+    };
+    if let (Some(why), None) = (&condition, &signs.positivity) {
+        return ProofInfo::none(format!(
+            "{why} (no variable of its domain can be parametrized to prove signs)"
+        ));
+    }
+    let plain: Vec<(String, (Role, usize))> = sampler
+        .variables()
+        .iter()
+        .map(|(n, p)| (n.clone(), role_of(p)))
+        .collect();
+    let roles: Vec<(String, Role, &PExpr)> = sampler
+        .variables()
+        .iter()
+        .zip(&plain)
+        .map(|((n, p), (_, (r, _)))| (n.clone(), r.clone(), *p))
+        .collect();
+    let cases = match case_points(ctx, &plain) {
+        Ok(c) if !c.is_empty() => c,
+        Ok(_) => return ProofInfo::none("no case of the domain has enough points"),
+        Err(m) => return ProofInfo::none(m),
+    };
+    if let Some(mut joint) =
+        prove_signs_jointly(ctx, &roles, &cases, (lhs, rhs), (certificate, &signs))
+    {
+        joint.ms = t0.elapsed().as_secs_f64() * 1e3;
+        return with_lemmas(ctx, joint);
+    }
+    let mut info = ProofInfo::none("");
+    info.reason = None;
+    info.method = ProofMethod::Symbolic;
+    let mut hints = Vec::new();
+    let input = split::CaseInput {
+        ctx,
+        roles: &roles,
+        sides: (lhs, rhs),
+        certificate,
+        signs: &signs,
+    };
+    for (key, points) in &cases {
+        // the cases differ in signs only: the bases that served one serve the next
+        match split::prove_parts(&input, key, points.clone(), hints.clone()) {
+            Ok(parts) => {
+                for (label, p) in parts {
+                    hints = p.base_hints.clone();
+                    merge(ctx, &mut info, &label, p);
+                }
+            }
+            Err(part) => {
+                let (label, p) = *part;
+                merge(ctx, &mut info, &label, p);
+                break;
+            }
+        }
+    }
+    info.ms = t0.elapsed().as_secs_f64() * 1e3;
+    with_lemmas(ctx, info)
+}
+
+/// A proof that rests on lemmas stands only when they are proved.
+fn with_lemmas(ctx: Ctx<'_>, info: ProofInfo) -> ProofInfo {
+    let lemmas = super::lemmas::lemmas(ctx);
+    if !info.is_proved() || lemmas.is_empty() {
+        return info;
+    }
+    match super::lemmas::check(ctx, &lemmas, prove) {
+        Ok(()) => info,
+        Err(why) => ProofInfo {
+            ms: info.ms,
+            ..ProofInfo::none(why)
+        },
+    }
+}
+
+/// One proof for every sign case at once, where the case variables take the values ±1
+/// only: they become sign symbols (σ² = 1), and the points of all cases serve as the
+/// domain points.  `None` when this does not apply or does not prove the claim (the
+/// cases are then enumerated).
+fn prove_signs_jointly(
+    ctx: Ctx<'_>,
+    roles: &[(String, Role, &PExpr)],
+    cases: &Cases,
+    sides: (&PExpr, &PExpr),
+    certificate: (bool, &Signs),
+) -> Option<ProofInfo> {
+    let points: Vec<Point> = cases.values().flatten().cloned().collect();
+    let is_sign = |name: &str| {
+        points.iter().all(|p| match p.get(name) {
+            Some(Value::Real(x)) => *x == 1.0 || *x == -1.0,
+            _ => false,
+        })
+    };
+    let signs: Vec<&str> = roles
+        .iter()
+        .filter(|(_, r, _)| *r == Role::Case)
+        .map(|(n, _, _)| n.as_str())
+        .collect();
+    if cases.len() < 2 || !signs.iter().all(|n| is_sign(n)) {
+        return None;
+    }
+    let joint: Vec<(String, Role, &PExpr)> = roles
+        .iter()
+        .map(|(n, r, p)| {
+            let r = if *r == Role::Case {
+                Role::Sign
+            } else {
+                r.clone()
+            };
+            (n.clone(), r, *p)
+        })
+        .collect();
+    let region = case::Region::default();
+    let p = prove_case(
+        ctx,
+        &joint,
+        &points,
+        sides,
+        certificate,
+        Vec::new(),
+        &region,
+    );
+    if !matches!(p.outcome, Outcome::Proved) {
+        return None;
+    }
+    let mut info = ProofInfo::none("");
+    info.reason = None;
+    info.method = ProofMethod::Symbolic;
+    merge(ctx, &mut info, &[], p);
+    info.notes.push(format!(
+        "{} {} sign symbols: one normal form covers all {} sign cases",
+        signs.join(", "),
+        if signs.len() == 1 { "is a" } else { "are" },
+        cases.len()
+    ));
+    Some(info)
+}
+
+/// Adds one case's proof to the record; a case that is not proved ends the proof.
+fn merge(ctx: Ctx<'_>, info: &mut ProofInfo, key: &[String], p: Proof) {
+    let label = key.join(", ");
+    if let Outcome::NotProved(r) = &p.outcome {
+        info.method = ProofMethod::None;
+        info.reason = Some(if label.is_empty() {
+            r.clone()
+        } else {
+            format!("case {label}: {r}")
+        });
+    }
+    if !label.is_empty() {
+        info.cases.push(label.clone());
+    }
+    let add = |dst: &mut Vec<String>, src: Vec<String>| {
+        for s in src {
+            if !dst.contains(&s) {
+                dst.push(s);
+            }
+        }
+    };
+    add(
+        &mut info.symbols,
+        p.symbols.iter().map(|(n, w)| format!("{n}: {w}")).collect(),
+    );
+    add(&mut info.relations, p.relations.clone());
+    add(&mut info.notes, p.notes.clone());
+    add(&mut info.proved_signs, p.proved_signs.clone());
+    add(&mut info.uncertified, p.uncertified.clone());
+    if info.parametrization.is_none() {
+        info.parametrization = p.parametrization.clone();
+    }
+    match super::hypotheses::uses(ctx, &p.assumptions) {
+        Ok(uses) => {
+            for u in uses {
+                if !info.hypotheses.contains(&u) {
+                    info.hypotheses.push(u);
+                }
+            }
+        }
+        Err(why) if info.is_proved() => {
+            info.method = ProofMethod::None;
+            info.reason = Some(if label.is_empty() {
+                why
+            } else {
+                format!("case {label}: {why}")
+            });
+        }
+        Err(_) => {}
+    }
+    info.terms = info.terms.max(p.terms);
+    if let Some(c) = p.certificate {
+        let prev = info.certificate.take().unwrap_or_default();
+        info.certificate = Some(prev + &c);
+    }
+}
+
+/// Turns a numerical `holds` into `proved` when the symbolic proof succeeds.  A claim
+/// the ladder refutes (or cannot judge) is never passed to the prover as true.
+pub fn judge(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, ev: &mut Evidence) {
+    upgrade(
+        ev,
+        || {
+            if super::lemmas::is_lemma(ctx) {
+                super::lemmas::proof_of(ctx, lhs, rhs, prove)
+            } else {
+                prove(ctx, lhs, rhs, false)
+            }
+        },
+        |info| {
+            format!(
+                "the symbolic normal form of lhs − rhs is 0 ({}); holds numerically",
+                info.extent()
+            )
+        },
+    );
+}
+
+/// Runs `attempt` only when the numerical verdict holds (a claim the ladder refutes or
+/// cannot judge is never passed to the prover as true), and makes the verdict `proved`,
+/// with the reason `why`, when the attempt proves; the attempt is the claim's evidence.
+pub(super) fn upgrade(
+    ev: &mut Evidence,
+    attempt: impl FnOnce() -> ProofInfo,
+    why: impl FnOnce(&ProofInfo) -> String,
+) {
+    if ev.verdict != Verdict::Holds {
+        ev.proof = Some(ProofInfo::none(format!(
+            "not attempted: the numerical verdict is {}",
+            ev.verdict.name()
+        )));
+        return;
+    }
+    let info = attempt();
+    if info.is_proved() {
+        ev.verdict = Verdict::Proved;
+        ev.reason = why(&info);
+    }
+    ev.proof = Some(info);
+}
