@@ -19,6 +19,9 @@
 //! 3. where it is `b·σ` for a sign symbol `σ = sign(x)` and `x` divides `b`: from the sign
 //!    of `b/x`, since `σ·x > 0`.
 //!
+//! 4. a value `a²/b²` (squares of polynomials) is positive where the sign of `a/b` is
+//!    decided and nonzero (decided as that sign is: proved, or by a hypothesis).
+//!
 //! A value is also proved of one sign when it is a fact's value (`dn u > 0` for a real
 //! argument, module `elliptic_facts`) times a factor proved as above.
 //!
@@ -99,8 +102,30 @@ impl Sym {
         }
         match self.hypothesis_sign() {
             Some((s, source)) => Decision::Hypothesis(s, source),
-            None => Decision::Unknown,
+            None => self.square_decision().unwrap_or(Decision::Unknown),
         }
+    }
+
+    /// Rule 4: a value `a²/b²` (numerator and denominator squares of polynomials) is
+    /// positive where `a/b` has a decided nonzero sign, decided the way that sign is.
+    fn square_decision(&self) -> Option<Decision> {
+        let (n, d) = (&self.val.num, &self.val.den);
+        if n.as_constant().is_some() && d.as_constant().is_some() {
+            return None;
+        }
+        let (a, b) = (n.sqrt()?, d.sqrt()?);
+        let base = self.ring.quotient_of_polys(a, b).ok()?;
+        let decision = match base.decision() {
+            Decision::Proved(s) if s != 0 => Decision::Proved(1),
+            Decision::Hypothesis(s, source) if s != 0 => Decision::Hypothesis(1, source),
+            Decision::Definition(s) if s != 0 => Decision::Definition(1),
+            _ => return None,
+        };
+        if self.ring.certifying() {
+            self.ring
+                .mark_uncertified("the sign of a square a²/b² from the sign of a/b");
+        }
+        Some(decision)
     }
 
     /// [`Sym::decision`]'s sign, where decided.

@@ -360,6 +360,14 @@ impl Ring {
         n.div(&d)
     }
 
+    /// The value `num/den` of two polynomials of the ring's context, in lowest terms,
+    /// with its values at the points (no derivation: it is not a step of the proof).
+    pub(crate) fn quotient_of_polys(&self, num: Poly, den: Poly) -> AlgResult<Sym> {
+        let (num, den) = self.inner.normalise(num, den)?;
+        let sh = self.shadow_of(&num, &den);
+        Ok(Sym::from_val(self, Val { num, den, sh }, None))
+    }
+
     /// Negates the values of root `i` at the points where `sigma` is −1 (the table of
     /// the variables' values is built afresh on its next use).
     fn flip_root_values(&self, i: usize, sigma: &[i32]) {
@@ -512,6 +520,13 @@ impl Sym {
             return Ok(());
         }
         let ring = &self.ring;
+        if self.is_positive_multiple_of_principal_root() {
+            // √(c²a) = c·√a for c > 0, whatever the sign of a
+            if ring.certifying() {
+                ring.mark_uncertified("a square root c·√a with c > 0 and √a principal");
+            }
+            return Ok(());
+        }
         if radicand.decided_sign() == Some(-1) {
             let over_i = self.try_mul(&ring.i()?)?.negate();
             if over_i.decided_sign() == Some(1) {
@@ -576,6 +591,27 @@ impl Sym {
             sh: ring.shadow_of(&self.val.den, &one),
         };
         Ok((inner.v_div(&cand, &dval)?, fresh))
+    }
+
+    /// Whether this value is `c·r` for a root `r` that is the principal root of its
+    /// radicand by definition (adjoined with its principal values) and a factor `c`
+    /// free of `r` with a decided positive sign: then, as the value's square is
+    /// `c²·r²`, the value is the principal root of its square, whatever the sign of `r²`.
+    fn is_positive_multiple_of_principal_root(&self) -> bool {
+        let ring = &self.ring;
+        self.val.num.used_vars().into_iter().any(|v| {
+            let Some(i) = ring.inner.root_of_var(v) else {
+                return false;
+            };
+            if !ring.state().roots[i].principal {
+                return false;
+            }
+            let Ok(c) = self.try_div(&ring.root_sym(i)) else {
+                return false;
+            };
+            let free = |p: &Poly| !p.used_vars().contains(&v);
+            free(&c.val.num) && free(&c.val.den) && c.decided_sign() == Some(1)
+        })
     }
 
     /// Is this value a single root symbol whose radicand is exactly `x` (the

@@ -131,3 +131,76 @@ fn a_nonzero_normal_form_is_not_called_zero_at_the_points() {
     let why = p.reason.unwrap_or_default();
     assert!(why.contains("differ at domain point"), "{why}");
 }
+
+/// A claim true where its stated hypothesis holds: `sqrt(q^2) = q` under `q > 0`, for
+/// `q = x² − x + c` on `x ∈ (0, 1)` (positive for `c = 0.3`, though the test of signs
+/// on the domain does not prove it; negative on 45 % of the domain for `c = 0.2`).
+fn under_hypothesis(c: &str) -> String {
+    let claim = identity_claim_with(
+        "h.sqrt",
+        "control: true where x > c",
+        r#"vars = [["x", "uniform(0, 1)"]]
+hypotheses = ["x-large"]"#,
+        &format!("sqrt((x^2 - x + {c})^2) * 3"),
+        &format!("(x^2 - x + {c}) * 3"),
+    );
+    format!(
+        "[hypothesis.x-large]\nwhen = \"x^2 - x + {c} > 0\"\nstatement = \"q is positive\"\npaper = \"a control\"\n{claim}"
+    )
+}
+
+#[test]
+fn a_stated_hypothesis_decides_a_branch_and_is_checked_at_the_samples() {
+    use eulertop::claims::verdict::{Options, Verdict, run_claim};
+    // the hypothesis holds on the whole domain: proved, resting on it
+    let cat = controls_only(under_hypothesis("0.3"));
+    let r = run_claim(&cat, &cat.claims[0], &Options::default());
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+    let hyps = &r.proof.hypotheses;
+    assert!(
+        hyps.iter().any(|h| h.source == "hypothesis.x-large"),
+        "{hyps:?}"
+    );
+    // it fails on half of the domain: the claim is not proved, and says why
+    let cat = controls_only(under_hypothesis("0.2"));
+    let r = run_claim(&cat, &cat.claims[0], &Options::default());
+    assert_ne!(r.verdict, Verdict::Proved, "{}", r.reason);
+    assert!(r.reason.contains("hypothesis x-large"), "{}", r.reason);
+    assert!(r.reason.contains("fails at"), "{}", r.reason);
+}
+
+#[test]
+fn a_positive_multiple_of_a_principal_root_is_the_principal_root_of_its_square() {
+    use eulertop::claims::verdict::{Options, Verdict, run_claim};
+    // √(q (1 + x²)²) = (1 + x²) √q: the root √q is principal by definition and
+    // 1 + x² > 0 is proved; the radicand's sign rests on the hypothesis q > 0
+    let claim = identity_claim_with(
+        "h.multiple",
+        "control",
+        r#"vars = [["x", "uniform(0, 1)"]]
+hypotheses = ["q-positive"]"#,
+        "sqrt((x^2 - x + 0.3) * (1 + x^2)^2)",
+        "(1 + x^2) * sqrt(x^2 - x + 0.3)",
+    );
+    let text = format!(
+        "[hypothesis.q-positive]\nwhen = \"x^2 - x + 0.3 > 0\"\nstatement = \"q > 0\"\npaper = \"a control\"\n{claim}"
+    );
+    let cat = controls_only(text);
+    let r = run_claim(&cat, &cat.claims[0], &Options::default());
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+    // the same with the factor's sign unknown (x − 0.5 changes sign): not proved
+    let claim = identity_claim_with(
+        "h.multiple",
+        "control",
+        r#"vars = [["x", "uniform(0, 1)"]]
+hypotheses = ["q-positive"]"#,
+        "sqrt((x^2 - x + 0.3) * (x - 0.5)^2)",
+        "(x - 0.5) * sqrt(x^2 - x + 0.3)",
+    );
+    let text = format!(
+        "[hypothesis.q-positive]\nwhen = \"x^2 - x + 0.3 > 0\"\nstatement = \"q > 0\"\npaper = \"a control\"\n{claim}"
+    );
+    let cat = controls_only(text);
+    let r = run_claim(&cat, &cat.claims[0], &Options::default());
+    assert_ne!(r.verdict, Verdict::Proved, "{}", r.reason);
+}

@@ -215,7 +215,10 @@ fn judge(ctx: Ctx<'_>, opts: &Options) -> Result<Evidence, Failure> {
                 _ => ladder,
             };
             if opts.exact {
-                symbolic::judge(ctx, lhs, rhs, &mut ev);
+                match hypotheses::check_at_samples(ctx) {
+                    Ok(()) => symbolic::judge(ctx, lhs, rhs, &mut ev),
+                    Err(why) => ev.reason = format!("{}; not proved: {why}", ev.reason),
+                }
             }
             Ok(ev)
         }

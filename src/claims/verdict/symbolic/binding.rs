@@ -129,6 +129,10 @@ pub(super) fn bind_variables<'c>(
         )?),
         None => None,
     };
+    // the stated sign hypotheses, in the variables as bound (a chart's, where a map is
+    // parametrized), before the `let`s that may need them
+    let mut stated = Vec::new();
+    crate::claims::verdict::hypotheses::state_signs(ctx, &ev, &mut stated)?;
     for b in &ctx.claim.lets {
         match (hint, &unknown) {
             (Some(h), Some(v)) if h.value == b.name => ev.bind(&b.name, v.clone()),
@@ -136,6 +140,7 @@ pub(super) fn bind_variables<'c>(
                 .bind_let(b)
                 .map_err(|e| fail(format!("let {}: {}", b.name, e.message)))?,
         }
+        crate::claims::verdict::hypotheses::state_signs(ctx, &ev, &mut stated)?;
     }
     Ok(Bound {
         ev,

@@ -59,7 +59,6 @@ pub(super) fn prove_case(
             checks,
             unknown,
         } = bind_variables(ctx, ring, roles, points, (&plans, &lemmas), hint)?;
-        crate::claims::verdict::hypotheses::state_signs(ctx, &ev)?;
         let mut pairs = match (hint, &unknown) {
             (Some(h), Some(v)) => crate::claims::verdict::hinted::sides(ctx, &ev, h, v, sides_of)?,
             _ => sides(&ev, sides_of.0, sides_of.1)?,
