@@ -121,6 +121,8 @@ pub struct Sampler<'c> {
     reg: &'c Registry,
     vars: Vec<(String, &'c PExpr)>,
     wheres: Vec<&'c PExpr>,
+    /// Draw `uniform(a, b)` next to its ends (see [`Sampler::toward_boundary`]).
+    boundary: bool,
     /// Primitive statistics.
     pub stats: DrawStats,
 }
@@ -148,8 +150,47 @@ impl<'c> Sampler<'c> {
             reg: &cat.registry,
             vars,
             wheres,
+            boundary: false,
             stats: DrawStats::default(),
         })
+    }
+
+    /// The same sampler drawing toward the boundary of the domain: every
+    /// `uniform(a, b)` takes a grid value next to `a` or to `b` (the distance to the end
+    /// a fourth power of a uniform fraction of the width, so the ends themselves and the
+    /// vertices where several meet are reached often).  For searching a part of the
+    /// domain that the uniform draws miss, such as a thin corner.
+    ///
+    /// ```
+    /// use eulertop::bindings::euler_top::registry;
+    /// use eulertop::claims::catalogue::load_sources;
+    /// use eulertop::claims::sampler::{Sampler, Stream};
+    /// let toml = r#"
+    /// [[claim]]
+    /// id = "corner"
+    /// environment = "Section 2"
+    /// role = "statement"
+    /// location = "a doc example"
+    /// printed = 'x'
+    /// kind = "identity"
+    /// vars = [["x", "uniform(0, 1)"]]
+    /// lhs = "x"
+    /// rhs = "x"
+    /// "#;
+    /// let cat = load_sources(&[("doc.toml".into(), toml.into())], registry().unwrap()).unwrap();
+    /// let mut s = Sampler::new(&cat, &cat.claims[0], Stream::Proof).unwrap().toward_boundary();
+    /// let near = (0..100)
+    ///     .filter(|_| {
+    ///         let p = s.draw().unwrap();
+    ///         let x = p.get("x").unwrap().as_real().unwrap();
+    ///         x < 1e-3 || x > 1.0 - 1e-3
+    ///     })
+    ///     .count();
+    /// assert!(near > 20, "{near}");
+    /// ```
+    pub fn toward_boundary(mut self) -> Self {
+        self.boundary = true;
+        self
     }
 
     /// The sampled variables in draw order, with their defining expressions.
@@ -231,7 +272,16 @@ impl<'c> Sampler<'c> {
                 if a.len() != 2 || a[0] >= a[1] || !a[0].is_finite() || !a[1].is_finite() {
                     return Err("uniform(a, b) needs a < b".into());
                 }
-                let j = self.rng.gen_range(0..=UNIFORM_GRID);
+                let mut j = self.rng.gen_range(0..=UNIFORM_GRID);
+                if self.boundary {
+                    let t: f64 = self.rng.r#gen::<f64>().powi(4);
+                    let off = (t * UNIFORM_GRID as f64) as u64;
+                    j = if self.rng.r#gen::<bool>() {
+                        off
+                    } else {
+                        UNIFORM_GRID - off
+                    };
+                }
                 self.set_size(UNIFORM_GRID + 1);
                 a[0] + (a[1] - a[0]) * (j as f64 / UNIFORM_GRID as f64)
             }

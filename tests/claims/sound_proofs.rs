@@ -204,3 +204,45 @@ hypotheses = ["q-positive"]"#,
     let r = run_claim(&cat, &cat.claims[0], &Options::default());
     assert_ne!(r.verdict, Verdict::Proved, "{}", r.reason);
 }
+
+/// A claim `lhs = rhs` on `x ∈ (0, 1)` with sampling seed `seed` (by itself, in a
+/// catalogue of its own).
+fn on_unit_interval(
+    id: &str,
+    seed: u64,
+    lhs: &str,
+    rhs: &str,
+) -> eulertop::claims::catalogue::Catalogue {
+    controls_only(identity_claim_with(
+        id,
+        "control",
+        &format!("vars = [[\"x\", \"uniform(0, 1)\"]]\nseed = {seed}"),
+        lhs,
+        rhs,
+    ))
+}
+
+#[test]
+fn a_thin_part_of_a_split_is_searched_for_next_to_the_boundary() {
+    // the part x > 1 − 10⁻⁶ holds a millionth of the domain: the uniform draws miss it,
+    // the draws next to the boundary reach it, and both parts are proved
+    for seed in 0..4 {
+        let cat = on_unit_interval("thin", seed, "if x > 0.999999 then x * x else x^2", "x^2");
+        let p = attempt(&cat, "thin");
+        assert!(p.is_proved(), "seed {seed}: {:?}", p.reason);
+    }
+    // false on that part: never proved
+    let cat = on_unit_interval("thin-false", 0, "if x > 0.999999 then 2 * x else x", "x");
+    assert!(!attempt(&cat, "thin-false").is_proved());
+}
+
+#[test]
+fn a_part_no_point_reaches_leaves_the_claim_unproved_and_named() {
+    // q = x² − x + 0.3 > 0 on the whole domain, but its sign is not proved: the split's
+    // part q < 0 is empty, so neither it nor the claim is proved
+    let cat = on_unit_interval("empty", 0, "if x^2 - x + 0.3 < 0 then 2 * x else x", "x");
+    let p = attempt(&cat, "empty");
+    assert!(!p.is_proved());
+    let why = p.reason.unwrap_or_default();
+    assert!(why.contains("is not reached"), "{why}");
+}

@@ -8,7 +8,7 @@
 use super::case::{Region, Signs, prove_case};
 use super::cases::{MAX_DRAWS, POINTS, Role, case_key};
 use crate::algebra::split::SignSplit;
-use crate::algebra::{BaseHint, Proof};
+use crate::algebra::{BaseHint, Outcome, Proof};
 use crate::claims::catalogue::PExpr;
 use crate::claims::sampler::{Point, Stream};
 use crate::claims::value::Value;
@@ -92,30 +92,55 @@ pub(super) fn parts(
     for sign in [1, -1] {
         let mut c = region.clone();
         c.signs.push((split.clone(), sign));
-        let Ok(pts) = draw(input, case, &c.signs) else {
-            return Err(Box::new((label, p)));
-        };
         let mut l = label.clone();
         l.push(format!(
             "{} {} 0",
             split.what,
             if sign > 0 { ">" } else { "<" }
         ));
+        let pts = match draw(input, case, &c.signs) {
+            Ok(pts) => pts,
+            Err(why) => {
+                let mut p = p;
+                p.outcome = Outcome::NotProved(format!(
+                    "the part where {} of the domain is not reached ({why}), so it is neither proved nor refuted",
+                    l.join(", ")
+                ));
+                return Err(Box::new((l, p)));
+            }
+        };
         out.extend(parts(input, case, l, pts, hints.clone(), &c)?);
     }
     Ok(out)
 }
 
-/// [`POINTS`] points of the case on which every sign condition holds.
+/// [`POINTS`] points of the case on which every sign condition holds: drawn as the
+/// domain is sampled, else searched for next to the domain's boundary and vertices
+/// ([`crate::claims::sampler::Sampler::toward_boundary`]).
 pub(super) fn draw(
     input: &CaseInput<'_, '_>,
     case: &[String],
     conds: &[(SignSplit, i32)],
 ) -> Result<Vec<Point>, String> {
-    let mut sampler = input
-        .ctx
-        .sampler(Stream::Proof)
-        .map_err(|c| c.to_string())?;
+    let sampler = || input.ctx.sampler(Stream::Proof).map_err(|c| c.to_string());
+    draw_with(input, case, conds, sampler()?).or_else(|_| {
+        draw_with(input, case, conds, sampler()?.toward_boundary()).map_err(|_| {
+            format!(
+                "no {POINTS} points of it in {} draws of the domain, nor in {} draws next to its boundary",
+                MAX_DRAWS * 4,
+                MAX_DRAWS * 4
+            )
+        })
+    })
+}
+
+/// [`draw`] with one sampler.
+fn draw_with(
+    input: &CaseInput<'_, '_>,
+    case: &[String],
+    conds: &[(SignSplit, i32)],
+    mut sampler: crate::claims::sampler::Sampler<'_>,
+) -> Result<Vec<Point>, String> {
     let case_vars: Vec<&String> = (input.roles.iter())
         .filter(|(_, r, _)| *r == Role::Case)
         .map(|(n, _, _)| n)
