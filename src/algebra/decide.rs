@@ -10,7 +10,8 @@
 //! a polynomial is proved, in this order,
 //! 1. by the parametrization of the domain by positive parameters (module
 //!    [`super::positivity`]), where the positive square roots count as parameters, and
-//!    `sn²` of a real base argument as a parameter in `[0, 1]`; where that proves
+//!    `sn²` of a real base argument as a parameter in `[0, 1]`: all coefficients of one
+//!    sign, at once or after multiplying by `(1 + Σ tᵢ)ᴺ` (Pólya); where that proves
 //!    nothing, by the box of the sampled intervals (the parametrization's alternative);
 //! 2. where the polynomial is `a + b·r` in its most significant square root `r` (the
 //!    positive root of a radicand proved positive): from the signs of `a` and `b`, and,
@@ -157,7 +158,8 @@ impl Ring {
             return Some(if c < 0 { -1 } else { 1 });
         }
         let images = self.sign_images(par, p)?;
-        if let Some(s) = par.poly_sign(p, &images) {
+        if let Some((s, n)) = par.poly_sign_polya(p, &images) {
+            self.note_polya(n);
             return Some(s);
         }
         if depth >= MAX_DEPTH || p.len() > MAX_TERMS {

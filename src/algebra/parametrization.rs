@@ -48,6 +48,10 @@ const MAX_OUTPUT_TERMS: usize = 40_000;
 /// The largest numerator, in terms, tested with `sn²` as a parameter or with the
 /// alternative parametrization (their substitutions grow fast).
 pub(crate) const MAX_WIDENED_TERMS: usize = 64;
+/// The largest exponent of the Pólya multiplier (see [`Parametrization::poly_sign_polya`]).
+const MAX_POLYA: u32 = 12;
+/// The most terms a polynomial may have, before and after a Pólya multiplication.
+const MAX_POLYA_TERMS: usize = 2_000;
 
 /// How a parameter ranges.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -280,13 +284,71 @@ impl Parametrization {
 
     /// The sign of `num/den` (polynomials of another context) where the variable of
     /// index `i` of that context is `images[i]`; `None` when the test does not decide.
+    #[cfg(test)]
     pub(crate) fn sign_of(&self, num: &Poly, den: &Poly, images: &[Image<'_>]) -> Option<i32> {
-        let a = self.poly_sign(num, images)?;
-        let b = self.poly_sign(den, images)?;
-        Some(a * b)
+        self.sign_of_polya(num, den, images).map(|(s, _)| s)
     }
 
-    pub(crate) fn poly_sign(&self, p: &Poly, images: &[Image<'_>]) -> Option<i32> {
+    /// [`Parametrization::sign_of`] with the larger of the two Pólya exponents it needed
+    /// (see [`Parametrization::poly_sign_polya`]).
+    pub(crate) fn sign_of_polya(
+        &self,
+        num: &Poly,
+        den: &Poly,
+        images: &[Image<'_>],
+    ) -> Option<(i32, u32)> {
+        let (a, m) = self.poly_sign_polya(num, images)?;
+        let (b, n) = self.poly_sign_polya(den, images)?;
+        Some((a * b, m.max(n)))
+    }
+
+    /// The sign of `p` on the domain and the exponent `N` of the Pólya multiplier
+    /// `(1 + Σ tᵢ)ᴺ` (0 when the coefficients have one sign at once): a polynomial
+    /// positive on the closed orthant of the positive parameters, its leading form
+    /// included, has a multiple by such a power with positive coefficients (Pólya's
+    /// theorem, for the form homogenized by `t₀ = 1`); as the multiplier is positive,
+    /// the sign of the product is the sign of `p`.
+    pub(crate) fn poly_sign_polya(&self, p: &Poly, images: &[Image<'_>]) -> Option<(i32, u32)> {
+        let (acc, factor) = self.substituted(p, images)?;
+        if let Some(s) = self.definite_sign(&acc) {
+            return Some((s * factor, 0));
+        }
+        let (s, n) = self.polya(acc)?;
+        Some((s * factor, n))
+    }
+
+    /// Multiplies by `1 + Σ tᵢ` (over the parameters that occur) until the coefficients
+    /// have one sign, within [`MAX_POLYA`] steps and [`MAX_POLYA_TERMS`] terms; not for a
+    /// polynomial in a parameter of either sign.
+    fn polya(&self, mut acc: Poly) -> Option<(i32, u32)> {
+        let used = acc.used_vars();
+        let either = |i: &usize| {
+            self.params
+                .get(*i)
+                .is_some_and(|(_, k)| *k == ParamKind::NonZero)
+        };
+        if acc.len() > MAX_POLYA_TERMS || used.iter().any(either) {
+            return None;
+        }
+        let mut step = Poly::from_i64(&self.ctx, 1);
+        for &i in &used {
+            step = step.add(&Poly::var(&self.ctx, i));
+        }
+        for n in 1..=MAX_POLYA {
+            acc = acc.mul(&step);
+            if acc.len() > MAX_POLYA_TERMS {
+                return None;
+            }
+            if let Some(s) = self.definite_sign(&acc) {
+                return Some((s, n));
+            }
+        }
+        None
+    }
+
+    /// `p` with the images substituted and the denominators cleared (a polynomial in
+    /// the parameters), and the sign of the cleared denominators.
+    fn substituted(&self, p: &Poly, images: &[Image<'_>]) -> Option<(Poly, i32)> {
         if p.is_zero() || p.len() > MAX_INPUT_TERMS {
             return None;
         }
@@ -345,7 +407,7 @@ impl Parametrization {
         if failed {
             return None;
         }
-        Some(self.definite_sign(&acc)? * factor)
+        Some((acc, factor))
     }
 
     fn root_param(&self, slot: usize) -> Option<Poly> {
@@ -467,5 +529,27 @@ mod tests {
         assert_eq!(par.sign_of(&u, &one.sub(&u), &images), Some(1));
         let half = Poly::from_i64(&ctx, 2).mul(&u).sub(&one);
         assert_eq!(par.sign_of(&half, &one, &images), None);
+    }
+
+    #[test]
+    fn a_positive_polynomial_with_coefficients_of_both_signs_is_proved_after_polya() {
+        // x = t/(1 + t) ∈ (0, 1): x² − x + c is positive for c > 1/4
+        let mut par = Parametrization::new();
+        let x = par.positive("t").unwrap();
+        let one = par.constant(&Rational::from(1));
+        let x = x.div(&one.add(&x)).unwrap();
+        par.bind("x", x, "x = t/(1 + t)".into());
+        let ctx = Ctx::new(1);
+        let images = [Image::Var(par.image("x").unwrap())];
+        let v = Poly::var(&ctx, 0);
+        let q = |c: (i64, i64)| {
+            let p = v.mul(&v).sub(&v).mul(&Poly::from_i64(&ctx, c.1));
+            p.add(&Poly::from_i64(&ctx, c.0))
+        };
+        // 3/10: (1 + t)³ times 0.3t² − 0.4t + 0.3 has no negative coefficient
+        assert_eq!(par.poly_sign_polya(&q((3, 10)), &images), Some((1, 3)));
+        // 1/4: (x − 1/2)² vanishes at x = 1/2; 1/5: negative near x = 1/2
+        assert_eq!(par.poly_sign_polya(&q((1, 4)), &images), None);
+        assert_eq!(par.poly_sign_polya(&q((1, 5)), &images), None);
     }
 }

@@ -126,15 +126,26 @@ impl Sym {
     /// `decide` through the square roots.
     fn sign_with(&self, par: &Parametrization) -> Option<i32> {
         let images = self.ring.sign_images(par, &self.val.num)?;
-        if let Some(s) = par.sign_of(&self.val.num, &self.val.den, &images) {
+        let ring = &self.ring;
+        if let Some((s, n)) = par.sign_of_polya(&self.val.num, &self.val.den, &images) {
+            ring.note_polya(n);
             return Some(s);
         }
-        let ring = &self.ring;
         Some(ring.tower_sign(par, &self.val.num, 0)? * ring.tower_sign(par, &self.val.den, 0)?)
     }
 }
 
 impl Ring {
+    /// Records that a sign test needed the Pólya multiplier `(1 + Σ tᵢ)ᴺ` (`n > 0`),
+    /// which the certificate format does not record.
+    pub(crate) fn note_polya(&self, n: u32) {
+        if n > 0 && self.certifying() {
+            self.mark_uncertified(
+                "a sign proved after a Pólya multiplication by (1 + Σ t)^N, which the certificate format does not record",
+            );
+        }
+    }
+
     /// The parametrization of the domain, or an empty one (which still proves the signs
     /// of constants and of positive roots of positive constants).
     fn domain(&self) -> Arc<Parametrization> {
@@ -210,7 +221,8 @@ impl Ring {
             }
         }
         for (i, radicand, positive) in roots {
-            if positive && par.poly_sign(&radicand, &images) == Some(1) {
+            if positive && let Some((1, n)) = par.poly_sign_polya(&radicand, &images) {
+                self.note_polya(n);
                 images[max_roots - 1 - i] = Image::Root(i);
             }
         }

@@ -173,6 +173,7 @@ impl<'c> Sampler<'c> {
     /// location = "a doc example"
     /// printed = 'x'
     /// kind = "identity"
+    /// expect = "proved"
     /// vars = [["x", "uniform(0, 1)"]]
     /// lhs = "x"
     /// rhs = "x"

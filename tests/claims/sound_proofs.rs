@@ -133,8 +133,9 @@ fn a_nonzero_normal_form_is_not_called_zero_at_the_points() {
 }
 
 /// A claim true where its stated hypothesis holds: `sqrt(q^2) = q` under `q > 0`, for
-/// `q = x² − x + c` on `x ∈ (0, 1)` (positive for `c = 0.3`, though the test of signs
-/// on the domain does not prove it; negative on 45 % of the domain for `c = 0.2`).
+/// `q = x² − x + c` on `x ∈ (0, 1)` (positive for `c = 0.2501`, though the test of signs
+/// on the domain does not prove it, Pólya's multiplier included; negative on 45 % of
+/// the domain for `c = 0.2`).
 fn under_hypothesis(c: &str) -> String {
     let claim = identity_claim_with(
         "h.sqrt",
@@ -153,7 +154,7 @@ hypotheses = ["x-large"]"#,
 fn a_stated_hypothesis_decides_a_branch_and_is_checked_at_the_samples() {
     use eulertop::claims::verdict::{Options, Verdict, run_claim};
     // the hypothesis holds on the whole domain: proved, resting on it
-    let cat = controls_only(under_hypothesis("0.3"));
+    let cat = controls_only(under_hypothesis("0.2501"));
     let r = run_claim(&cat, &cat.claims[0], &Options::default());
     assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
     let hyps = &r.proof.hypotheses;
@@ -179,11 +180,11 @@ fn a_positive_multiple_of_a_principal_root_is_the_principal_root_of_its_square()
         "control",
         r#"vars = [["x", "uniform(0, 1)"]]
 hypotheses = ["q-positive"]"#,
-        "sqrt((x^2 - x + 0.3) * (1 + x^2)^2)",
-        "(1 + x^2) * sqrt(x^2 - x + 0.3)",
+        "sqrt((x^2 - x + 0.2501) * (1 + x^2)^2)",
+        "(1 + x^2) * sqrt(x^2 - x + 0.2501)",
     );
     let text = format!(
-        "[hypothesis.q-positive]\nwhen = \"x^2 - x + 0.3 > 0\"\nstatement = \"q > 0\"\npaper = \"a control\"\n{claim}"
+        "[hypothesis.q-positive]\nwhen = \"x^2 - x + 0.2501 > 0\"\nstatement = \"q > 0\"\npaper = \"a control\"\n{claim}"
     );
     let cat = controls_only(text);
     let r = run_claim(&cat, &cat.claims[0], &Options::default());
@@ -194,11 +195,11 @@ hypotheses = ["q-positive"]"#,
         "control",
         r#"vars = [["x", "uniform(0, 1)"]]
 hypotheses = ["q-positive"]"#,
-        "sqrt((x^2 - x + 0.3) * (x - 0.5)^2)",
-        "(x - 0.5) * sqrt(x^2 - x + 0.3)",
+        "sqrt((x^2 - x + 0.2501) * (x - 0.5)^2)",
+        "(x - 0.5) * sqrt(x^2 - x + 0.2501)",
     );
     let text = format!(
-        "[hypothesis.q-positive]\nwhen = \"x^2 - x + 0.3 > 0\"\nstatement = \"q > 0\"\npaper = \"a control\"\n{claim}"
+        "[hypothesis.q-positive]\nwhen = \"x^2 - x + 0.2501 > 0\"\nstatement = \"q > 0\"\npaper = \"a control\"\n{claim}"
     );
     let cat = controls_only(text);
     let r = run_claim(&cat, &cat.claims[0], &Options::default());
@@ -238,9 +239,9 @@ fn a_thin_part_of_a_split_is_searched_for_next_to_the_boundary() {
 
 #[test]
 fn a_part_no_point_reaches_leaves_the_claim_unproved_and_named() {
-    // q = x² − x + 0.3 > 0 on the whole domain, but its sign is not proved: the split's
+    // q = x² − x + 0.2501 > 0 on the whole domain, but its sign is not proved: the split's
     // part q < 0 is empty, so neither it nor the claim is proved
-    let cat = on_unit_interval("empty", 0, "if x^2 - x + 0.3 < 0 then 2 * x else x", "x");
+    let cat = on_unit_interval("empty", 0, "if x^2 - x + 0.2501 < 0 then 2 * x else x", "x");
     let p = attempt(&cat, "empty");
     assert!(!p.is_proved());
     let why = p.reason.unwrap_or_default();
