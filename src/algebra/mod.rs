@@ -134,6 +134,7 @@ mod square_classes;
 mod sym;
 mod symbols;
 mod val;
+pub mod witness;
 
 pub use budget::{BUDGET_MESSAGE, Budget, DEFAULT_MEMORY_MB, DEFAULT_TIME_MS, set_default_budget};
 pub use decide::Decision;

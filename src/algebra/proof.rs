@@ -56,6 +56,9 @@ pub struct Proof {
     /// The first sign that differed between domain points, by which the domain can be
     /// split (see [`super::split`]).
     pub split: Option<super::split::SignSplit>,
+    /// Where the normal form of `lhs − rhs` is certified nonzero: the domain point and
+    /// the enclosure (module [`super::witness`]).
+    pub witness: Option<String>,
     /// The elliptic base arguments of the last attempt, as hints for a related proof
     /// (another case of the same claim).
     pub base_hints: Vec<BaseHint>,
@@ -84,6 +87,7 @@ impl Proof {
             certificate: None,
             base_hints: Vec::new(),
             split: None,
+            witness: None,
         }
     }
 }
@@ -99,10 +103,15 @@ impl Ring {
     pub fn prove_all(&self, pairs: &[(Sym, Sym)]) -> Proof {
         let t0 = Instant::now();
         let mut outcome = Outcome::Proved;
+        let mut witness = None;
         for (i, (l, r)) in pairs.iter().enumerate() {
-            let o = self
+            let (o, w) = self
                 .zero_test(l, r)
-                .unwrap_or_else(|e| Outcome::NotProved(e.to_string()));
+                .unwrap_or_else(|e| (Outcome::NotProved(e.to_string()), None));
+            witness = w.map(|w| match pairs.len() {
+                1 => w,
+                _ => format!("component {}: {w}", i + 1),
+            });
             if let Outcome::NotProved(why) = o {
                 let which = if pairs.len() > 1 {
                     format!("component {}: ", i + 1)
@@ -137,16 +146,22 @@ impl Ring {
             certificate,
             base_hints: self.options().base_hints.clone(),
             split: self.undecided_sign(),
+            witness,
         }
     }
 
-    fn zero_test(&self, lhs: &Sym, rhs: &Sym) -> AlgResult<Outcome> {
+    /// The zero test of `lhs − rhs`, and where it is not 0, a point at which it is
+    /// certified nonzero (module [`super::witness`]), if one is found.
+    fn zero_test(&self, lhs: &Sym, rhs: &Sym) -> AlgResult<(Outcome, Option<String>)> {
         if let Some(e) = self.error() {
             return Err(e);
         }
         if self.state().rebase_wanted {
-            return Ok(Outcome::NotProved(
-                "provisional elliptic base arguments: evaluate again with refined bases (prove_identity does)".into(),
+            return Ok((
+                Outcome::NotProved(
+                    "provisional elliptic base arguments: evaluate again with refined bases (prove_identity does)".into(),
+                ),
+                None,
             ));
         }
         let d = lhs.try_sub(rhs)?;
@@ -163,14 +178,19 @@ impl Ring {
                         .into(),
                 ));
             }
-            return Ok(Outcome::Proved);
+            return Ok((Outcome::Proved, None));
         }
         let n = d.terms();
         // the carried error scale may be far too pessimistic (a long sum): a value is
         // called 0 at a point only if its normal form, evaluated afresh, is 0 there too
         let fresh = self.reevaluated(&d.val);
         let differs = |p: usize| !d.val.sh.is_small(p, prec) || !fresh.is_small(p, prec);
-        let reason = match (0..self.points()).find(|&p| differs(p)) {
+        let point = (0..self.points()).find(|&p| differs(p));
+        let witness = point.and_then(|p| {
+            let w = self.witness(&d, p)?;
+            Some(format!("at domain point {}: {w}", p + 1))
+        });
+        let reason = match point {
             Some(p) => format!(
                 "the normal form of lhs - rhs has {n} terms, and the two sides differ at domain point {}",
                 p + 1
@@ -186,7 +206,7 @@ impl Ring {
                 )
             }
         };
-        Ok(Outcome::NotProved(reason))
+        Ok((Outcome::NotProved(reason), witness))
     }
 
     /// Does the ring hold a named quantity as a free symbol ([`Ring::named`])?

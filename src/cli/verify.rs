@@ -409,7 +409,8 @@ fn print_text(
         } else {
             format!(": {}", sum.unexpected.join(", "))
         }
-    )
+    )?;
+    writeln!(w, "{}", crate::report::markdown::certified_line(results))
 }
 
 fn print_coverage(

@@ -17,6 +17,15 @@ pub fn verdict_badge(v: Verdict) -> &'static str {
     }
 }
 
+/// A claim's verdict badge: as [`verdict_badge`], with a refutation certified at an
+/// exact point (proof method `witness`) marked `✗✗` apart from a sampled one.
+pub fn result_badge(r: &ClaimResult) -> &'static str {
+    if r.verdict == Verdict::Refuted && r.proof.method == crate::claims::verdict::ProofMethod::Witness {
+        return "✗✗ refuted (witness)";
+    }
+    verdict_badge(r.verdict)
+}
+
 /// A residual as `2^-n` (or `0`), with two significant digits of the mantissa.
 pub fn fmt_residual(r: &Rung) -> String {
     if let Rung::Slope { slope, .. } = r {

@@ -1,6 +1,6 @@
 //! Markdown rendering of verification results.
 
-use super::cells::{anchor, best_residual, fmt_residual, printed_markdown, verdict_badge};
+use super::cells::{anchor, best_residual, fmt_residual, printed_markdown, result_badge};
 use super::proofs::{RULE, Structure, claim_link, counterexample_block, index_table};
 use super::{ReportInput, Section, stem_of};
 use crate::claims::kind::Form;
@@ -31,6 +31,24 @@ pub fn counts_line(results: &[ClaimResult]) -> String {
         g("inconclusive"),
         g("defined"),
         unexpected
+    )
+}
+
+/// How many verdicts are certified, as one line: the proved claims and the refutations
+/// with an exact witness, out of the verdicts that are not definitions.
+pub fn certified_line(results: &[ClaimResult]) -> String {
+    use crate::claims::verdict::ProofMethod;
+    let c = counts(results);
+    let g = |k: &str| c.get(k).copied().unwrap_or(0);
+    let witnessed = (results.iter())
+        .filter(|r| r.verdict.name() == "refuted" && r.proof.method == ProofMethod::Witness)
+        .count();
+    let judged = results.len() - g("defined");
+    format!(
+        "certified: {} of the {judged} verdicts that are not definitions ({} proved symbolically, {witnessed} refuted at a point where lhs − rhs is certified nonzero); the other verdicts rest on sampling or, for the {} by construction, on the model's definitions",
+        g("proved") + witnessed,
+        g("proved"),
+        g("construction"),
     )
 }
 
@@ -89,8 +107,17 @@ pub fn readme(input: &ReportInput) -> String {
         s,
         "- **✗ refuted**: the residual stays above a fixed floor at every precision from 128 bits on; a counterexample is shown."
     );
+    let _ = writeln!(
+        s,
+        "- **✗✗ refuted (witness)**: refuted, and certified: at a domain point (the prover's variables at their exact sampled values) the normal form of lhs − rhs is enclosed in Arb balls that exclude 0, so lhs ≠ rhs there; a residual too small for the precision ladder is refuted this way too."
+    );
     let _ = writeln!(s, "- **? inconclusive**: neither.\n");
-    let _ = writeln!(s, "## Verdicts\n\n{}.\n", counts_line(input.results));
+    let _ = writeln!(
+        s,
+        "## Verdicts\n\n{}.\n\n{}.\n",
+        counts_line(input.results),
+        certified_line(input.results)
+    );
     let _ = writeln!(
         s,
         "- [Errata: printed forms that fail, with corrections](errata.md)"
@@ -134,7 +161,7 @@ fn every_claim(s: &mut String, input: &ReportInput) {
             anchor(&r.id),
             esc_cell(&r.location),
             r.form,
-            verdict_badge(r.verdict),
+            result_badge(r),
             mark,
             best_residual(r)
         );
@@ -149,7 +176,7 @@ fn printed_block(s: &mut String, input: &ReportInput, printed: &str) {
 pub fn claim_block(input: &ReportInput, r: &ClaimResult) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "<a id=\"{}\"></a>\n", anchor(&r.id));
-    let _ = writeln!(s, "### `{}`: {}\n", r.id, verdict_badge(r.verdict));
+    let _ = writeln!(s, "### `{}`: {}\n", r.id, result_badge(r));
     let labels: Vec<String> = r.labels.iter().map(|l| format!("({l})")).collect();
     let _ = writeln!(
         s,
@@ -286,7 +313,7 @@ fn corrections(input: &ReportInput, r: &ClaimResult) -> String {
             f.id,
             stem_of(f),
             anchor(&f.id),
-            verdict_badge(f.verdict)
+            result_badge(f)
         );
     }
     s
@@ -371,7 +398,7 @@ fn erratum(input: &ReportInput, r: &ClaimResult) -> String {
         r.id,
         stem_of(r),
         anchor(&r.id),
-        verdict_badge(r.verdict)
+        result_badge(r)
     );
     printed_block(&mut s, input, &r.printed);
     if let Some(n) = &r.note {
@@ -399,7 +426,7 @@ fn erratum(input: &ReportInput, r: &ClaimResult) -> String {
             f.id,
             stem_of(f),
             anchor(&f.id),
-            verdict_badge(f.verdict),
+            result_badge(f),
             best_residual(f)
         );
         printed_block(&mut s, input, &f.printed);

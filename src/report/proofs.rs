@@ -15,7 +15,7 @@
 //!   else it *has a gap* (the inconclusive claims, or refuted ones without a correction
 //!   that holds, are named).  An environment without proof steps: *no proof printed*.
 
-use super::cells::{anchor, best_residual, printed_markdown, verdict_badge};
+use super::cells::{anchor, best_residual, printed_markdown, result_badge};
 use super::decimal::round_numbers;
 use super::paper_text::to_markdown;
 use super::{ReportInput, stem_of};
@@ -447,7 +447,7 @@ pub fn mermaid(s: &Structure, env: &Environment) -> String {
             m,
             "  n{j}{open}\"{}<br/>{}{env_note}\"{close}:::{}{}",
             r.id,
-            verdict_badge(r.verdict),
+            result_badge(r),
             verdict_class(r.verdict),
             if *inside { "" } else { "_ext" }
         );
@@ -482,7 +482,7 @@ fn claim_entry(input: &ReportInput, s: &Structure, r: &ClaimResult, n: usize) ->
         t,
         "**{n}. `{}`** — {} · {} · [evidence](../{}.md#{})\n",
         r.id,
-        verdict_badge(r.verdict),
+        result_badge(r),
         r.form,
         stem_of(r),
         anchor(&r.id)
@@ -497,7 +497,7 @@ fn claim_entry(input: &ReportInput, s: &Structure, r: &ClaimResult, n: usize) ->
         let links: Vec<String> = uses
             .iter()
             .map(|u| {
-                let v = s.get(u).map_or("", |x| verdict_badge(x.verdict));
+                let v = s.get(u).map_or("", |x| result_badge(x));
                 format!("[`{u}`]({}) ({v})", claim_link(s, u, "../"))
             })
             .collect();
@@ -512,7 +512,7 @@ fn claim_entry(input: &ReportInput, s: &Structure, r: &ClaimResult, n: usize) ->
             "Corrected by [`{}`]({}) — {}.\n",
             f.id,
             claim_link(s, &f.id, "../"),
-            verdict_badge(f.verdict)
+            result_badge(f)
         );
     }
     if let Some(c) = &r.counterexample {
@@ -541,7 +541,7 @@ fn statement_section(input: &ReportInput, s: &Structure, env: &Environment) -> S
             r.id,
             r.location.replace('|', "\\|"),
             r.form,
-            verdict_badge(r.verdict),
+            result_badge(r),
             best_residual(r),
             stem_of(r),
             anchor(&r.id)
@@ -557,7 +557,7 @@ fn statement_section(input: &ReportInput, s: &Structure, env: &Environment) -> S
                     "[`{}`]({}) ({})",
                     f.id,
                     claim_link(s, &f.id, "../"),
-                    verdict_badge(f.verdict)
+                    result_badge(f)
                 )
             })
             .collect();

@@ -267,16 +267,19 @@ fn false_identity_is_refuted_with_counterexample() {
 }
 
 #[test]
-fn tiny_discrepancy_is_inconclusive_not_holds() {
+fn tiny_discrepancy_is_refuted_by_a_witness_not_held() {
     // a constant 2^-80 discrepancy: invisible at 53 bits, visible from 128 bits on, but
-    // below the refutation floor 2^-30: honestly inconclusive
+    // below the refutation floor 2^-30, so the ladder alone is inconclusive; the normal
+    // form x − (x + 2^-80) is certified nonzero at a domain point
     let r = verdict_of(
         &claim(
-            "kind = \"identity\"\nexpect = \"inconclusive\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\nlhs = \"x\"\nrhs = \"x + 2^-80\"",
+            "kind = \"identity\"\nexpect = \"refuted\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\nlhs = \"x\"\nrhs = \"x + 2^-80\"",
         ),
         &LADDER,
     );
-    assert_eq!(r.verdict, Verdict::Inconclusive, "{}", r.reason);
+    assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
+    assert_eq!(r.proof.method, eulertop::claims::verdict::ProofMethod::Witness);
+    assert!(r.reason.contains("numerically: residual neither"), "{}", r.reason);
     assert!(r.loss_bits.unwrap() > 24.0);
 }
 

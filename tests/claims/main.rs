@@ -21,3 +21,4 @@ mod sound_proofs;
 mod splits;
 mod support;
 mod verdict_rules;
+mod witnesses;

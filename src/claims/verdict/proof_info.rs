@@ -8,6 +8,9 @@ use serde::Serialize;
 pub enum ProofMethod {
     /// The symbolic normal form of lhs − rhs is 0.
     Symbolic,
+    /// Refuted with a witness: a domain point at which lhs − rhs is certified nonzero
+    /// (field `witness`).
+    Witness,
     /// Not proved (the reason says why).
     None,
 }
@@ -67,6 +70,10 @@ pub struct ProofInfo {
     /// The certificate (SymPy-recheckable), when requested.
     #[serde(skip)]
     pub certificate: Option<String>,
+    /// Where lhs − rhs is certified nonzero, when the attempt found such a point: the
+    /// case, the domain point and the enclosure (`crate::algebra::witness`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub witness: Option<String>,
 }
 
 impl ProofInfo {
@@ -86,6 +93,7 @@ impl ProofInfo {
             ms: 0.0,
             uncertified: Vec::new(),
             certificate: None,
+            witness: None,
         }
     }
 

@@ -267,10 +267,37 @@ fn merge(ctx: Ctx<'_>, info: &mut ProofInfo, key: &[String], p: Proof) {
         Err(_) => {}
     }
     info.terms = info.terms.max(p.terms);
+    if info.witness.is_none()
+        && let Some(w) = p.witness
+    {
+        info.witness = Some(if label.is_empty() {
+            w
+        } else {
+            format!("case {label}, {w}")
+        });
+    }
     if let Some(c) = p.certificate {
         let prev = info.certificate.take().unwrap_or_default();
         info.certificate = Some(prev + &c);
     }
+}
+
+/// Makes a refutation certified where the attempt found a domain point at which
+/// lhs − rhs is provably nonzero: the proof's method is then `witness`.  The verdict
+/// stays `refuted` either way; a symbolic 0 against a numerical refutation is reported
+/// as the conflict it is, and proves nothing.
+fn certify_refutation(ev: &mut Evidence, mut info: ProofInfo) {
+    if info.is_proved() {
+        ev.reason = format!(
+            "{}; the symbolic normal form of lhs − rhs is 0 against this refutation (a conflict to investigate)",
+            ev.reason
+        );
+        info.method = ProofMethod::None;
+    } else if let Some(w) = &info.witness {
+        info.method = ProofMethod::Witness;
+        ev.reason = format!("{}; certified: lhs − rhs ≠ 0 {w}", ev.reason);
+    }
+    ev.proof = Some(info);
 }
 
 /// Turns a numerical `holds` into `proved` when the symbolic proof succeeds.  A claim
@@ -297,11 +324,32 @@ pub fn judge(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, ev: &mut Evidence) {
 /// Runs `attempt` only when the numerical verdict holds (a claim the ladder refutes or
 /// cannot judge is never passed to the prover as true), and makes the verdict `proved`,
 /// with the reason `why`, when the attempt proves; the attempt is the claim's evidence.
+/// A refuted claim's attempt serves for its witness only (see [`certify_refutation`]).
 pub(super) fn upgrade(
     ev: &mut Evidence,
     attempt: impl FnOnce() -> ProofInfo,
     why: impl FnOnce(&ProofInfo) -> String,
 ) {
+    if ev.verdict == Verdict::Refuted {
+        certify_refutation(ev, attempt());
+        return;
+    }
+    if ev.verdict == Verdict::Inconclusive {
+        let info = attempt();
+        if let (false, Some(w)) = (info.is_proved(), &info.witness) {
+            ev.verdict = Verdict::Refuted;
+            ev.reason = format!("certified: lhs − rhs ≠ 0 {w} (numerically: {})", ev.reason);
+            ev.proof = Some(ProofInfo {
+                method: ProofMethod::Witness,
+                ..info
+            });
+        } else {
+            ev.proof = Some(ProofInfo::none(
+                "not proved: the numerical verdict is inconclusive, and no point certifies lhs − rhs ≠ 0",
+            ));
+        }
+        return;
+    }
     if ev.verdict != Verdict::Holds {
         ev.proof = Some(ProofInfo::none(format!(
             "not attempted: the numerical verdict is {}",

@@ -1,0 +1,67 @@
+//! Certified refutations: a refuted identity carries a domain point at which lhs − rhs
+//! is provably nonzero (Arb balls at the point's exact values), and a claim whose
+//! residual is too small for the ladder to judge is refuted by such a point.
+
+use super::support::{controls_only, identity_claim_with, with_catalogue};
+use eulertop::claims::verdict::{Options, ProofMethod, Verdict, run_claim};
+
+/// The double-angle formula for sn with its right side times `factor`.
+fn double_angle(id: &str, factor: &str) -> String {
+    identity_claim_with(
+        id,
+        "control: sn(2u) times a factor",
+        r#"vars = [["u", "uniform(-1, 1)"], ["k", "uniform(0.1, 0.9)"]]"#,
+        "sn(2*u, k)",
+        &format!("2*sn(u, k)*cn(u, k)*dn(u, k) / (1 - k^2*sn(u, k)^4) * ({factor})"),
+    )
+}
+
+fn run(
+    cat: &eulertop::claims::catalogue::Catalogue,
+    id: &str,
+) -> eulertop::claims::verdict::ClaimResult {
+    let claim = cat.claims.iter().find(|c| c.id == id).expect("claim");
+    run_claim(cat, claim, &Options::default())
+}
+
+#[test]
+fn a_wrong_factor_is_refuted_with_a_witness() {
+    let cat = controls_only(double_angle("wrong", "1 + k/7"));
+    let r = run(&cat, "wrong");
+    assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
+    assert_eq!(r.proof.method, ProofMethod::Witness, "{}", r.reason);
+    let w = r.proof.witness.as_deref().unwrap_or_default();
+    assert!(w.contains("exclude 0"), "{w}");
+}
+
+#[test]
+fn a_perturbation_of_one_part_in_ten_to_the_thirty_is_refuted_with_a_witness() {
+    let cat = controls_only(double_angle("tiny", "1 + 10^(-30)"));
+    let r = run(&cat, "tiny");
+    assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
+    assert_eq!(r.proof.method, ProofMethod::Witness, "{}", r.reason);
+    assert!(r.reason.starts_with("certified"), "{}", r.reason);
+}
+
+#[test]
+fn the_true_formula_has_no_witness() {
+    let cat = controls_only(double_angle("true", "1"));
+    let r = run(&cat, "true");
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+    assert!(r.proof.witness.is_none());
+}
+
+#[test]
+fn the_papers_misprints_are_refuted_with_witnesses() {
+    let cat = with_catalogue(String::new());
+    for id in [
+        "bg.sn-addition.wrong-sign",
+        "sec5.ident2.123.printed",
+        "sec5.impl-spec.printed",
+        "sec7.lhs-master.g1.printed.up",
+    ] {
+        let r = run(&cat, id);
+        assert_eq!(r.verdict, Verdict::Refuted, "{id}: {}", r.reason);
+        assert_eq!(r.proof.method, ProofMethod::Witness, "{id}: {}", r.reason);
+    }
+}
