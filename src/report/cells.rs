@@ -20,7 +20,9 @@ pub fn verdict_badge(v: Verdict) -> &'static str {
 /// A claim's verdict badge: as [`verdict_badge`], with a refutation certified at an
 /// exact point (proof method `witness`) marked `✗✗` apart from a sampled one.
 pub fn result_badge(r: &ClaimResult) -> &'static str {
-    if r.verdict == Verdict::Refuted && r.proof.method == crate::claims::verdict::ProofMethod::Witness {
+    if r.verdict == Verdict::Refuted
+        && r.proof.method == crate::claims::verdict::ProofMethod::Witness
+    {
         return "✗✗ refuted (witness)";
     }
     verdict_badge(r.verdict)

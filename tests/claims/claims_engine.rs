@@ -278,8 +278,15 @@ fn tiny_discrepancy_is_refuted_by_a_witness_not_held() {
         &LADDER,
     );
     assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
-    assert_eq!(r.proof.method, eulertop::claims::verdict::ProofMethod::Witness);
-    assert!(r.reason.contains("numerically: residual neither"), "{}", r.reason);
+    assert_eq!(
+        r.proof.method,
+        eulertop::claims::verdict::ProofMethod::Witness
+    );
+    assert!(
+        r.reason.contains("numerically: residual neither"),
+        "{}",
+        r.reason
+    );
     assert!(r.loss_bits.unwrap() > 24.0);
 }
 
