@@ -25,13 +25,30 @@
 use super::base_table::Table;
 use super::flint::Poly;
 use super::node::{Node, Op};
-use super::ring::{Ring, VarKind, describe_kind};
+use super::ring::{Assumption, AssumptionKind, Ring, VarKind, describe_kind};
 use super::sym::Sym;
 use super::val::Val;
 
 use std::collections::HashMap;
 use std::fmt::Write;
 use std::sync::Arc;
+
+/// A string as a JSON literal (quoted, escaped), so that a statement is one line.
+fn json(s: &str) -> String {
+    serde_json::to_string(s).unwrap_or_default()
+}
+
+/// The `assume KIND NAME STATEMENT` line of a fact the derivation rests on: the branch
+/// of an implicit map (named by the map), a lemma (by the claim's id) or a stated
+/// hypothesis (by its label); the recheck requires a premise of the theorem for each.
+fn assume_line(a: &Assumption) -> String {
+    let (kind, name) = match &a.kind {
+        AssumptionKind::Branch(m) => ("branch", m),
+        AssumptionKind::Lemma(id) => ("lemma", id),
+        AssumptionKind::Hypothesis(label) => ("hypothesis", label),
+    };
+    format!("assume {kind} {name} {}\n", json(&a.statement))
+}
 
 /// A machine-readable tag of a field variable's kind.
 fn kind_tag(k: &VarKind) -> &'static str {
@@ -152,6 +169,8 @@ impl Ring {
         let mut out = String::new();
         let _ = writeln!(out, "# eulertop certificate 1");
         let _ = writeln!(out, "# claim: {}", title.replace('\n', " "));
+        // the number of claim lines: a deleted one is noticed
+        let _ = writeln!(out, "claims {}", pairs.len());
         out.push_str(&self.symbol_lines(&names));
         let mut em = Emitter {
             names: &names,
@@ -173,7 +192,7 @@ impl Ring {
         }
         for (h, s) in &self.inner.opts.hypotheses {
             let rel = if *s > 0 { ">" } else { "<" };
-            let _ = writeln!(out, "# part of the domain (hypothesis): {} {rel} 0", h.what);
+            let _ = writeln!(out, "part {} {rel} 0", json(&h.what));
         }
         for f in &self.state().signs.folded {
             let _ = writeln!(
@@ -183,7 +202,7 @@ impl Ring {
             );
         }
         for a in self.assumptions() {
-            let _ = writeln!(out, "# assumption ({:?}): {}", a.origin, a.statement);
+            out.push_str(&assume_line(&a));
         }
         Some(out)
     }
