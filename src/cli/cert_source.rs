@@ -105,9 +105,9 @@ impl RawCatalogue {
         let table: toml::Table = text
             .parse()
             .map_err(|e| CliError(format!("{shown}: {e}")))?;
-        let name = path.file_name().map_or(String::new(), |n| {
-            n.to_string_lossy().into_owned()
-        });
+        let name = path
+            .file_name()
+            .map_or(String::new(), |n| n.to_string_lossy().into_owned());
         for (group, value) in &table {
             if let (true, Some(t)) = (group == "domain" || group == "hypothesis", value.as_table())
             {
@@ -126,7 +126,8 @@ impl RawCatalogue {
                     self.defines.insert(f, (id.to_string(), d.to_string()));
                 }
             }
-            self.claims.insert(id.to_string(), (name.clone(), c.clone()));
+            self.claims
+                .insert(id.to_string(), (name.clone(), c.clone()));
         }
         Ok(())
     }
@@ -136,25 +137,36 @@ impl RawCatalogue {
         let (file, claim) = (self.claims.get(id))
             .ok_or_else(|| CliError(format!("no claim with id '{id}' in the catalogue files")))?;
         let json = |v: &toml::Value| serde_json::to_string(v).unwrap_or_default();
-        let mut out = format!("source id {}\nsource file {}\n", json(&id.into()), json(&file.as_str().into()));
+        // the text scanned for the names of definitions: a string as written
+        let text = |v: &toml::Value| v.as_str().map_or_else(|| json(v), str::to_string);
+        let mut out = format!(
+            "source id {}\nsource file {}\n",
+            json(&id.into()),
+            json(&file.as_str().into())
+        );
         let mut texts = Vec::new();
         for f in CLAIM_FIELDS {
             if let Some(v) = claim.get(f) {
                 out.push_str(&format!("source claim.{f} {}\n", json(v)));
-                texts.push(json(v));
+                texts.push(text(v));
             }
         }
         let mut tables = Vec::new();
         if let Some(d) = claim.get("domain").and_then(|v| v.as_str()) {
             tables.push(format!("domain.{d}"));
         }
-        for h in claim.get("hypotheses").and_then(|v| v.as_array()).into_iter().flatten() {
+        for h in claim
+            .get("hypotheses")
+            .and_then(|v| v.as_array())
+            .into_iter()
+            .flatten()
+        {
             tables.extend(h.as_str().map(|h| format!("hypothesis.{h}")));
         }
         for t in tables {
             if let Some(v) = self.tables.get(&t) {
                 out.push_str(&format!("source {t} {}\n", json(v)));
-                texts.push(json(v));
+                texts.push(text(v));
             }
         }
         for (def_id, text) in self.definitions_used(&texts) {

@@ -123,10 +123,20 @@ fn a_certificate_states_its_claim_as_the_catalogue_writes_it() {
     let cert = std::fs::read_to_string(&path).expect("certificate written");
     let source = lines_of(&cert, "source");
     assert_eq!(source[0], r#"source id "sec2.ET-v.corrected""#, "{cert}");
-    assert!(source.contains(&r#"source claim.lhs "ETrhs(M, A, B, C)""#), "{cert}");
-    assert!(source.contains(&r#"source claim.rhs "cross(OmP(M, A, B, C), M)""#), "{cert}");
+    assert!(
+        source.contains(&r#"source claim.lhs "ETrhs(M, A, B, C)""#),
+        "{cert}"
+    );
+    assert!(
+        source.contains(&r#"source claim.rhs "cross(OmP(M, A, B, C), M)""#),
+        "{cert}"
+    );
     // the definitions the formulas call, and the domain
-    assert!(source.iter().any(|l| l.starts_with("source define.sec2.def.ET \"ETrhs(M, A, B, C) = ")));
+    assert!(
+        source
+            .iter()
+            .any(|l| l.starts_with("source define.sec2.def.ET \"ETrhs(M, A, B, C) = "))
+    );
     assert!(source.iter().any(|l| l.starts_with("source domain.top {")));
     // three components, three claim lines, announced
     assert_eq!(lines_of(&cert, "claims"), ["claims 3"]);
@@ -148,6 +158,10 @@ fn a_certificate_states_its_claim_as_the_catalogue_writes_it() {
             .any(|l| l.starts_with("premise branch hypothesis.branch-delta1 \"")),
         "{cert}"
     );
-    assert!(lines_of(&cert, "assume").iter().any(|l| l.starts_with("assume branch delta1 \"")));
+    assert!(
+        lines_of(&cert, "assume")
+            .iter()
+            .any(|l| l.starts_with("assume branch delta1 \""))
+    );
     assert!(!cert.contains("# assumption"), "{cert}");
 }
