@@ -273,6 +273,7 @@ class Cert:
         self.conditions = []  # the `part` lines: the conditions of this part of the domain
         self.sign_lines = set()  # node ids with a proved sign > 0
         self.ops = {}  # node id -> its operation, as tokens
+        self.elliptic_nodes = []  # (sn|cn|dn, argument, modulus, value): the evaluator's
 
     # ---- the ring ----------------------------------------------------------------
     def declare(self, text):
@@ -917,6 +918,9 @@ class Cert:
         toks = body.split()
         val = self.evaluate(toks, nf)
         self.ops[tid] = toks
+        if toks[0] in ("sn", "cn", "dn"):
+            k = next((b["k"] for name, b in self.bases.items() if name.startswith(f"b_{toks[3]}_")), None)
+            self.elliptic_nodes.append((toks[0], self.vals[toks[1]], k, val if nf is None else nf))
         if toks[0] == "sqrt":
             self.sqrts.append((tid, self.vals[toks[1]], nf))
             self.sqrt_nodes.append((self.vals[toks[1]], nf))

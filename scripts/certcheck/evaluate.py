@@ -12,6 +12,9 @@ from fractions import Fraction
 from .exprlang import Unsupported, ExprError, bindings
 
 VEC, MAT = "vec", "mat"
+# the Jacobi functions pq = p/q in Glaisher's notation, n standing for 1
+ELLIPTIC = {f"{p}{q}": (p, q) for p in "scdn" for q in "scdn" if p != q}
+ELLIPTIC.update({"sn": ("s", "n"), "cn": ("c", "n"), "dn": ("d", "n")})
 
 
 class Evaluator:
@@ -227,6 +230,17 @@ class Evaluator:
             if name == "Omega":
                 return om
             return self.dot(v[0][1], om[1]) if name == "energy" else self.hat(om[1])
+        if name in ELLIPTIC and len(v) == 2:
+            return self.elliptic(name, self.scalar(v[0]), self.scalar(v[1]))
+        if name == "inv" and self.kind(v[0]) == MAT:
+            return self.inverse(v[0][1])
+        if name == "det" and self.kind(v[0]) == MAT:
+            return self.det(v[0][1])
+        if name == "diag" and len(v) == 1 and self.kind(v[0]) == VEC:
+            return self.builtin("diag", list(v[0][1]))
+        if name == "unskew" and self.kind(v[0]) == MAT:
+            m = v[0][1]
+            return (VEC, (m[2][1], m[0][2], m[1][0]))
         if name == "hatM":
             return self.hat(v[0][1])
         if name == "skew":
@@ -253,6 +267,41 @@ class Evaluator:
             j = lambda x, y, w: c.mul(half, c.add(c.add(x, y), w, -1))  # noqa: E731
             return (VEC, (j(b, cc, a), j(cc, a, b), j(a, b, cc)))
         raise Unsupported(f"the function {name}")
+
+    def elliptic(self, name, u, k):
+        """sn, cn, dn of (u, k) as a node of the certificate with that function, argument
+        and modulus (each recomputed there from the addition theorems); the other twelve
+        Jacobi functions as their quotients (DLMF 22.2)."""
+        num, den = ELLIPTIC[name]
+        out = []
+        for f in (num, den):
+            f = {"s": "sn", "c": "cn", "d": "dn"}.get(f, f)
+            if f == "n":
+                out.append(self.c.one)
+                continue
+            hit = next((val for g, arg, kk, val in self.c.elliptic_nodes
+                        if g == f and kk is not None and self.c.eq(arg, u) and self.c.eq(kk, k)), None)
+            if hit is None:
+                raise Unsupported(f"{f} of an argument that is no elliptic node of the certificate")
+            out.append(hit)
+        return self.c.div(out[0], out[1])
+
+    def det(self, m):
+        c = self.c
+        acc = c.zero
+        for j in range(3):
+            minor = c.add(c.mul(m[1][(j + 1) % 3], m[2][(j + 2) % 3]), c.mul(m[1][(j + 2) % 3], m[2][(j + 1) % 3]), -1)
+            acc = c.add(acc, c.mul(m[0][j], minor))
+        return acc
+
+    def inverse(self, m):
+        """The inverse of a 3x3 matrix: the adjugate over the determinant."""
+        c = self.c
+        d = c.inv(self.det(m))
+        cof = [[c.add(c.mul(m[(i + 1) % 3][(j + 1) % 3], m[(i + 2) % 3][(j + 2) % 3]),
+                      c.mul(m[(i + 1) % 3][(j + 2) % 3], m[(i + 2) % 3][(j + 1) % 3]), -1)
+                for j in range(3)] for i in range(3)]
+        return (MAT, tuple(tuple(c.mul(cof[j][i], d) for j in range(3)) for i in range(3)))
 
     def hat(self, m):
         """The paper's hat: [[0, M3, -M2], [-M3, 0, M1], [M2, -M1, 0]]."""

@@ -16,8 +16,10 @@ def environment(cert, src):
     env = {}
     domain = next((v for k, v in src.items() if k.startswith("domain.")), {})
     for name, sampler in list(domain.get("vars", [])) + list(src.get("claim.vars", [])):
+        if "cplx(" in sampler:
+            continue  # a complex variable: not a real indeterminate of this evaluator
         comps = [f"{name}{j}" for j in (1, 2, 3)] if sampler.strip().startswith("vec(") else [name]
-        if all(cert.kinds.get(c) == "indeterminate" for c in comps):
+        if all(cert.kinds.get(c) == "indeterminate" or is_sign_symbol(cert, c) for c in comps):
             syms = [cert.frac(c) for c in comps]
             env[name] = syms[0] if len(syms) == 1 else ("vec", tuple(syms))
     return env
@@ -74,3 +76,8 @@ def split_difference(cert, a, b):
     if len(op) == 3 and op[1] == "-" and r == 0:
         return op[0], op[2]
     return a, b
+
+
+def is_sign_symbol(cert, name):
+    """A root with radicand 1: a variable drawn as a sign, both signs at once."""
+    return any(r == name and a == cert.ring.one for r, _, a in cert.roots)
