@@ -160,6 +160,28 @@ class Evaluator:
             return self.call(e[1], e[2], env)
         raise ExprError(f"unknown expression {tag}")
 
+    def derivative(self, name, args, env):
+        """d(expr, x), d(expr, v, j), grad(expr, v): the exact derivative with respect to
+        a variable that is an indeterminate of the certificate (the `let` bindings are
+        already functions of it)."""
+        if len(args) not in (2, 3) or args[1][0] != "var" or (name == "grad" and len(args) != 2):
+            raise ExprError(f"malformed {name}")
+        x = args[1][1]
+        if name == "grad":
+            names = [f"{x}{j}" for j in (1, 2, 3)]
+        elif len(args) == 3:
+            j = self.c.rational(self.scalar(self.eval(args[2], env)))
+            names = [f"{x}{int(j)}"] if j in (1, 2, 3) else []
+        else:
+            names = [x]
+        sym = {n for n in names if self.c.kinds.get(n) == "indeterminate"}
+        if not names or len(sym) != len(names) or x not in env:
+            raise Unsupported(f"a derivative with respect to {x}, which is no indeterminate here")
+        v = self.eval(args[0], env)
+        if name == "grad":
+            return (VEC, tuple(self.c.dfrac(self.scalar(v), n) for n in names))
+        return self.lift(lambda f: self.c.dfrac(f, names[0]), v)
+
     def boolean(self, v):
         if not isinstance(v, bool):
             raise ExprError("a condition that is not a boolean")
@@ -205,6 +227,8 @@ class Evaluator:
         raise ExprError(f"unknown operator {op}")
 
     def call(self, name, args, env):
+        if name in ("d", "grad"):
+            return self.derivative(name, args, env)
         if name in self.funcs:
             params, body = self.funcs[name]
             if len(params) != len(args):
