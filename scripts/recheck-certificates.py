@@ -1,8 +1,23 @@
 #!/usr/bin/env python3
 """Rechecks eulertop's algebraic certificates with SymPy, independently of FLINT.
 
-Usage: scripts/recheck-certificates.py [--jobs N] PATH...   (files, or directories of *.cert / *.txt)
-       scripts/recheck-certificates.py --self-test CERT   (three corruptions must fail)
+Usage: scripts/recheck-certificates.py [--catalogue DIR | --unbound] [--jobs N] [--premises] PATH...
+       scripts/recheck-certificates.py [--catalogue DIR | --unbound] --self-test CERT
+(PATHs: files, or directories of *.cert / *.txt; DIR defaults to identities)
+
+Bound to the claim (package certcheck): the `source` lines carry the claim's fields, its
+domain, its stated hypotheses and the definitions its formulas call, verbatim; they must
+be what the catalogue holds (the first difference is the reason).  The formulas are then
+evaluated here, by this checker's own parser of the expression language, from the
+certificate's symbols: each `claim` line's sides must be the claim's lhs and rhs (or
+d(expr, wrt) and 0) component by component.  Where the evaluator does not reach
+(implicit maps, complex values, a comparison whose sign the certificate does not prove)
+the claim is bound by its text only; the summary line counts both.  `premise` lines are
+the theorem's premises (printed with --premises): a branch or sign premise must be a
+hypothesis the claim states, with the catalogue's statement; every `assume` line of the
+derivation needs a premise; a lemma premise needs the lemma's certificate in the same
+run.  `claims N` states the number of claim lines.  With --unbound, the derivation alone
+is rechecked (for hand-written tests of the derivation rules).
 
 A certificate (written by the algebra layer, src/algebra/certificate.rs) declares the
 symbols, the root relations r**2 = a, the elliptic base arguments and the derivation DAG.
@@ -14,8 +29,10 @@ This script:
   * recomputes every node from its arguments with its own rational-function arithmetic
     modulo the relations, and compares with the stated normal form where one is given
     (a `dot + tA tB - tC tD ...` node is a sum of products, formed at once);
-  * square roots: the stated root squared equals the radicand (the sign is an assumption
-    of the proof and is only printed);
+  * square roots: the stated root squared equals the radicand, and its branch has
+    evidence: a proved `sign tN > 0` line, a nonnegative constant, a sign proved here from
+    the parametrization, or c*r for a root symbol r whose branch is otherwise free (no
+    posroot, no sign symbol; the same r never needed with both signs);
   * sn, cn, dn: recomputed from the base symbols with the addition theorems
     (DLMF 22.8.1-3), the quarter-period shifts (DLMF 22.4.3) and the half-period values,
     and the argument is checked to be the stated combination of the bases;
@@ -29,8 +46,9 @@ This script:
     symbol Z = E(am v, k) - k'^2 v; its derivative must satisfy c d v' + (dsn/dk) k' = s';
   * derivatives: recomputed by the chain rule from the `dvar` table, whose entries are
     checked (roots: 2 r r' = a'; sn: s' = c d u' (+ the modulus terms); indeterminates;
-    a `param`, a parameter of the proof's chart such as a phase step, has derivative 0
-    with respect to the other variables);
+    a `param`, a parameter of the proof's chart such as a phase step, moves with the
+    claim's variables as its chart equation says: no certificate states one, so a
+    derivative of a `param` is rejected rather than taken as 0);
   * a proof by parts of the domain writes one certificate per part, each from its own
     `# eulertop certificate` header; each part is rechecked with its own symbols, as the
     same name may stand for another root in another part;
@@ -59,9 +77,11 @@ common factor can have positive degree (usually none: the operands are coprime) 
 takes the gcd of the coefficients with respect to the other variables; only what
 remains goes to SymPy's heuristic gcd.  The gcds only keep the quotients small: every
 verdict rests on exact divisions and on the vanishing of reduced cross products.
-Exit status 0 when every certificate checks, 1 otherwise; with --self-test, 0 when the
-certificate checks and each corrupted copy (a coefficient of a stated normal form, a
-radicand, a claim's right-hand side) fails.  Optional; not run by CI.
+Exit status 0 when every certificate checks, 1 otherwise, 2 for bad usage; with
+--self-test, 0 when the certificate checks and each corrupted copy (a coefficient of a
+stated normal form, a radicand, a claim's right-hand side) fails.  CI runs it on every
+proved claim (scripts/recheck-all-certificates.sh); its own tests are
+scripts/test-recheck-certificates.py.
 """
 
 import heapq
@@ -1378,8 +1398,7 @@ def check_path(job):
     return res
 
 
-USAGE = ("usage: recheck-certificates.py [--catalogue DIR | --unbound] [--jobs N] [--premises] PATH...\n"
-         "       recheck-certificates.py [--catalogue DIR | --unbound] --self-test CERT")
+USAGE = "usage: recheck-certificates.py [--catalogue DIR | --unbound] [--jobs N] [--premises] (PATH... | --self-test CERT)"
 
 
 def options(args):
@@ -1432,7 +1451,7 @@ def main(argv):
         cat_dir, jobs, test, show, paths = options(argv[1:])
         catalogue = binding.Catalogue(cat_dir) if cat_dir is not None else None
     except (CheckError, binding.BindError) as e:
-        print(f"recheck-certificates: {e}\n{USAGE}", file=sys.stderr)
+        print(f"recheck-certificates: {e} ({USAGE})", file=sys.stderr)
         return 2
     if test is not None:
         return self_test(test, catalogue)

@@ -16,7 +16,13 @@
 //! node t15 = d t14 x -> …          # derivative; `dvar x v = …` lines give d v/d x
 //! inverse v k=(…) s=(…) c=(…) d=(…) z=Z_v   # an inverse of sn, cn, dn: sn v = s, …
 //! claim t20 = t31
+//! part "M3" > 0                    # a proof by parts: the condition of this part
+//! assume branch step_gamma1 "…"    # a fact the derivation rests on (branch, lemma, hypothesis)
 //! ```
+//!
+//! After the header and `# claim:` title, `claims N` states the number of `claim` lines.
+//! `eulertop prove --certificate` adds the claim's `source` and `premise` lines
+//! (`crate::cli::cert_source`), which bind the derivation to the catalogue.
 //!
 //! The checker recomputes every operation from its arguments, reduces modulo the root
 //! relations, and compares with the stated normal form; elliptic nodes are recomputed
