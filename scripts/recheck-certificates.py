@@ -294,6 +294,8 @@ class Cert:
         self.sign_lines = set()  # node ids with a proved sign > 0
         self.ops = {}  # node id -> its operation, as tokens
         self.elliptic_nodes = []  # (sn|cn|dn, argument, modulus, value): the evaluator's
+        self.charts = {}  # implicit map -> [(arguments' components, value's components)]
+        self.chart_counts = (0, 0)
 
     # ---- the ring ----------------------------------------------------------------
     def declare(self, text):
@@ -1054,6 +1056,8 @@ class Cert:
             self.assumes.append((kind, name, json.loads(stmt)))
         elif word == "part":
             self.conditions.append(rest)
+        elif word == "chart":
+            self.chart(rest)
         elif word in ("source", "premise"):
             pass  # the claim and the theorem's premises: checked for the whole file
         else:
@@ -1079,6 +1083,15 @@ class Cert:
                       f"{claims} claim line(s) where the certificate announces {self.expected_claims}")
         self.check_branches()
         return claims
+
+    def chart(self, rest):
+        """chart NAME(ARGS) value=tA,...: the value of an implicit map at the chart's
+        arguments (components separated by ', ', arguments by '; ')."""
+        head, _, value = rest.rpartition(" value=")
+        name, _, args = head.partition("(")
+        self.need(args.endswith(")") and value, f"malformed chart line {rest[:40]}")
+        argv = [[self.frac(c) for c in a.split(", ")] for a in args[:-1].split("; ")]
+        self.charts.setdefault(name, []).append((argv, [self.vals[t] for t in value.split(",")]))
 
     def rational(self, v):
         """v as a Fraction when it is a constant, else None."""
@@ -1253,6 +1266,7 @@ class Result:
     def __init__(self, path):
         self.path, self.ok, self.why, self.secs = path, False, "", 0.0
         self.claim, self.premises, self.lemmas, self.binding = None, [], [], "unbound"
+        self.charts = [0, 0]  # equations of implicit maps verified at the chart, not reached
 
 
 def check_premises(text, claim, catalogue, assumes):
@@ -1298,14 +1312,15 @@ def check_text(name, text, catalogue=None):
         src, claim = {}, None
         if catalogue is not None:
             res.claim, claim, src = binding.bind(text, catalogue)
-        assumes, modes = [], set()
+        assumes, modes, charts = [], set(), [0, 0]
         for first, part in parts(text):
             cert = Cert(name)
             claims += cert.run(part, first)
             checked += cert.checked
             assumes += cert.assumes
             if catalogue is not None:
-                modes.add(formula.check(cert, src))
+                modes.add(formula.check(cert, src, catalogue))
+                charts = [a + b for a, b in zip(charts, cert.chart_counts)]
         res.premises = check_premises(text, claim, catalogue, assumes)
         res.lemmas = [s for k, s, _ in res.premises if k == "lemma"]
         res.binding = "unbound" if catalogue is None else (
@@ -1314,7 +1329,12 @@ def check_text(name, text, catalogue=None):
         known = (CheckError, binding.BindError, formula.FormulaMismatch)
         res.why = f"{type(e).__name__ + ' ' if not isinstance(e, known) else ''}{e}"
         return res
-    res.ok, res.why = True, f"{claims} claim(s), {checked} equalities checked; formulas: {res.binding}"
+    res.charts = charts if catalogue is not None else [0, 0]
+    chart_note = ""
+    if sum(res.charts):
+        chart_note = f"; charts: {res.charts[0]} equation(s) of the catalogue verified" + (
+            f", {res.charts[1]} not reached" if res.charts[1] else "")
+    res.ok, res.why = True, f"{claims} claim(s), {checked} equalities checked; formulas: {res.binding}{chart_note}"
     return res
 
 

@@ -126,6 +126,17 @@ class Cases:
                     recheck([write(t, "m-stated.cert", master.replace(
                         "premise branch hypothesis.branch-delta1", "premise branch hypothesis.branch-delta2"))]),
                     False, "the claim does not state hypothesis branch-delta2")
+        step = prove("sec3.int.g2", t)
+        self.expect("a chart of an implicit map is verified against the map's equations in the catalogue",
+                    recheck([write(t, "int.cert", step)]), True, "equation(s) of the catalogue verified")
+        m = re.search(r"^(chart \S+\(.*\) value=)(t\d+),(t\d+),", step, re.M)
+        swapped = step.replace(m.group(0), f"{m.group(1)}{m.group(3)},{m.group(2)},")
+        self.expect("a chart that does not satisfy the map's equations is rejected",
+                    recheck([write(t, "int-chart.cert", swapped)]), False, "does not satisfy")
+        status, output = recheck(["x.cert"], "--catalogue", os.path.join(t, "no-such-dir"))
+        self.expect("a missing catalogue: one line, exit status 2",
+                    (0 if status == 2 and len(output.strip().splitlines()) == 1 else 1, output), True,
+                    "no catalogue directory")
         casimir = prove("sec2.M2.casimir", t)
         lemma = et.replace("\nclaims 3", '\npremise lemma sec2.M2.casimir "the Casimir"\nclaims 3')
         self.expect("a lemma used without its certificate is rejected",

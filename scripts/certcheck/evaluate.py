@@ -175,7 +175,14 @@ class Evaluator:
         else:
             names = [x]
         sym = {n for n in names if self.c.kinds.get(n) == "indeterminate"}
-        if not names or len(sym) != len(names) or x not in env:
+        bound = self.components(env[x]) if x in env and not callable(env[x]) else []
+        own = [self.c.frac(n) for n in names] if len(sym) == len(names) else []
+        if names and len(bound) == 1 and len(names) == 1 and len(own) == 1:
+            bound = [bound[0]]
+        elif len(bound) == 3 and len(names) == 1 and own:
+            bound = [bound[int(names[0][-1]) - 1]]
+        if not names or not own or len(bound) != len(own) or \
+                not all(self.c.eq(b, o) for b, o in zip(bound, own)):
             raise Unsupported(f"a derivative with respect to {x}, which is no indeterminate here")
         v = self.eval(args[0], env)
         if name == "grad":
@@ -235,6 +242,8 @@ class Evaluator:
                 raise ExprError(f"{name} takes {len(params)} arguments")
             vals = [self.eval(a, env) for a in args]
             return self.eval(body, dict(zip(params, vals)))
+        if name in self.c.charts:
+            return self.implicit(name, [self.eval(a, env) for a in args])
         if name in env and callable(env[name]):
             return env[name]([self.eval(a, env) for a in args])
         return self.builtin(name, [self.eval(a, env) for a in args])
@@ -309,6 +318,21 @@ class Evaluator:
                 raise Unsupported(f"{f} of an argument that is no elliptic node of the certificate")
             out.append(hit)
         return self.c.div(out[0], out[1])
+
+    def implicit(self, name, args):
+        """An implicit map's value where the certificate's chart gives it: at arguments
+        equal to the chart's, component by component."""
+        comps = [self.components(a) for a in args]
+        for argv, value in self.c.charts[name]:
+            if [len(a) for a in argv] == [len(a) for a in comps] and all(
+                    self.c.eq(x, y) for a, b in zip(argv, comps) for x, y in zip(a, b)):
+                if len(value) == 1:
+                    return value[0]
+                if len(value) == 3:
+                    return (VEC, tuple(value))
+                if len(value) == 9:
+                    return (MAT, tuple(tuple(value[3 * i:3 * i + 3]) for i in range(3)))
+        raise Unsupported(f"{name} at arguments that are not its chart's")
 
     def det(self, m):
         c = self.c

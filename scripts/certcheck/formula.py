@@ -1,6 +1,8 @@
 """Evaluates a claim's lhs and rhs (or d(expr, wrt) and 0) from a certificate's symbols
 and compares them with the sides of the derivation's `claim` lines."""
 
+import re
+
 from .evaluate import Evaluator
 from .exprlang import Parser, Unsupported
 
@@ -22,6 +24,23 @@ def environment(cert, src):
         if all(cert.kinds.get(c) == "indeterminate" or is_sign_symbol(cert, c) for c in comps):
             syms = [cert.frac(c) for c in comps]
             env[name] = syms[0] if len(syms) == 1 else ("vec", tuple(syms))
+    return chart_variables(cert, src, env)
+
+
+def chart_variables(cert, src, env):
+    """The claim's variables at which it calls an implicit map of the certificate's one
+    chart of that map, bound to the chart's arguments: the change of variables the proof
+    makes (the chart itself is checked against the map's equations)."""
+    text = "\n".join(str(src.get(f"claim.{k}") or "") for k in ("let", "lhs", "rhs", "expr"))
+    for name, entries in cert.charts.items():
+        m = re.search(rf"\b{re.escape(name)}\(([^()]*)\)", text)
+        if m is None or len(entries) != 1:
+            continue
+        params = [p.strip() for p in m.group(1).split(",")]
+        argv = entries[0][0]
+        if len(params) == len(argv) and all(re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", p) for p in params):
+            for p, a in zip(params, argv):
+                env[p] = a[0] if len(a) == 1 else ("vec", tuple(a))
     return env
 
 
@@ -44,10 +63,53 @@ def sides(cert, src):
     raise Unsupported(f"a claim of kind {kind}")
 
 
-def check(cert, src):
+def chart_checks(cert, catalogue):
+    """Each chart of an implicit map, substituted into the map's equations as the
+    catalogue states them (the claims whose `construction` names the map, where the map is
+    called at bare variables): (verified, not reached) counts; FormulaMismatch when an
+    equation fails."""
+    done = skipped = 0
+    for name, entries in cert.charts.items():
+        claims = [c for _, c in catalogue.claims.values()
+                  if str(c.get("construction", "")).startswith(f"{name} ") and c.get("kind") == "identity"]
+        for argv, _ in entries:
+            for c in claims:
+                try:
+                    ok = chart_claim(cert, catalogue, name, argv, c)
+                except Unsupported:
+                    skipped += 1
+                    continue
+                except Exception:  # noqa: BLE001 - not evaluated here
+                    skipped += 1
+                    continue
+                if not ok:
+                    raise FormulaMismatch(f"the chart of {name} does not satisfy {c['id']}, its equation in the catalogue")
+                done += 1
+    return done, skipped
+
+
+def chart_claim(cert, catalogue, name, argv, claim):
+    """True when claim's lhs = rhs holds with the map's arguments set to the chart's."""
+    text = (claim.get("let") or "") + "\n" + claim["lhs"] + "\n" + claim["rhs"]
+    m = re.search(rf"\b{re.escape(name)}\(([^()]*)\)", text)
+    if m is None:
+        raise Unsupported(f"{claim['id']} calls {name} at expressions")
+    params = [p.strip() for p in m.group(1).split(",")]
+    if len(params) != len(argv) or not all(re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", p) for p in params):
+        raise Unsupported(f"{claim['id']} calls {name} at expressions")
+    env = {p: (a[0] if len(a) == 1 else ("vec", tuple(a))) for p, a in zip(params, argv)}
+    ev = Evaluator(cert, [t for _, t in catalogue.defines.values()])
+    ev.let(claim.get("let"), env)
+    lhs = ev.components(ev.eval(Parser(claim["lhs"]).whole(), env))
+    rhs = ev.components(ev.eval(Parser(claim["rhs"]).whole(), env))
+    return len(lhs) == len(rhs) and all(cert.eq(x, y) for x, y in zip(lhs, rhs))
+
+
+def check(cert, src, catalogue=None):
     """'evaluated' when the derivation's claim lines are the claim's sides evaluated
     here, 'text' when the evaluator does not cover the claim (it is then bound by the
     text of its formulas only); FormulaMismatch with the first difference otherwise."""
+    cert.chart_counts = chart_checks(cert, catalogue) if catalogue is not None and cert.charts else (0, 0)
     try:
         lhs, rhs = sides(cert, src)
     except Unsupported as e:
@@ -55,6 +117,11 @@ def check(cert, src):
     except Exception as e:  # noqa: BLE001 - whatever the evaluator cannot do binds by text only
         return f"text (not evaluated: {type(e).__name__} {e})"
     pairs = cert.claim_pairs
+    # after the claim's components, a proof through a chart claims the map's equations at
+    # the chart (each rechecked as an equality; the chart is verified against the catalogue)
+    extra = len(pairs) - len(lhs)
+    if extra > 0 and cert.charts:
+        pairs = pairs[:len(lhs)]
     if len(pairs) != len(lhs):
         raise FormulaMismatch(f"the claim has {len(lhs)} component(s), the derivation {len(pairs)} claim line(s)")
     for j, ((a, b), l, r) in enumerate(zip(pairs, lhs, rhs), 1):

@@ -184,6 +184,7 @@ impl Ring {
             out: String::new(),
         };
         self.equivalence_lines(&mut em, &names);
+        self.chart_lines(&mut em);
         let mut claims = Vec::new();
         for (ln, rn) in &nodes {
             let a = em.visit(ln);
@@ -249,6 +250,25 @@ impl Ring {
             }
         }
         out
+    }
+
+    /// The chart of each implicit map the proof parametrizes: `chart NAME(ARGS) value=…`
+    /// with the arguments as rendered (components `, `, arguments `; `) and the nodes of
+    /// the map's value there, so that a recheck substitutes the chart into the map's
+    /// equations as the catalogue states them.
+    fn chart_lines(&self, em: &mut Emitter<'_>) {
+        let charts = self.state().implicit_values.clone();
+        for (key, (_, vals)) in charts {
+            let Some(nodes) = vals
+                .iter()
+                .map(|(_, n)| n.clone())
+                .collect::<Option<Vec<_>>>()
+            else {
+                continue;
+            };
+            let ids: Vec<String> = nodes.iter().map(|n| format!("t{}", em.visit(n))).collect();
+            let _ = writeln!(em.out, "chart {key} value={}", ids.join(","));
+        }
     }
 
     /// For each symbol with prescribed sn, cn, dn that an argument replaces inside sn,
