@@ -1492,6 +1492,9 @@ def main(argv):
     bad = sum(not r.ok for r in results)
     n = len(results)
     how = ", ".join(f"{v} {k}" for k, v in sorted(bound.items()) if v)
+    with_chart = [r for r in results if r.ok and sum(r.charts)]
+    if with_chart:
+        how += f"; {sum(r.charts[0] > 0 for r in with_chart)} of {len(with_chart)} charts verified"
     print(f"{n - bad} of {n} certificates recheck ({how}; {time.perf_counter() - start:.1f} s)")
     return 1 if bad else 0
 

@@ -11,7 +11,7 @@ class FormulaMismatch(Exception):
     pass
 
 
-def environment(cert, src):
+def environment(cert, src, charts=True):
     """The claim's sampled variables as the certificate's symbols: a scalar by its name,
     a vector M as (M1, M2, M3).  A variable the certificate does not declare as an
     indeterminate is left out (using it is then Unsupported)."""
@@ -24,7 +24,7 @@ def environment(cert, src):
         if all(cert.kinds.get(c) == "indeterminate" or is_sign_symbol(cert, c) for c in comps):
             syms = [cert.frac(c) for c in comps]
             env[name] = syms[0] if len(syms) == 1 else ("vec", tuple(syms))
-    return chart_variables(cert, src, env)
+    return chart_variables(cert, src, env) if charts else env
 
 
 def chart_variables(cert, src, env):
@@ -97,7 +97,10 @@ def chart_claim(cert, catalogue, name, argv, claim):
     params = [p.strip() for p in m.group(1).split(",")]
     if len(params) != len(argv) or not all(re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", p) for p in params):
         raise Unsupported(f"{claim['id']} calls {name} at expressions")
-    env = {p: (a[0] if len(a) == 1 else ("vec", tuple(a))) for p, a in zip(params, argv)}
+    domain = f"domain.{claim.get('domain')}"
+    env = environment(cert, {domain: catalogue.tables.get(domain, {}), "claim.vars": claim.get("vars", [])},
+                      charts=False)
+    env.update({p: (a[0] if len(a) == 1 else ("vec", tuple(a))) for p, a in zip(params, argv)})
     ev = Evaluator(cert, [t for _, t in catalogue.defines.values()])
     ev.let(claim.get("let"), env)
     lhs = ev.components(ev.eval(Parser(claim["lhs"]).whole(), env))
