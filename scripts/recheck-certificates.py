@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Rechecks eulertop's algebraic certificates with SymPy, independently of FLINT.
 
-Usage: scripts/recheck-certificates.py [--catalogue DIR | --unbound] [--jobs N] [--premises] PATH...
+Usage: scripts/recheck-certificates.py [--catalogue DIR | --unbound] [--jobs N] PATH...
        scripts/recheck-certificates.py [--catalogue DIR | --unbound] --self-test CERT
 (PATHs: files, or directories of *.cert / *.txt; DIR defaults to identities)
 
@@ -13,7 +13,7 @@ certificate's symbols: each `claim` line's sides must be the claim's lhs and rhs
 d(expr, wrt) and 0) component by component.  Where the evaluator does not reach
 (implicit maps, complex values, a comparison whose sign the certificate does not prove)
 the claim is bound by its text only; the summary line counts both.  `premise` lines are
-the theorem's premises (printed with --premises): a branch or sign premise must be a
+the theorem's premises (printed under the certificate's line): a branch or sign premise must be a
 hypothesis the claim states, with the catalogue's statement; every `assume` line of the
 derivation needs a premise; a lemma premise needs the lemma's certificate in the same
 run.  `claims N` states the number of claim lines.  With --unbound, the derivation alone
@@ -1267,6 +1267,7 @@ class Result:
         self.path, self.ok, self.why, self.secs = path, False, "", 0.0
         self.claim, self.premises, self.lemmas, self.binding = None, [], [], "unbound"
         self.charts = [0, 0]  # equations of implicit maps verified at the chart, not reached
+        self.cases = []  # the condition of each part of a proof by parts ('' for a whole proof)
 
 
 def check_premises(text, claim, catalogue, assumes):
@@ -1318,6 +1319,7 @@ def check_text(name, text, catalogue=None):
             claims += cert.run(part, first)
             checked += cert.checked
             assumes += cert.assumes
+            res.cases.append(" and ".join(cert.conditions))
             if catalogue is not None:
                 modes.add(formula.check(cert, src, catalogue))
                 charts = [a + b for a, b in zip(charts, cert.chart_counts)]
@@ -1418,12 +1420,12 @@ def check_path(job):
     return res
 
 
-USAGE = "usage: recheck-certificates.py [--catalogue DIR | --unbound] [--jobs N] [--premises] (PATH... | --self-test CERT)"
+USAGE = "usage: recheck-certificates.py [--catalogue DIR | --unbound] [--jobs N] (PATH... | --self-test CERT)"
 
 
 def options(args):
-    """(catalogue dir or None, jobs, self-test path or None, print premises, paths)."""
-    cat, jobs, test, show, paths = "identities", os.cpu_count() or 1, None, False, []
+    """(catalogue dir or None, jobs, self-test path or None, paths)."""
+    cat, jobs, test, paths = "identities", os.cpu_count() or 1, None, []
     i = 0
     while i < len(args):
         a = args[i]
@@ -1443,8 +1445,6 @@ def options(args):
             continue
         if a == "--unbound":
             cat = None
-        elif a == "--premises":
-            show = True
         elif a.startswith("--"):
             raise CheckError(f"unknown option {a}")
         else:
@@ -1452,7 +1452,7 @@ def options(args):
         i += 1
     if test is None and not paths:
         raise CheckError("no certificate given")
-    return cat, jobs, test, show, paths
+    return cat, jobs, test, paths
 
 
 def lemma_failures(results):
@@ -1468,7 +1468,7 @@ def lemma_failures(results):
 
 def main(argv):
     try:
-        cat_dir, jobs, test, show, paths = options(argv[1:])
+        cat_dir, jobs, test, paths = options(argv[1:])
         catalogue = binding.Catalogue(cat_dir) if cat_dir is not None else None
     except (CheckError, binding.BindError) as e:
         print(f"recheck-certificates: {e} ({USAGE})", file=sys.stderr)
@@ -1487,8 +1487,10 @@ def main(argv):
             r.ok, r.why = False, late[r.path]
         bound[r.binding.split(" ")[0]] = bound.get(r.binding.split(" ")[0], 0) + r.ok
         print(f"{'OK  ' if r.ok else 'FAIL'}  {r.path}: {r.why} ({r.secs:.2f} s)", flush=True)
-        for kind, source, statement in (r.premises if show and r.ok else []):
+        for kind, source, statement in (r.premises if r.ok else []):
             print(f"      premise [{kind}: {source}] {statement}")
+        for j, case in enumerate(r.cases if r.ok and len(r.cases) > 1 else [], 1):
+            print(f"      part {j} of the domain: {case or 'the rest'}")
     bad = sum(not r.ok for r in results)
     n = len(results)
     how = ", ".join(f"{v} {k}" for k, v in sorted(bound.items()) if v)

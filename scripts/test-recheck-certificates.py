@@ -117,7 +117,7 @@ class Cases:
                     recheck([write(t, "et-formula.cert", wrong)]), False, "is not the catalogue's")
         master = prove("sec7.master12.g1.up", t)
         self.expect("the premises are printed",
-                    recheck([write(t, "m.cert", master)], "--premises"), True,
+                    recheck([write(t, "m.cert", master)]), True,
                     "premise [branch: hypothesis.branch-delta1]")
         self.expect("a deleted hypothesis is rejected",
                     recheck([write(t, "m-premise.cert", without(master, r"premise branch"))]), False,

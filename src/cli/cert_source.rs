@@ -83,7 +83,14 @@ pub fn identifiers(text: &str) -> Vec<String> {
 }
 
 impl RawCatalogue {
-    /// Reads every `*.toml` file of `dir`.
+    /// Reads every `*.toml` file of `dir` (an error names the file that cannot be read
+    /// or parsed).
+    ///
+    /// ```
+    /// use eulertop::cli::cert_source::RawCatalogue;
+    /// assert!(RawCatalogue::read("identities").is_ok());
+    /// assert!(RawCatalogue::read("no-such-directory").is_err());
+    /// ```
     pub fn read(dir: &str) -> Result<Self, CliError> {
         let mut files: Vec<_> = std::fs::read_dir(dir)
             .map_err(|e| CliError(format!("cannot read {dir}: {e}")))?
@@ -133,6 +140,16 @@ impl RawCatalogue {
     }
 
     /// The `source` lines of claim `id` (see the module doc).
+    ///
+    /// ```
+    /// use eulertop::cli::cert_source::RawCatalogue;
+    /// let cat = RawCatalogue::read("identities").unwrap();
+    /// let lines = cat.source_lines("sec2.ET-v.corrected").unwrap();
+    /// assert!(lines.starts_with("source id \"sec2.ET-v.corrected\"\n"));
+    /// // the definition of ETrhs, which the lhs calls
+    /// assert!(lines.contains("source define.sec2.def.ET \"ETrhs(M, A, B, C) = "));
+    /// assert!(cat.source_lines("no.such.claim").is_err());
+    /// ```
     pub fn source_lines(&self, id: &str) -> Result<String, CliError> {
         let (file, claim) = (self.claims.get(id))
             .ok_or_else(|| CliError(format!("no claim with id '{id}' in the catalogue files")))?;
@@ -195,6 +212,20 @@ impl RawCatalogue {
 }
 
 /// The `premise` lines: every hypothesis the proof rests on, with its kind and source.
+///
+/// ```
+/// use eulertop::claims::verdict::HypothesisUse;
+/// use eulertop::cli::cert_source::premise_lines;
+/// let h = HypothesisUse {
+///     kind: "lemma",
+///     statement: "the step's value".into(),
+///     source: "sec7.master12.step.up".into(),
+/// };
+/// assert_eq!(
+///     premise_lines(&[h]),
+///     "premise lemma sec7.master12.step.up \"the step's value\"\n"
+/// );
+/// ```
 pub fn premise_lines(hypotheses: &[HypothesisUse]) -> String {
     hypotheses
         .iter()
@@ -207,6 +238,13 @@ pub fn premise_lines(hypotheses: &[HypothesisUse]) -> String {
 
 /// The certificate with the claim's `source` and `premise` lines after its first line
 /// (the header of its first part).
+///
+/// ```
+/// use eulertop::cli::cert_source::bind;
+/// let cert = "# eulertop certificate 1\nnode t1 = 1\nclaim t1 = t1\n";
+/// let bound = bind(cert, "source id \"x\"\n", "");
+/// assert_eq!(bound, "# eulertop certificate 1\nsource id \"x\"\nnode t1 = 1\nclaim t1 = t1\n");
+/// ```
 pub fn bind(cert: &str, source: &str, premises: &str) -> String {
     let (head, rest) = cert.split_once('\n').unwrap_or((cert, ""));
     format!("{head}\n{source}{premises}{rest}")
