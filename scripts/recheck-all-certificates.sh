@@ -30,6 +30,6 @@ for f in "$out"/*.err; do
   [ -s "$f" ] && echo "  no certificate: $(basename "$f" .err): $(head -c 300 "$f" | sed 's/.*: no certificate written to [^:]*: //')"
 done
 python3 scripts/recheck-certificates.py --catalogue identities --jobs "$jobs" "$out" >"$out/recheck.log" && status=0 || status=$?
-grep -v '^OK' "$out/recheck.log" || true
+grep -v -e '^OK' -e '^      ' "$out/recheck.log" || true
 echo "recheck: $(tail -1 "$out/recheck.log"); ${SECONDS} s wall for verify, writing and rechecking"
 exit "$status"
