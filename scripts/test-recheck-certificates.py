@@ -77,6 +77,40 @@ def changed_catalogue(tmp, claim_ids=None):
     return cat
 
 
+EVALUATIONS = [  # (expression of the catalogue's language, its value as a certificate writes it)
+    ("-x^2", "-x**2"), ("2^-1", "1/2"), ("x - y - 1", "x - y - 1"), ("x / y / 2", "x/(2*y)"),
+    ("f(x + 1)", "x**2 + 2*x + 2"), ("if 1 > 0 and not 2 < 1 then x else y", "x"),
+    ("dot(vec(x, y, 1), [1, 2, 3])", "x + 2*y + 3"), ("cross([1, 0, 0], [0, 1, 0])[3]", "1"),
+    ("([[1, 2, 0], [0, 1, 0], [0, 0, 1]] * vec(x, y, 1))[1]", "x + 2*y"),
+    ("inv([[2, 0, 0], [0, x, 0], [0, 0, 1]])[2, 2]", "1/x"), ("det(diag(x, y, 2))", "2*x*y"),
+    ("1e-3 + .5", "501/1000"), ("(x + y)^2 - x^2", "2*x*y + y**2"), ("1 - 2 * 3^2", "-17"),
+]
+
+
+def evaluator_cases():
+    """(expression, expected, got or error) of each evaluation that differs."""
+    import importlib.util
+    sys.path.insert(0, os.path.join(ROOT, "scripts"))
+    spec = importlib.util.spec_from_file_location("recheck", RECHECK)
+    rc = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(rc)
+    from certcheck.evaluate import Evaluator
+    from certcheck.exprlang import Parser
+    cert = rc.Cert("evaluator")
+    cert.run("field x indeterminate\nfield y indeterminate\nnode t1 = x\nclaim t1 = t1\n")
+    ev = Evaluator(cert, ["f(a) = a^2 + 1"])
+    env = {"x": cert.frac("x"), "y": cert.frac("y")}
+    bad = []
+    for text, want in EVALUATIONS:
+        try:
+            got = ev.eval(Parser(text).whole(), env)
+            if not cert.eq(got, cert.frac(want)):
+                bad.append((text, want, f"{got.num.as_expr()}/{got.den.as_expr()}"))
+        except Exception as e:  # noqa: BLE001 - reported as a failed case
+            bad.append((text, want, f"{type(e).__name__} {e}"))
+    return bad
+
+
 class Cases:
     def __init__(self, tmp):
         self.tmp, self.failures, self.count = tmp, [], 0
@@ -92,6 +126,10 @@ class Cases:
 
     def run(self):
         t = self.tmp
+        bad = evaluator_cases()
+        self.expect(f"the evaluator of the expression language: {len(EVALUATIONS) - len(bad)} of "
+                    f"{len(EVALUATIONS)} expressions as the language defines them",
+                    (0 if not bad else 1, "\n".join(f"{a}: want {b}, got {c}" for a, b, c in bad)), True, "")
         self.expect("the wrong square-root branch of the issue is rejected",
                     recheck([os.path.join(DATA, "wrong-branch.cert")], "--unbound"), False,
                     "square-root branch has no evidence")
