@@ -134,7 +134,8 @@ class Evaluator:
             return self.const(e[1])
         if tag == "var":
             if e[1] in env:
-                return env[e[1]]
+                v = env[e[1]]
+                return v.force() if isinstance(v, Lazy) else v
             if e[1] == "I3":
                 return self.builtin("I3", [])
             raise Unsupported(f"the name {e[1]}")
@@ -175,7 +176,9 @@ class Evaluator:
         else:
             names = [x]
         sym = {n for n in names if self.c.kinds.get(n) == "indeterminate"}
-        bound = self.components(env[x]) if x in env and not callable(env[x]) else []
+        bx = env.get(x)
+        bx = bx.force() if isinstance(bx, Lazy) else bx
+        bound = self.components(bx) if bx is not None and not callable(bx) else []
         own = [self.c.frac(n) for n in names] if len(sym) == len(names) else []
         if names and len(bound) == 1 and len(names) == 1 and len(own) == 1:
             bound = [bound[0]]
@@ -360,10 +363,24 @@ class Evaluator:
         """Adds the `let` bindings to env (local functions as closures)."""
         for name, params, tree in bindings(text):
             if params is None:
-                env[name] = self.eval(tree, env)
+                # evaluated where it is first used: a binding the sides do not use may
+                # stay beyond this evaluator
+                env[name] = Lazy(self, tree, env)
             else:
                 glob = {k: f for k, f in env.items() if callable(f)}
                 env[name] = (lambda p, t, g: lambda vals: self.eval(t, {**g, **dict(zip(p, vals))}))(params, tree, glob)
+
+
+class Lazy:
+    """A `let` binding not evaluated yet (in the environment of its line)."""
+
+    def __init__(self, ev, tree, env):
+        self.ev, self.tree, self.env, self.value = ev, tree, dict(env), None
+
+    def force(self):
+        if self.value is None:
+            self.value = self.ev.eval(self.tree, self.env)
+        return self.value
 
 
 def _isqrt(n):
