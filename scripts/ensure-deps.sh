@@ -18,6 +18,30 @@ if [ "${#missing[@]}" -gt 0 ]; then
     exit 2
   fi
 fi
+# The second system that rechecks the certificates (scripts/recheck-certificates.py)
+# needs Python 3.11 or later (tomllib) and SymPy.  pip installs SymPy for the user (on a
+# system that marks its Python as externally managed, with --break-system-packages);
+# where there is no pip, apt-get installs python3-sympy when running as root.
+if command -v python3 >/dev/null 2>&1 && ! python3 -c 'import sympy, tomllib' >/dev/null 2>&1; then
+  echo "eulertop: installing SymPy (for the recheck of the certificates)" >&2
+  if python3 -m pip --version >/dev/null 2>&1; then
+    python3 -m pip install -q sympy >/dev/null 2>&1 ||
+      python3 -m pip install -q --break-system-packages sympy >/dev/null
+  elif [ "$(id -u)" = "0" ] && command -v apt-get >/dev/null 2>&1; then
+    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq python3-sympy) >/dev/null
+  else
+    echo "eulertop: SymPy missing; install it first (python3 -m pip install sympy), needed to recheck certificates" >&2
+    exit 2
+  fi
+elif ! command -v python3 >/dev/null 2>&1; then
+  if [ "$(id -u)" = "0" ] && command -v apt-get >/dev/null 2>&1; then
+    echo "eulertop: installing python3 and SymPy (for the recheck of the certificates)" >&2
+    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq python3 python3-sympy) >/dev/null
+  else
+    echo "eulertop: python3 missing; install it first (sudo apt-get install python3 python3-sympy), needed to recheck certificates" >&2
+    exit 2
+  fi
+fi
 # flint-sys keeps a built FLINT under $FLINT_SYS_CACHE or the user cache directory.
 cache="${FLINT_SYS_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/flint-sys}"
 if ! ls "$cache"/*/libflint.a >/dev/null 2>&1 && ! ls target/release/build/flint-sys-*/out/lib/libflint.a >/dev/null 2>&1; then

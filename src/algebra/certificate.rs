@@ -16,7 +16,13 @@
 //! node t15 = d t14 x -> …          # derivative; `dvar x v = …` lines give d v/d x
 //! inverse v k=(…) s=(…) c=(…) d=(…) z=Z_v   # an inverse of sn, cn, dn: sn v = s, …
 //! claim t20 = t31
+//! part "M3" > 0                    # a proof by parts: the condition of this part
+//! assume branch step_gamma1 "…"    # a fact the derivation rests on (branch, lemma, hypothesis)
 //! ```
+//!
+//! After the header and `# claim:` title, `claims N` states the number of `claim` lines.
+//! `eulertop prove --certificate` adds the claim's `source` and `premise` lines
+//! (`crate::cli::cert_source`), which bind the derivation to the catalogue.
 //!
 //! The checker recomputes every operation from its arguments, reduces modulo the root
 //! relations, and compares with the stated normal form; elliptic nodes are recomputed
@@ -25,13 +31,30 @@
 use super::base_table::Table;
 use super::flint::Poly;
 use super::node::{Node, Op};
-use super::ring::{Ring, VarKind, describe_kind};
+use super::ring::{Assumption, AssumptionKind, Ring, VarKind, describe_kind};
 use super::sym::Sym;
 use super::val::Val;
 
 use std::collections::HashMap;
 use std::fmt::Write;
 use std::sync::Arc;
+
+/// A string as a JSON literal (quoted, escaped), so that a statement is one line.
+fn json(s: &str) -> String {
+    serde_json::to_string(s).unwrap_or_default()
+}
+
+/// The `assume KIND NAME STATEMENT` line of a fact the derivation rests on: the branch
+/// of an implicit map (named by the map), a lemma (by the claim's id) or a stated
+/// hypothesis (by its label); the recheck requires a premise of the theorem for each.
+fn assume_line(a: &Assumption) -> String {
+    let (kind, name) = match &a.kind {
+        AssumptionKind::Branch(m) => ("branch", m),
+        AssumptionKind::Lemma(id) => ("lemma", id),
+        AssumptionKind::Hypothesis(label) => ("hypothesis", label),
+    };
+    format!("assume {kind} {name} {}\n", json(&a.statement))
+}
 
 /// A machine-readable tag of a field variable's kind.
 fn kind_tag(k: &VarKind) -> &'static str {
@@ -152,6 +175,8 @@ impl Ring {
         let mut out = String::new();
         let _ = writeln!(out, "# eulertop certificate 1");
         let _ = writeln!(out, "# claim: {}", title.replace('\n', " "));
+        // the number of claim lines: a deleted one is noticed
+        let _ = writeln!(out, "claims {}", pairs.len());
         out.push_str(&self.symbol_lines(&names));
         let mut em = Emitter {
             names: &names,
@@ -159,6 +184,7 @@ impl Ring {
             out: String::new(),
         };
         self.equivalence_lines(&mut em, &names);
+        self.chart_lines(&mut em);
         let mut claims = Vec::new();
         for (ln, rn) in &nodes {
             let a = em.visit(ln);
@@ -173,7 +199,7 @@ impl Ring {
         }
         for (h, s) in &self.inner.opts.hypotheses {
             let rel = if *s > 0 { ">" } else { "<" };
-            let _ = writeln!(out, "# part of the domain (hypothesis): {} {rel} 0", h.what);
+            let _ = writeln!(out, "part {} {rel} 0", json(&h.what));
         }
         for f in &self.state().signs.folded {
             let _ = writeln!(
@@ -183,7 +209,7 @@ impl Ring {
             );
         }
         for a in self.assumptions() {
-            let _ = writeln!(out, "# assumption ({:?}): {}", a.origin, a.statement);
+            out.push_str(&assume_line(&a));
         }
         Some(out)
     }
@@ -224,6 +250,25 @@ impl Ring {
             }
         }
         out
+    }
+
+    /// The chart of each implicit map the proof parametrizes: `chart NAME(ARGS) value=…`
+    /// with the arguments as rendered (components `, `, arguments `; `) and the nodes of
+    /// the map's value there, so that a recheck substitutes the chart into the map's
+    /// equations as the catalogue states them.
+    fn chart_lines(&self, em: &mut Emitter<'_>) {
+        let charts = self.state().implicit_values.clone();
+        for (key, (_, vals)) in charts {
+            let Some(nodes) = vals
+                .iter()
+                .map(|(_, n)| n.clone())
+                .collect::<Option<Vec<_>>>()
+            else {
+                continue;
+            };
+            let ids: Vec<String> = nodes.iter().map(|n| format!("t{}", em.visit(n))).collect();
+            let _ = writeln!(em.out, "chart {key} value={}", ids.join(","));
+        }
     }
 
     /// For each symbol with prescribed sn, cn, dn that an argument replaces inside sn,

@@ -3,7 +3,7 @@
 //! [`super::parametrization`], with its alternative, the box of the sampled intervals),
 //! the roots proved positive and the `sn²` of real bases as further parameters, and the
 //! sign is proved when the test of that module proves it.  A sign it does not prove is
-//! not proved (module [`super::decide`] tries the other rules).
+//! not proved (module `decide` tries the other rules).
 //!
 //! ```
 //! use eulertop::algebra::positivity::Parametrization;

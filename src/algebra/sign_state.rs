@@ -1,7 +1,7 @@
 //! The sign-only state of a ring: the signs its proof has proved (with the derivation
 //! of each value, for certificates), the signs the claim states, the facts of the
 //! theory (`dn > 0` of a real argument), the sign symbols of folded values, the first
-//! sign left undecided, and the memo of the sign test.  Module [`super::decide`] reads
+//! sign left undecided, and the memo of the sign test.  Module `decide` reads
 //! and writes it; the rest of the ring state knows nothing of signs.
 //!
 //! ```

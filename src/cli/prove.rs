@@ -5,6 +5,7 @@
 //! form — with `--certificate FILE` a script of polynomial equalities that SymPy rechecks
 //! (`scripts/recheck-certificates.py`).
 
+use super::cert_source::{RawCatalogue, bind, premise_lines};
 use super::{CliError, stdout, write_error};
 use crate::claims::catalogue::Body;
 use crate::claims::verdict::context::Ctx;
@@ -97,6 +98,8 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         args.certificate.is_some(),
     );
     if let (Some(path), Some(cert)) = (&args.certificate, &p.certificate) {
+        let source = RawCatalogue::read(&args.catalogue)?.source_lines(&claim.id)?;
+        let cert = bind(cert, &source, &premise_lines(&p.hypotheses));
         std::fs::write(path, cert).map_err(|e| CliError(format!("cannot write {path}: {e}")))?;
     }
     let mut out = stdout();

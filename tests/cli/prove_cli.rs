@@ -104,3 +104,64 @@ fn an_independence_claim_is_proved_by_its_derivative() {
             .any(|l| l == "field delta param  # opaque symbol")
     );
 }
+
+/// The certificate's lines that start with `word `.
+fn lines_of<'a>(cert: &'a str, word: &str) -> Vec<&'a str> {
+    cert.lines()
+        .filter(|l| l.starts_with(&format!("{word} ")))
+        .collect()
+}
+
+#[test]
+fn a_certificate_states_its_claim_as_the_catalogue_writes_it() {
+    let dir = std::env::temp_dir().join(format!("eulertop-bound-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("et.cert");
+    let p = path.to_str().unwrap();
+    let (code, out, err) = run(&["prove", "sec2.ET-v.corrected", "--certificate", p]);
+    assert_eq!(code, 0, "{out}{err}");
+    let cert = std::fs::read_to_string(&path).expect("certificate written");
+    let source = lines_of(&cert, "source");
+    assert_eq!(source[0], r#"source id "sec2.ET-v.corrected""#, "{cert}");
+    assert!(
+        source.contains(&r#"source claim.lhs "ETrhs(M, A, B, C)""#),
+        "{cert}"
+    );
+    assert!(
+        source.contains(&r#"source claim.rhs "cross(OmP(M, A, B, C), M)""#),
+        "{cert}"
+    );
+    // the definitions the formulas call, and the domain
+    assert!(
+        source
+            .iter()
+            .any(|l| l.starts_with("source define.sec2.def.ET \"ETrhs(M, A, B, C) = "))
+    );
+    assert!(source.iter().any(|l| l.starts_with("source domain.top {")));
+    // three components, three claim lines, announced
+    assert_eq!(lines_of(&cert, "claims"), ["claims 3"]);
+    assert_eq!(lines_of(&cert, "claim").len(), 3);
+    // a claim resting on a solution branch states it as a premise, with its source
+    let path2 = dir.join("m.cert");
+    let (code, out, err) = run(&[
+        "prove",
+        "sec7.master12.g1.up",
+        "--certificate",
+        path2.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{out}{err}");
+    let cert = std::fs::read_to_string(&path2).expect("certificate written");
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(
+        lines_of(&cert, "premise")
+            .iter()
+            .any(|l| l.starts_with("premise branch hypothesis.branch-delta1 \"")),
+        "{cert}"
+    );
+    assert!(
+        lines_of(&cert, "assume")
+            .iter()
+            .any(|l| l.starts_with("assume branch delta1 \""))
+    );
+    assert!(!cert.contains("# assumption"), "{cert}");
+}

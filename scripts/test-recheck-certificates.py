@@ -1,0 +1,214 @@
+#!/usr/bin/env python3
+"""Tests of the second system (scripts/recheck-certificates.py): what it must reject.
+
+Usage: scripts/test-recheck-certificates.py [--all CERT_DIR]
+
+Each case is a certificate that must fail the recheck, for the reason named; the
+certificates are the small files of tests/data/certificates/ or copies of certificates
+that target/release/eulertop writes, changed in one place.  With --all, also: after the
+right side (or the expression) of every claim is changed in a copy of the catalogue,
+every certificate of CERT_DIR fails.  Exit status 0 when every case behaves; not run by
+`cargo test` (CI runs it as its own step).
+"""
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+RECHECK = os.path.join(ROOT, "scripts", "recheck-certificates.py")
+BIN = os.path.join(ROOT, "target", "release", "eulertop")
+DATA = os.path.join(ROOT, "tests", "data", "certificates")
+
+
+def recheck(paths, *opts):
+    """(exit status, output) of the recheck."""
+    p = subprocess.run([sys.executable, RECHECK, *opts, *paths], capture_output=True, text=True, cwd=ROOT)
+    return p.returncode, p.stdout + p.stderr
+
+
+def prove(cid, tmp):
+    path = os.path.join(tmp, f"{cid}.cert")
+    p = subprocess.run([BIN, "prove", cid, "--certificate", path], capture_output=True, text=True, cwd=ROOT)
+    if p.returncode != 0 or not os.path.exists(path):
+        raise SystemExit(f"cannot write the certificate of {cid}: {p.stderr.strip()}")
+    with open(path, encoding="utf-8") as fh:
+        return fh.read()
+
+
+def write(tmp, name, text):
+    path = os.path.join(tmp, name)
+    with open(path, "w", encoding="utf-8") as fh:
+        fh.write(text)
+    return path
+
+
+def without(text, pattern):
+    """The text with the first line matching pattern deleted."""
+    lines = text.splitlines()
+    i = next(i for i, ln in enumerate(lines) if re.match(pattern, ln))
+    return "\n".join(lines[:i] + lines[i + 1:]) + "\n"
+
+
+def changed_catalogue(tmp, claim_ids=None):
+    """A copy of the catalogue with the right side (or expr) of the claims changed."""
+    cat = os.path.join(tempfile.mkdtemp(dir=tmp), "identities")
+    shutil.copytree(os.path.join(ROOT, "identities"), cat)
+    for f in os.listdir(cat):
+        if not f.endswith(".toml"):
+            continue
+        path = os.path.join(cat, f)
+        with open(path, encoding="utf-8") as fh:
+            text = fh.read()
+        out, cur = [], None
+        for line in text.splitlines():
+            m = re.match(r'id = "([^"]+)"', line)
+            if m:
+                cur = m.group(1)
+            m = re.match(r"""(rhs|expr) = ("|'|''')(.*)$""", line)
+            if m and (claim_ids is None or cur in claim_ids):
+                line = f"{m.group(1)} = {m.group(2)}2 * {m.group(3)}"
+            out.append(line)
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write("\n".join(out) + "\n")
+    return cat
+
+
+EVALUATIONS = [  # (expression of the catalogue's language, its value as a certificate writes it)
+    ("-x^2", "-x**2"), ("2^-1", "1/2"), ("x - y - 1", "x - y - 1"), ("x / y / 2", "x/(2*y)"),
+    ("f(x + 1)", "x**2 + 2*x + 2"), ("if 1 > 0 and not 2 < 1 then x else y", "x"),
+    ("dot(vec(x, y, 1), [1, 2, 3])", "x + 2*y + 3"), ("cross([1, 0, 0], [0, 1, 0])[3]", "1"),
+    ("([[1, 2, 0], [0, 1, 0], [0, 0, 1]] * vec(x, y, 1))[1]", "x + 2*y"),
+    ("inv([[2, 0, 0], [0, x, 0], [0, 0, 1]])[2, 2]", "1/x"), ("det(diag(x, y, 2))", "2*x*y"),
+    ("1e-3 + .5", "501/1000"), ("(x + y)^2 - x^2", "2*x*y + y**2"), ("1 - 2 * 3^2", "-17"),
+]
+
+
+def evaluator_cases():
+    """(expression, expected, got or error) of each evaluation that differs."""
+    import importlib.util
+    sys.path.insert(0, os.path.join(ROOT, "scripts"))
+    spec = importlib.util.spec_from_file_location("recheck", RECHECK)
+    rc = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(rc)
+    from certcheck.evaluate import Evaluator
+    from certcheck.exprlang import Parser
+    cert = rc.Cert("evaluator")
+    cert.run("field x indeterminate\nfield y indeterminate\nnode t1 = x\nclaim t1 = t1\n")
+    ev = Evaluator(cert, ["f(a) = a^2 + 1"])
+    env = {"x": cert.frac("x"), "y": cert.frac("y")}
+    bad = []
+    for text, want in EVALUATIONS:
+        try:
+            got = ev.eval(Parser(text).whole(), env)
+            if not cert.eq(got, cert.frac(want)):
+                bad.append((text, want, f"{got.num.as_expr()}/{got.den.as_expr()}"))
+        except Exception as e:  # noqa: BLE001 - reported as a failed case
+            bad.append((text, want, f"{type(e).__name__} {e}"))
+    return bad
+
+
+class Cases:
+    def __init__(self, tmp):
+        self.tmp, self.failures, self.count = tmp, [], 0
+
+    def expect(self, what, status_output, ok, reason):
+        status, output = status_output
+        self.count += 1
+        good = (status == 0) == ok and reason in output
+        print(f"{'ok  ' if good else 'FAIL'}  {what}")
+        if not good:
+            self.failures.append(what)
+            print("      " + "\n      ".join(output.strip().splitlines()[-4:]))
+
+    def run(self):
+        t = self.tmp
+        bad = evaluator_cases()
+        self.expect(f"the evaluator of the expression language: {len(EVALUATIONS) - len(bad)} of "
+                    f"{len(EVALUATIONS)} expressions as the language defines them",
+                    (0 if not bad else 1, "\n".join(f"{a}: want {b}, got {c}" for a, b, c in bad)), True, "")
+        self.expect("the wrong square-root branch of the issue is rejected",
+                    recheck([os.path.join(DATA, "wrong-branch.cert")], "--unbound"), False,
+                    "square-root branch has no evidence")
+        self.expect("a chart parameter with a false derivative is rejected",
+                    recheck([os.path.join(DATA, "param-derivative.cert")], "--unbound"), False,
+                    "chart parameter y")
+        et = prove("sec2.ET-v.corrected", t)
+        self.expect("a certificate as written rechecks, its formulas evaluated",
+                    recheck([write(t, "et.cert", et)]), True, "formulas: evaluated")
+        self.expect("a deleted claim line is rejected",
+                    recheck([write(t, "et-claim.cert", without(et, r"claim t"))]), False,
+                    "claim line(s) where the certificate announces 3")
+        self.expect("a certificate without its claim is rejected",
+                    recheck([write(t, "et-unbound.cert", without(et, r"source id "))]), False,
+                    "not bound to a claim")
+        self.expect("a changed formula in the catalogue is rejected",
+                    recheck([write(t, "et2.cert", et)], "--catalogue", changed_catalogue(t, {"sec2.ET-v.corrected"})),
+                    False, "claim.rhs differs")
+        wrong = re.sub(r"node t14 = dot \+ t12 t10 - t13 t8 -> .*",
+                       "node t14 = dot + t13 t8 - t12 t10 -> (B*M2*M3 - C*M2*M3)/(C*B)", et)
+        wrong = wrong.replace("node t15 = t11 - t14", "node t15 = t11 + t14")
+        self.expect("a derivation that does not start from the formula is rejected",
+                    recheck([write(t, "et-formula.cert", wrong)]), False, "is not the catalogue's")
+        master = prove("sec7.master12.g1.up", t)
+        self.expect("the premises are printed",
+                    recheck([write(t, "m.cert", master)]), True,
+                    "premise [branch: hypothesis.branch-delta1]")
+        self.expect("a deleted hypothesis is rejected",
+                    recheck([write(t, "m-premise.cert", without(master, r"premise branch"))]), False,
+                    "which is no premise of the theorem")
+        self.expect("a premise the claim does not state is rejected",
+                    recheck([write(t, "m-stated.cert", master.replace(
+                        "premise branch hypothesis.branch-delta1", "premise branch hypothesis.branch-delta2"))]),
+                    False, "the claim does not state hypothesis branch-delta2")
+        step = prove("sec3.int.g2", t)
+        self.expect("a chart of an implicit map is verified against the map's equations in the catalogue",
+                    recheck([write(t, "int.cert", step)]), True, "equation(s) of the catalogue verified")
+        m = re.search(r"^(chart \S+\(.*\) value=)(t\d+),(t\d+),", step, re.M)
+        swapped = step.replace(m.group(0), f"{m.group(1)}{m.group(3)},{m.group(2)},")
+        self.expect("a chart that does not satisfy the map's equations is rejected",
+                    recheck([write(t, "int-chart.cert", swapped)]), False, "does not satisfy")
+        status, output = recheck(["x.cert"], "--catalogue", os.path.join(t, "no-such-dir"))
+        self.expect("a missing catalogue: one line, exit status 2",
+                    (0 if status == 2 and len(output.strip().splitlines()) == 1 else 1, output), True,
+                    "no catalogue directory")
+        casimir = prove("sec2.M2.casimir", t)
+        lemma = et.replace("\nclaims 3", '\npremise lemma sec2.M2.casimir "the Casimir"\nclaims 3')
+        self.expect("a lemma used without its certificate is rejected",
+                    recheck([write(t, "et-lemma.cert", lemma)]), False,
+                    "lemma sec2.M2.casimir is used without its certificate")
+        self.expect("a lemma with its certificate in the run is accepted",
+                    recheck([write(t, "et-lemma.cert", lemma), write(t, "casimir.cert", casimir)]), True,
+                    "2 of 2 certificates recheck")
+        for cid in ("sec2.ET-v.corrected", "sec7.master12.g1.up", "sec6.discr-eq.corrected.up"):
+            path = write(t, f"self-{cid}.cert", prove(cid, t))
+            self.expect(f"--self-test {cid}: each corruption is rejected",
+                        recheck([], "--self-test", path), True, "self-test passes")
+
+    def all_changed(self, cert_dir):
+        certs = [f for f in os.listdir(cert_dir) if f.endswith(".cert")]
+        cat = changed_catalogue(self.tmp)
+        status, output = recheck([cert_dir], "--catalogue", cat)
+        passed = [ln for ln in output.splitlines() if ln.startswith("OK")]
+        self.expect(f"with every claim's rhs/expr changed in a catalogue copy, none of the {len(certs)} "
+                    f"certificates rechecks ({len(passed)} do)", (status, output), False, "\n0 of ")
+
+
+def main(argv):
+    if not os.path.exists(BIN):
+        print(f"build first: {BIN} is missing", file=sys.stderr)
+        return 2
+    with tempfile.TemporaryDirectory() as tmp:
+        cases = Cases(tmp)
+        cases.run()
+        if argv[1:2] == ["--all"] and len(argv) == 3:
+            cases.all_changed(argv[2])
+    print(f"{cases.count - len(cases.failures)} of {cases.count} recheck tests pass")
+    return 1 if cases.failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
