@@ -30,8 +30,16 @@ impl Sym {
         // (positive roots of positive constants) can still be proved
         let par = self.ring.domain();
         if self.ring.certifying() && self.node.is_none() {
-            // a certificate names the value of every proved sign by its derivation
-            return None;
+            // a certificate names the value of every proved sign by its derivation: a
+            // value without one is proved all the same, and the proof has no certificate
+            // (so that a proof does not depend on whether a certificate is asked for)
+            let s = self.sign_by_parametrization(&par);
+            if s.is_some() {
+                self.ring.mark_uncertified(
+                    "a sign of a value made only for a decision, without a derivation of its own",
+                );
+            }
+            return s;
         }
         // a certificate records the value of each proved sign as it is first derived:
         // the memo serves proofs without one
