@@ -18,12 +18,14 @@ pub fn verdict_badge(v: Verdict) -> &'static str {
 }
 
 /// A claim's verdict badge: as [`verdict_badge`], with a refutation certified at an
-/// exact point (proof method `witness`) marked `✗✗` apart from a sampled one.
+/// exact point (proof method `witness`) marked `✗✗` apart from a sampled one, and a
+/// negation proved by such a point marked `proved (witness)`.
 pub fn result_badge(r: &ClaimResult) -> &'static str {
-    if r.verdict == Verdict::Refuted
-        && r.proof.method == crate::claims::verdict::ProofMethod::Witness
-    {
-        return "✗✗ refuted (witness)";
+    let witness = r.proof.method == crate::claims::verdict::ProofMethod::Witness;
+    match r.verdict {
+        Verdict::Refuted if witness => return "✗✗ refuted (witness)",
+        Verdict::Proved if witness => return "✓✓ proved (witness)",
+        _ => {}
     }
     verdict_badge(r.verdict)
 }

@@ -40,14 +40,20 @@ pub fn certified_line(results: &[ClaimResult]) -> String {
     use crate::claims::verdict::ProofMethod;
     let c = counts(results);
     let g = |k: &str| c.get(k).copied().unwrap_or(0);
-    let witnessed = (results.iter())
-        .filter(|r| r.verdict.name() == "refuted" && r.proof.method == ProofMethod::Witness)
-        .count();
+    let by = |v: &str, m: ProofMethod| {
+        (results.iter())
+            .filter(|r| r.verdict.name() == v && r.proof.method == m)
+            .count()
+    };
+    let (symbolic, negations) = (
+        by("proved", ProofMethod::Symbolic),
+        by("proved", ProofMethod::Witness),
+    );
+    let refuted = by("refuted", ProofMethod::Witness);
     let judged = results.len() - g("defined");
     format!(
-        "certified: {} of the {judged} verdicts that are not definitions ({} proved symbolically, {witnessed} refuted at a point where lhs − rhs is certified nonzero); the other verdicts rest on sampling or, for the {} by construction, on the model's definitions",
-        g("proved") + witnessed,
-        g("proved"),
+        "certified: {} of the {judged} verdicts that are not definitions ({symbolic} proved symbolically, {negations} negations proved and {refuted} identities refuted at a point where lhs − rhs is certified nonzero); the other verdicts rest on sampling or, for the {} by construction, on the model's definitions",
+        symbolic + negations + refuted,
         g("construction"),
     )
 }

@@ -436,15 +436,28 @@ fn independence_existence_negation() {
         &[53, 128],
     );
     assert_eq!(r.verdict, Verdict::Inconclusive);
-    // negation of a false identity holds, with the inner counterexample as evidence
+    // negation of a false identity: proved by a point where the inner lhs − rhs is
+    // certified nonzero, with the inner counterexample as evidence too
     let r = verdict_of(
         &claim(
-            "kind = \"negation\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\n[claim.inner]\nkind = \"identity\"\nlhs = \"sin(2*x)\"\nrhs = \"2*sin(x)\"",
+            "kind = \"negation\"\nexpect = \"proved\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\n[claim.inner]\nkind = \"identity\"\nlhs = \"sin(2*x)\"\nrhs = \"2*sin(x)\"",
+        ),
+        &LADDER,
+    );
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+    assert_eq!(
+        r.proof.method,
+        eulertop::claims::verdict::ProofMethod::Witness
+    );
+    assert!(r.counterexample.is_some());
+    // exp is outside the prover's field: no witness, and the negation holds by sampling
+    let r = verdict_of(
+        &claim(
+            "kind = \"negation\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\n[claim.inner]\nkind = \"identity\"\nlhs = \"exp(2*x)\"\nrhs = \"2*exp(x)\"",
         ),
         &LADDER,
     );
     assert_eq!(r.verdict, Verdict::Holds, "{}", r.reason);
-    assert!(r.counterexample.is_some());
 }
 
 #[test]

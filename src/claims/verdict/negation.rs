@@ -1,17 +1,24 @@
 //! `negation`: holds when the inner claim is refuted (its counterexample is the
-//! evidence), refuted when the inner claim holds or is proved, inconclusive otherwise.
+//! evidence), and is proved when that refutation is certified by a witness (a domain
+//! point at which the inner identity's lhs − rhs is provably nonzero: the negation of
+//! "lhs = rhs on the whole domain" is exactly the existence of such a point); refuted
+//! when the inner claim holds or is proved, inconclusive otherwise.
 
+use super::proof_info::ProofMethod;
 use super::result::{ClaimResult, Evidence};
 use crate::claims::kind::Verdict;
 
 /// The evidence of a negation from the result of its inner claim.
 pub fn judge(inner: &ClaimResult) -> Evidence {
+    let witnessed = inner.proof.method == ProofMethod::Witness;
     let verdict = match inner.verdict {
+        Verdict::Refuted if witnessed => Verdict::Proved,
         Verdict::Refuted => Verdict::Holds,
         Verdict::Holds | Verdict::Proved => Verdict::Refuted,
         _ => Verdict::Inconclusive,
     };
     Evidence {
+        proof: (verdict == Verdict::Proved).then(|| inner.proof.clone()),
         residuals: inner.residuals.clone(),
         loss_bits: inner.loss_bits,
         samples: inner.samples,
@@ -20,7 +27,14 @@ pub fn judge(inner: &ClaimResult) -> Evidence {
         exact: inner.exact.clone(),
         ..Evidence::new(
             verdict,
-            format!("inner claim {}: {}", inner.verdict.name(), inner.reason),
+            if verdict == Verdict::Proved {
+                format!(
+                    "proved by a witness: the inner claim fails at a domain point where its lhs − rhs is certified nonzero ({})",
+                    inner.reason
+                )
+            } else {
+                format!("inner claim {}: {}", inner.verdict.name(), inner.reason)
+            },
         )
     }
 }
