@@ -90,6 +90,7 @@
 
 mod agm;
 mod bottom;
+mod carlson;
 mod complex;
 mod dd;
 mod ellint;
@@ -97,15 +98,21 @@ mod fixed;
 mod glaisher;
 mod inverse;
 mod jacobi;
+mod jtheta;
 mod landen;
 mod landen_mpfr;
 mod modulus;
 mod multi;
+mod phase;
 mod reduce;
+mod second;
 mod sincos;
 #[cfg(test)]
 mod tests;
 mod theta;
+mod third;
+mod toolkit;
+mod zeta;
 
 pub use agm::{ellipk, ellipkp};
 pub use complex::sncndn_complex;
@@ -113,6 +120,11 @@ pub use ellint::ellipf;
 pub use glaisher::{JacobiFn, jacobi, jacobi_complex, jacobi_m};
 pub use inverse::jacobi_inverse;
 pub use jacobi::{am, sncndn, sncndn_m, sncndn_many};
+pub use jtheta::{jtheta, nome};
+pub use second::{ellipe, ellipeinc};
+pub use third::ellippi;
+pub use toolkit::ToolkitFn;
+pub use zeta::{heumanlambda, jacobizeta};
 
 use crate::numbers::Real;
 
@@ -135,6 +147,10 @@ pub enum SpecialError {
     /// The argument is too large for the argument reduction (`|u|/K ≥ 2^50`).
     #[error("argument too large: {0}")]
     ArgumentTooLarge(String),
+    /// An argument outside the domain where the function is real and finite (e.g. the
+    /// characteristic `n > 1/sin²φ` of `Π(n, φ, k)`).
+    #[error("domain: {0}")]
+    Domain(String),
     /// Input values that are not sn, cn, dn of one real argument.
     #[error("inconsistent input: {0}")]
     Inconsistent(String),
@@ -187,7 +203,7 @@ pub(crate) fn check_modulus_below_one<R: Real>(k: &R) -> Result<(), SpecialError
 }
 
 #[cold]
-fn modulus_error<R: Real>(k: &R, range: &str) -> SpecialError {
+pub(crate) fn modulus_error<R: Real>(k: &R, range: &str) -> SpecialError {
     SpecialError::ModulusOutOfRange(format!("k = {} is outside {range}", show(k)))
 }
 
