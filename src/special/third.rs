@@ -107,11 +107,16 @@ pub fn ellippi<R: Real>(n: &R, phi: &R, k: &R) -> Result<R, SpecialError> {
     }
     let nt = nw.clone() * s.sqr();
     if nt >= one {
-        let at = format!("n sin^2(phi) = {} at n = {}", show(&nt), show(n));
+        let at = format!("n = {}, phi = {}", show(n), show(phi));
         return Err(if nt == one {
-            SpecialError::Pole(format!("Pi(n, phi, k) is infinite where {at}"))
+            SpecialError::Pole(format!(
+                "Pi(n, phi, k) is infinite at {at} (n sin^2(phi) = 1)"
+            ))
         } else {
-            SpecialError::Domain(format!("Pi(n, phi, k) is not real where {at} > 1"))
+            SpecialError::Domain(format!(
+                "Pi(n, phi, k) is not real at {at}: n sin^2(phi) = {} > 1",
+                show(&nt)
+            ))
         });
     }
     let mut p = pw.from_i64(sigma) * reduced_pi(&nw, &s, &c2, &kw)?;

@@ -1,9 +1,7 @@
 //! The functions of the elliptic toolkit by name, for callers that choose them at run
 //! time (the expression language, the reference tests, the accuracy report).
 
-use super::{
-    SpecialError, ellipe, ellipeinc, ellippi, heumanlambda, jacobizeta, jtheta, nome, show,
-};
+use super::{SpecialError, ellipe, ellipeinc, ellippi, heumanlambda, jacobizeta, jtheta, nome};
 use crate::numbers::Real;
 
 /// One function of the elliptic toolkit: `ellipe(k)`, `ellipeinc(phi, k)`,
@@ -109,6 +107,6 @@ fn theta_index<R: Real>(j: &R) -> Result<u32, SpecialError> {
     }
     Err(SpecialError::Domain(format!(
         "theta function index j = {} is not 1, 2, 3 or 4",
-        show(j)
+        j.to_f64()
     )))
 }

@@ -217,3 +217,76 @@ fn domain_errors() {
     assert_eq!(ellipe(&1.0), Ok(1.0));
     assert_eq!(ellipeinc(&0.5, &1.0), Ok(0.5f64.sin()));
 }
+
+/// A reference row as an expression of the catalogue language (`ellipe(k)`, …).
+fn row_expr(r: &Row) -> String {
+    let (name, args) = row_fn(r);
+    format!("{name}({})", args.join(", "))
+}
+
+/// The seven functions through the evaluator of the catalogue language, in `f64` and at
+/// 256 bits, against mpmath (every row of the table).
+#[test]
+fn builtins_against_mpmath() {
+    use eulertop::claims::eval::Evaluator;
+    use eulertop::claims::parser::parse_expr;
+    use eulertop::claims::registry::Registry;
+    let reg = Registry::new();
+    for r in read_table("ellint2_ref.csv") {
+        let e = parse_expr(&row_expr(&r)).unwrap();
+        let v = Evaluator::new(&reg, 0.0f64)
+            .eval(&e)
+            .unwrap()
+            .as_real()
+            .unwrap();
+        let err = err_eps(&Float::with_val(53, v), &r[4], 53, 1e-300);
+        assert!(err <= 16.0, "{}: {err} ε", row_expr(&r));
+        let like = Float::with_val(256, 0);
+        let v = Evaluator::new(&reg, like)
+            .eval(&e)
+            .unwrap()
+            .as_real()
+            .unwrap();
+        let err = err_eps(&v, &r[4], 256, 1e-300);
+        assert!(err <= 8.0, "{} at 256 bits: {err} ε", row_expr(&r));
+    }
+}
+
+/// `eulertop eval` prints the value, and refuses an out-of-domain argument with one
+/// line on standard error and exit status 2.
+#[test]
+fn eval_command() {
+    use std::process::Command;
+    let run = |expr: &str| {
+        Command::new(env!("CARGO_BIN_EXE_eulertop"))
+            .args(["eval", expr])
+            .output()
+            .unwrap()
+    };
+    let ok = run("ellipe(0.5)");
+    assert!(ok.status.success());
+    // mpmath: ellipe(0.25) = 1.46746220933942715545979526699
+    let v: f64 = String::from_utf8(ok.stdout)
+        .unwrap()
+        .trim()
+        .parse()
+        .unwrap();
+    assert!((v - 1.467_462_209_339_427_2).abs() < 1e-15);
+    for bad in [
+        "ellipe(2)",
+        "ellipeinc(1, -0.5)",
+        "ellippi(2, 1, 0.5)",
+        "jacobizeta(1, 1)",
+        "heumanlambda(1, 1.5)",
+        "nome(1)",
+        "jtheta(5, 0.5, 0.1)",
+        "jtheta(1, 0.5, -0.1)",
+        "ellipe(0.5, 1)",
+    ] {
+        let out = run(bad);
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(out.status.code(), Some(2), "{bad}: {err}");
+        assert_eq!(err.lines().count(), 1, "{bad}: {err}");
+        assert!(!err.contains("panicked"), "{bad}: {err}");
+    }
+}
