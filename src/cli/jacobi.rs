@@ -16,7 +16,7 @@
 
 use super::CliError;
 use crate::numbers::{Cplx, Real};
-use crate::special::{JacobiFn, SpecialError, jacobi, jacobi_complex, jacobi_m};
+use crate::special::{JacobiFn, SpecialError, jacobi_complex_set, jacobi_m_set, jacobi_set};
 use std::io::{BufRead, Read, Write};
 
 /// Longest accepted input line in bytes.
@@ -263,13 +263,10 @@ fn line_values<R: Real>(
         );
         let k = number(proto, fields[2], "modulus k", &pos(2))?;
         check_not_rounded_to_one(&k, fields[2], "modulus k", &pos(2))?;
-        let mut v = Vec::new();
-        for f in &opts.functions {
-            let z = jacobi_complex(*f, &u, &k).map_err(err)?;
-            v.push(z.re.to_decimal(digits));
-            v.push(z.im.to_decimal(digits));
-        }
-        v
+        // sn, cn, dn once per line, the requested functions from them
+        let values = jacobi_complex_set(&opts.functions, &u, &k).map_err(err)?;
+        let parts = values.iter().flat_map(|z| [&z.re, &z.im]);
+        parts.map(|x| x.to_decimal(digits)).collect()
     } else {
         let u = number(proto, fields[0], "u", &pos(0))?;
         let second = if opts.parameter {
@@ -279,16 +276,14 @@ fn line_values<R: Real>(
         };
         let k = number(proto, fields[1], second, &pos(1))?;
         check_not_rounded_to_one(&k, fields[1], second, &pos(1))?;
-        let mut v = Vec::new();
-        for f in &opts.functions {
-            let x = if opts.parameter {
-                jacobi_m(*f, &u, &k)
-            } else {
-                jacobi(*f, &u, &k)
-            };
-            v.push(x.map_err(err)?.to_decimal(digits));
-        }
-        v
+        // sn, cn, dn once per line, the requested functions from them
+        let values = if opts.parameter {
+            jacobi_m_set(&opts.functions, &u, &k)
+        } else {
+            jacobi_set(&opts.functions, &u, &k)
+        };
+        let values = values.map_err(err)?;
+        values.iter().map(|x| x.to_decimal(digits)).collect()
     };
     Ok(values.join(" "))
 }

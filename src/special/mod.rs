@@ -117,7 +117,9 @@ mod zeta;
 pub use agm::{ellipk, ellipkp};
 pub use complex::sncndn_complex;
 pub use ellint::ellipf;
-pub use glaisher::{JacobiFn, jacobi, jacobi_complex, jacobi_m};
+pub use glaisher::{
+    JacobiFn, jacobi, jacobi_complex, jacobi_complex_set, jacobi_m, jacobi_m_set, jacobi_set,
+};
 pub use inverse::jacobi_inverse;
 pub use jacobi::{am, sncndn, sncndn_m, sncndn_many};
 pub use jtheta::{jtheta, nome};
