@@ -184,11 +184,9 @@ fn domain_errors() {
         assert!(heumanlambda(&0.5, &k).is_err());
         assert!(nome(&k).is_err());
     }
-    for k in [1.0] {
-        assert!(
-            jacobizeta(&0.5, &k).is_err() && nome(&k).is_err() && ellippi(&0.5, &0.5, &k).is_err()
-        );
-    }
+    // k = 1: Z, the nome and Π are infinite or undefined there
+    assert!(jacobizeta(&0.5, &1.0).is_err() && nome(&1.0).is_err());
+    assert!(ellippi(&0.5, &0.5, &1.0).is_err());
     assert!(matches!(
         ellippi(&2.0, &1.0, &0.5),
         Err(SpecialError::Domain(_))
