@@ -272,7 +272,7 @@ fn real<R: Real>(
         .collect()
 }
 
-/// [`jacobi`] of a complex argument, real modulus `0 ≤ k < 1` (from
+/// [`jacobi`] of a complex argument, real modulus `k ≥ 0` (from
 /// [`sncndn_complex`]).
 ///
 /// ```
@@ -303,7 +303,36 @@ pub fn jacobi_complex_set<C: ComplexScalar>(
     u: &C,
     k: &C::R,
 ) -> Result<Vec<C>, SpecialError> {
-    let values = sncndn_complex(u, k)?;
+    complex_quotients(fs, u, k, sncndn_complex(u, k)?)
+}
+
+/// [`jacobi_complex_set`] for the parameter `m = k²`, any real `m` (from
+/// [`sncndn_complex_m`](super::sncndn_complex_m)).
+///
+/// ```
+/// use eulertop::numbers::C64;
+/// use eulertop::special::{jacobi_complex_m_set, sncndn_complex_m, JacobiFn};
+/// let z = C64::new(0.5, 0.25);
+/// let (s, _, d) = sncndn_complex_m(&z, &-0.5).unwrap();
+/// let v = jacobi_complex_m_set(&[JacobiFn::Sd], &z, &-0.5).unwrap();
+/// assert_eq!(v[0], s / d);
+/// ```
+pub fn jacobi_complex_m_set<C: ComplexScalar>(
+    fs: &[JacobiFn],
+    u: &C,
+    m: &C::R,
+) -> Result<Vec<C>, SpecialError> {
+    complex_quotients(fs, u, m, super::sncndn_complex_m(u, m)?)
+}
+
+/// The functions `fs` from `(sn, cn, dn)` of the complex `u` (`k`: the modulus or
+/// parameter, for messages).
+fn complex_quotients<C: ComplexScalar>(
+    fs: &[JacobiFn],
+    u: &C,
+    k: &C::R,
+    values: (C, C, C),
+) -> Result<Vec<C>, SpecialError> {
     let at = || {
         format!(
             "u = {} + {}i, k = {}",

@@ -157,7 +157,7 @@ name_table! {
         Arg = "arg"("z"): Exact(1), "complex → real", Complex, Operator;
         /// a + b·i
         Cplx = "cplx"("a, b"): Exact(2), "real, real → complex", Complex, Name;
-        /// Jacobi sn (modulus k, not the parameter m = k²; real u: any real k, a negative one as |k| by DLMF 22.17.1; complex u: 0 ≤ k < 1)
+        /// Jacobi sn (modulus k, not the parameter m = k²; real u: any real k, a negative one as |k| by DLMF 22.17.1; complex u: k ≥ 0)
         Sn = "sn"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
         /// Jacobi cn (modulus k)
         Cn = "cn"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
