@@ -104,6 +104,7 @@ mod agm;
 mod bottom;
 mod carlson;
 mod complex;
+mod complex_modulus;
 mod dd;
 mod ellint;
 mod fixed;
@@ -128,6 +129,7 @@ mod zeta;
 
 pub use agm::{ellipk, ellipkp};
 pub use complex::{sncndn_complex, sncndn_complex_m};
+pub use complex_modulus::sncndn_complex_modulus;
 pub use ellint::ellipf;
 pub use glaisher::{
     JacobiFn, jacobi, jacobi_complex, jacobi_complex_m_set, jacobi_complex_set, jacobi_m,

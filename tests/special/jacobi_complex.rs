@@ -152,3 +152,51 @@ fn modulus_above_one_and_negative_parameter() {
         assert!(w <= 1.0, "{bits} bits: {w} ε");
     }
 }
+
+/// sn, cn, dn of a complex modulus against mpmath
+/// (tests/data/jacobi_ref_complex_modulus.csv, scripts/gen_jacobi_complex_modulus.py):
+/// the worst error relative to `max(1, |value|)` per part, in ε_N.
+fn complex_modulus_worst(bits: u32) -> f64 {
+    use eulertop::special::sncndn_complex_modulus;
+    let mut worst = 0f64;
+    for r in read_table("jacobi_ref_complex_modulus.csv") {
+        let got: Vec<Float> = if bits == 53 {
+            let p = |i: usize| r[i].parse::<f64>().unwrap();
+            let t = sncndn_complex_modulus(&C64::new(p(2), p(3)), &C64::new(p(0), p(1)));
+            let (s, c, d) = t.unwrap_or_else(|e| panic!("{r:?}: {e}"));
+            let parts = [s, c, d].into_iter().flat_map(|z| [z.re, z.im]);
+            parts.map(|x| Float::with_val(53, x)).collect()
+        } else {
+            let p = |i: usize| mp(&r[i], bits);
+            let t = sncndn_complex_modulus(&Cplx::new(p(2), p(3)), &Cplx::new(p(0), p(1)));
+            let (s, c, d) = t.unwrap_or_else(|e| panic!("{r:?}: {e}"));
+            [s, c, d].into_iter().flat_map(|z| [z.re, z.im]).collect()
+        };
+        for (i, g) in got.iter().enumerate() {
+            let j = 4 + 2 * (i / 2);
+            let (re, im) = (mp(&r[j], bits + 64), mp(&r[j + 1], bits + 64));
+            let scale = Float::with_val(bits + 64, re.hypot(&im)).max(&Float::with_val(64, 1));
+            let want = mp(&r[4 + i], bits + 64);
+            let e = Float::with_val(bits + 64, g - &want).abs() / scale;
+            worst = worst.max(e.to_f64() * 2f64.powi(bits as i32 - 1));
+        }
+    }
+    worst
+}
+
+#[test]
+fn complex_modulus() {
+    use eulertop::special::sncndn_complex_modulus;
+    let f64_worst = complex_modulus_worst(53);
+    assert!(f64_worst <= 1.0, "f64: {f64_worst} ε");
+    for bits in [64, 256, 320] {
+        let w = complex_modulus_worst(bits);
+        assert!(w <= 1.0, "{bits} bits: {w} ε");
+    }
+    // a real modulus goes to the real-modulus algorithm
+    let u = C64::new(0.3, 0.2);
+    let a = sncndn_complex_modulus(&u, &C64::new(0.5, 0.0)).unwrap();
+    assert_eq!(a, sncndn_complex(&u, &0.5).unwrap());
+    let bad = sncndn_complex_modulus(&u, &C64::new(f64::NAN, 1.0));
+    assert!(matches!(bad, Err(SpecialError::ModulusOutOfRange(_))));
+}
