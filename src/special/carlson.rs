@@ -24,9 +24,16 @@ fn tolerance<R: Real>(x: &R, order: i32) -> R {
     x.one().mul_2si((-p - 3).div_euclid(order + 1))
 }
 
+/// `√x`, with an exact zero taken as it is: its derivative parts (automatic
+/// differentiation through [`crate::numbers::Dual`]) stay finite where `x` is a
+/// constant 0, such as the first argument of `R_D(0, k'², 1)`.
+pub(crate) fn sqrt0<R: Real>(x: &R) -> R {
+    if x.is_zero() { x.clone() } else { x.sqrt() }
+}
+
 /// `λ = √x√y + √y√z + √z√x` and the three square roots.
 fn lambda<R: Real>(x: &R, y: &R, z: &R) -> (R, [R; 3]) {
-    let (sx, sy, sz) = (x.sqrt(), y.sqrt(), z.sqrt());
+    let (sx, sy, sz) = (sqrt0(x), sqrt0(y), sqrt0(z));
     let l = sx.clone() * sy.clone() + sy.clone() * sz.clone() + sz.clone() * sx.clone();
     (l, [sx, sy, sz])
 }
@@ -165,7 +172,7 @@ pub(crate) fn rj<R: Real>(x: &R, y: &R, z: &R, p: &R) -> Result<R, SpecialError>
             return Err(no_convergence("R_J"));
         }
         let (l, [sx, sy, sz]) = lambda(&x, &y, &z);
-        let sp = p.sqrt();
+        let sp = sqrt0(&p);
         let dn = (sp.clone() + sx) * (sp.clone() + sy) * (sp + sz);
         let en = (delta.clone() / dn.sqr()).mul_2si(-6 * n);
         sum = sum + (rc1(&en) / dn).mul_2si(-2 * n);

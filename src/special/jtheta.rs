@@ -2,6 +2,7 @@
 //! argument and real nome.
 
 use super::agm::complementary;
+use super::carlson::sqrt0;
 use super::phase::residual;
 use super::{GUARD, SpecialError, check_finite, check_modulus_below_one, refuse_by_rule, show};
 use crate::numbers::Real;
@@ -265,7 +266,7 @@ pub fn jtheta<R: Real>(j: u32, z: &R, q: &R) -> Result<R, SpecialError> {
     let v = if qw.to_f64() > TRANSFORM_ABOVE {
         transformed(j, &theta, &qw)?
     } else if j <= 2 {
-        qw.sqrt().sqrt().mul_2si(1) * series(&theta, &qw, true, j == 2, j == 1)?
+        sqrt0(&sqrt0(&qw)).mul_2si(1) * series(&theta, &qw, true, j == 2, j == 1)?
     } else {
         one + series(&theta, &qw, false, true, j == 4)?.mul_2si(1)
     };

@@ -2,7 +2,7 @@
 //! `E(φ, k)` for any real `φ`, through Carlson's `R_F` and `R_D`.
 
 use super::agm::complementary;
-use super::carlson::{rd, rf};
+use super::carlson::{rd, rf, sqrt0};
 use super::phase::{fold, quadrant, residual};
 use super::{GUARD, SpecialError, check_finite, modulus_error, refuse_by_rule};
 use crate::numbers::Real;
@@ -69,7 +69,7 @@ pub(crate) fn reduced_e<R: Real>(s: &R, c2: &R, k: &R) -> Result<R, SpecialError
     let f = rf(c2, &d2, &one)?;
     let d = rd(c2, &one, &d2)?;
     let third = s.from_ratio(1, 3);
-    let tail = k2.clone() * s.clone() * c2.sqrt() / d2.sqrt();
+    let tail = k2.clone() * s.clone() * sqrt0(c2) / d2.sqrt();
     Ok(kp2.clone() * s.clone() * f + k2 * kp2 * third * s.sqr() * s.clone() * d + tail)
 }
 

@@ -2,7 +2,7 @@
 //! `R_F` and `R_J`.
 
 use super::agm::complementary;
-use super::carlson::{rf, rj};
+use super::carlson::{rf, rj, sqrt0};
 use super::phase::{fold, quadrant, residual};
 use super::{GUARD, SpecialError, check_finite, check_modulus_below_one, refuse_by_rule, show};
 use crate::numbers::Real;
@@ -48,7 +48,7 @@ pub(crate) fn reduced_pi<R: Real>(n: &R, s: &R, c2: &R, k: &R) -> Result<R, Spec
     let first = m.clone() * kp2 / (onem.clone() * k2m.clone()) * pi_n;
     let second = k2 / k2m.clone() * s.clone() * f;
     let p2 = (m.clone() * nn).sqrt();
-    let angle = (p2 * s.clone() * c2.sqrt() / d2.sqrt()).atan();
+    let angle = (p2 * s.clone() * sqrt0(c2) / d2.sqrt()).atan();
     let third = (m / (k2m * onem)).sqrt() * angle;
     Ok(first + second + third)
 }

@@ -288,3 +288,59 @@ fn eval_command() {
         assert!(!err.contains("panicked"), "{bad}: {err}");
     }
 }
+
+/// Derivatives through automatic differentiation (`d` of the language, `Dual<f64>`)
+/// against the known formulas (DLMF 19.4.1, 19.2.4–7, 22.16.32 with 19.2.33, and
+/// `dq/dk = π²q/(2kk'²K²)` from DLMF 19.4.1 and 22.2.1) and, for θ₃, a central
+/// difference.
+#[test]
+fn derivatives_through_dual_numbers() {
+    use eulertop::claims::eval::Evaluator;
+    use eulertop::claims::parser::parse_expr;
+    use eulertop::claims::registry::Registry;
+    let reg = Registry::new();
+    let cases = [
+        ("d(ellipe(x), x) - (ellipe(x) - K(x))/x", [0.1, 0.5, 0.95]),
+        (
+            "d(ellipeinc(x, 0.6), x) - sqrt(1 - 0.36*sin(x)^2)",
+            [0.3, 2.3, -4.0],
+        ),
+        (
+            "d(ellippi(0.3, x, 0.6), x) - 1/((1 - 0.3*sin(x)^2)*sqrt(1 - 0.36*sin(x)^2))",
+            [0.3, 2.3, -4.0],
+        ),
+        (
+            "d(ellippi(-2, x, 0.6), x) - 1/((1 + 2*sin(x)^2)*sqrt(1 - 0.36*sin(x)^2))",
+            [0.3, 2.3, -4.0],
+        ),
+        (
+            "d(jacobizeta(x, 0.6), x) - (sqrt(1 - 0.36*sin(x)^2) - ellipe(0.6)/(K(0.6)*sqrt(1 - 0.36*sin(x)^2)))",
+            [0.3, 2.3, -4.0],
+        ),
+        (
+            "d(nome(x), x) - pi^2*nome(x)/(2*x*(1 - x^2)*K(x)^2)",
+            [0.1, 0.5, 0.95],
+        ),
+        (
+            "d(jtheta(3, x, 0.6), x) - (jtheta(3, x + 1e-5, 0.6) - jtheta(3, x - 1e-5, 0.6))/2e-5",
+            [0.3, 2.3, -4.0],
+        ),
+        (
+            "d(jtheta(1, x, 0.1), x) - (jtheta(1, x + 1e-5, 0.1) - jtheta(1, x - 1e-5, 0.1))/2e-5",
+            [0.3, 2.3, -4.0],
+        ),
+    ];
+    for (expr, xs) in cases {
+        let e = parse_expr(expr).unwrap();
+        for x in xs {
+            let mut ev = Evaluator::new(&reg, 0.0f64);
+            ev.bind("x", eulertop::claims::value::Value::Real(x));
+            let v = ev
+                .eval(&e)
+                .unwrap_or_else(|err| panic!("{expr} at {x}: {}", err.message));
+            let v = v.as_real().unwrap();
+            let tol = if expr.contains("1e-5") { 1e-8 } else { 1e-12 };
+            assert!(v.abs() <= tol, "{expr} at x = {x}: {v:e}");
+        }
+    }
+}
