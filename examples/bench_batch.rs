@@ -10,8 +10,14 @@
 //! in scheduler ticks of 4 ms, too coarse for a batch of a few milliseconds), and both
 //! the median and the minimum are reported.
 //! Batch: u_i = −10 + 20·(i + 0.5)/N.
+//!
+//! With `fn=NAME` the batch times a function of the elliptic toolkit instead, on the
+//! same u_i and k_i (as scripts/bench_gsl.c does for GSL): `ellipe` E(k_i),
+//! `ellipeinc` E(u_i/4, k_i), `ellippi` Π(0.3, u_i/8, k_i), `jtheta` θ₃(u_i, q_i) with
+//! q_i = k_i/2.
 
-use eulertop::special::{sncndn, sncndn_many};
+use eulertop::numbers::Real;
+use eulertop::special::{ToolkitFn, sncndn, sncndn_many};
 use rug::Float;
 use std::hint::black_box;
 use std::time::Instant;
@@ -44,6 +50,17 @@ fn main() {
     let p = bits.max(2);
     let us_mp: Vec<Float> = us.iter().map(|u| Float::with_val(p, *u)).collect();
     let ks_mp: Vec<Float> = ks.iter().map(|k| Float::with_val(p, *k)).collect();
+    let toolkit = a.iter().skip(4).find_map(|x| x.strip_prefix("fn="));
+    if let Some(name) = toolkit {
+        let f = ToolkitFn::from_name(name).expect("a toolkit function");
+        let times = if bits == 53 {
+            toolkit_batch(f, &us, &ks, reps)
+        } else {
+            toolkit_batch(f, &us_mp, &ks_mp, reps)
+        };
+        report(times, flag("all"));
+        return;
+    }
     let mut times = Vec::new();
     for _ in 0..reps {
         let t0 = Instant::now();
@@ -64,11 +81,40 @@ fn main() {
         }
         times.push(t0.elapsed().as_nanos() as f64 / n as f64);
     }
-    if flag("all") {
+    report(times, flag("all"));
+}
+
+/// Prints every batch's time (`all`) or the median and the minimum.
+fn report(mut times: Vec<f64>, all: bool) {
+    if all {
         let all: Vec<String> = times.iter().map(|t| t.to_string()).collect();
         println!("{}", all.join(" "));
         return;
     }
     times.sort_by(|a, b| a.total_cmp(b));
     println!("{} {}", times[times.len() / 2], times[0]);
+}
+
+/// Times per evaluation (ns) of `reps` batches of the toolkit function `f` at the
+/// arguments of the module documentation.
+fn toolkit_batch<R: Real>(f: ToolkitFn, us: &[R], ks: &[R], reps: usize) -> Vec<f64> {
+    let args: Vec<Vec<R>> = us
+        .iter()
+        .zip(ks)
+        .map(|(u, k)| match f {
+            ToolkitFn::Ellipe => vec![k.clone()],
+            ToolkitFn::Ellipeinc => vec![u.mul_2si(-2), k.clone()],
+            ToolkitFn::Ellippi => vec![u.from_ratio(3, 10), u.mul_2si(-3), k.clone()],
+            _ => vec![u.from_i64(3), u.clone(), k.mul_2si(-1)],
+        })
+        .collect();
+    (0..reps)
+        .map(|_| {
+            let t0 = Instant::now();
+            for a in &args {
+                black_box(f.eval(black_box(a)).expect("in domain"));
+            }
+            t0.elapsed().as_nanos() as f64 / args.len() as f64
+        })
+        .collect()
 }

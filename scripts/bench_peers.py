@@ -3,6 +3,9 @@
 process, and writes the section `## Jacobi elliptic functions` of reports/performance.md.
 
 Usage:  python3 scripts/bench_peers.py [--quick]
+        python3 scripts/bench_peers.py --toolkit [--quick]   (the elliptic integrals:
+        E(k), E(phi, k), Pi(n, phi, k) against GSL, theta_3 and E at 256 bits against
+        mpmath; writes the section `## Elliptic integrals and theta functions`)
 
 Needs: pip install mpmath python-flint scipy; GSL (apt libgsl-dev, installed by this
 script when missing) and gcc for scripts/bench_gsl.c.
@@ -137,7 +140,90 @@ def gsl_version():
     return r.stdout.split("+")[0] if r.returncode == 0 else "?"
 
 
+PY_MPMATH_TOOLKIT = """
+import time, mpmath as mp
+mp.mp.prec = {bits}
+n, reps = {n}, {reps}
+us = [mp.mpf(-10 + 20 * (i + 0.5) / n) for i in range(n)]
+ks = [mp.mpf(0.05 + 0.94 * ((i * 0.6180339887498949) % 1.0)) for i in range(n)]
+f = {{"ellipeinc": lambda u, k: mp.ellipe(u / 4, k * k),
+     "jtheta": lambda u, k: mp.jtheta(3, u, k / 2)}}["{fn}"]
+ts = []
+for _ in range(reps):
+    t = time.perf_counter_ns()
+    for u, k in zip(us, ks):
+        f(u, k)
+    ts.append((time.perf_counter_ns() - t) / n)
+print(*ts)
+"""
+
+TOOLKIT = [("E(k)", "ellipe", "E"), ("E(φ, k)", "ellipeinc", "Einc"),
+           ("Π(n, φ, k)", "ellippi", "Pi"), ("θ₃(z, q)", "jtheta", None)]
+
+
+def toolkit():
+    """E, E(phi), Pi against GSL in f64, E(phi) and theta_3 against mpmath at 256 bits,
+    a new modulus for every call, interleaved rounds; writes the section."""
+    subprocess.run(["cargo", "build", "--release", "--quiet", "--example", "bench_batch"],
+                   cwd=ROOT, check=True)
+    exe = gsl_harness()
+    import mpmath
+    jobs = []
+    for label, name, g in TOOLKIT:
+        jobs.append((("eulertop", label, "f64"), lambda n=name: rust(53, N_F64, "fresh", "fn=" + n)))
+        if exe and g:
+            jobs.append((("GSL", label, "f64"), lambda g=g: gsl(exe, "fresh", "0.8", g)))
+    for label, name in [("E(φ, k)", "ellipeinc"), ("θ₃(z, q)", "jtheta")]:
+        jobs.append((("eulertop", label, "256 bits"), lambda n=name: rust(256, 200, "fresh", "fn=" + n)))
+        jobs.append((("mpmath", label, "256 bits"),
+                     lambda n=name: py(PY_MPMATH_TOOLKIT.format(bits=256, n=50, reps=3, fn=n))))
+    samples = {}
+    for _ in range(ROUNDS):
+        for key, job in jobs:
+            samples.setdefault(key, []).extend(job())
+    r = {key: statistics.median(ts) for key, ts in samples.items()}
+    lines = [
+        "## Elliptic integrals and theta functions",
+        "",
+        "A new modulus for every call: u_i = -10 + 20(i+1/2)/n, k_i = 0.05 + 0.94·frac(i·φ);",
+        "E(k_i), E(u_i/4, k_i), Π(0.3, u_i/8, k_i) (GSL: `gsl_sf_ellint_Ecomp`, `_E`, `_P`",
+        "with its characteristic −0.3) and θ₃(u_i, k_i/2).  Wall-clock time per evaluation,",
+        "median over %d interleaved rounds; ratio: eulertop's time / the peer's.  GSL %s," % (ROUNDS, gsl_version()),
+        "mpmath %s.  Reproduce: `python3 scripts/bench_peers.py --toolkit`." % mpmath.__version__,
+        "",
+        "| function | precision | eulertop | peer | ratio |",
+        "|---|---|---|---|---|",
+    ]
+    for (tool, label, prec), t in r.items():
+        if tool == "eulertop":
+            for peer in ("GSL", "mpmath"):
+                p = r.get((peer, label, prec))
+                if p:
+                    lines.append("| %s | %s | %s | %s %s | %.2f |" % (label, prec, fmt(t), peer, fmt(p), t / p))
+            if not any((peer, label, prec) in r for peer in ("GSL", "mpmath")):
+                lines.append("| %s | %s | %s | – | – |" % (label, prec, fmt(t)))
+    lines.append("")
+    replace_section("## Elliptic integrals and theta functions", "\n".join(lines))
+
+
+def replace_section(head, section):
+    """Replaces (or appends) the section `head` of reports/performance.md."""
+    path = os.path.join(ROOT, "reports", "performance.md")
+    old = open(path).read() if os.path.exists(path) else "# Performance\n\n"
+    if head in old:
+        pre, rest = old.split(head, 1)
+        nxt = rest.find("\n## ")
+        post = rest[nxt + 1:] if nxt >= 0 else ""
+        new = pre + section + ("\n" + post if post else "")
+    else:
+        new = old.rstrip("\n") + "\n\n" + section
+    open(path, "w").write(new)
+    print(section)
+
+
 def main():
+    if "--toolkit" in sys.argv:
+        return toolkit()
     subprocess.run(["cargo", "build", "--release", "--quiet", "--example", "bench_batch"],
                    cwd=ROOT, check=True)
     exe = gsl_harness()
@@ -235,19 +321,7 @@ def write(r, v, load):
             ratios.append("%d bits: %.2f× (median), %.2f× (minimum)" % (bits, b[0] / a[0], b[1] / a[1]))
     if ratios:
         lines += ["Fresh modulus, python-flint time / eulertop time: " + "; ".join(ratios) + ".", ""]
-    section = "\n".join(lines)
-    path = os.path.join(ROOT, "reports", "performance.md")
-    old = open(path).read() if os.path.exists(path) else "# Performance\n\n"
-    head = "## Jacobi elliptic functions"
-    if head in old:
-        pre, rest = old.split(head, 1)
-        nxt = rest.find("\n## ")
-        post = rest[nxt + 1:] if nxt >= 0 else ""
-        new = pre + section + ("\n" + post if post else "")
-    else:
-        new = old.rstrip("\n") + "\n\n" + section
-    open(path, "w").write(new)
-    print(section)
+    replace_section("## Jacobi elliptic functions", "\n".join(lines))
 
 
 if __name__ == "__main__":

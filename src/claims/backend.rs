@@ -170,6 +170,10 @@ pub trait Num: Scalar + PartialOrd {
     fn jacobi_inverse(_s: &Self, _c: &Self, _d: &Self, _k: &Self) -> Result<Self, String> {
         unavailable::<Self, _>("jacobi_inverse")
     }
+    /// A function of the elliptic toolkit (E, Π, Z, Λ₀, the nome, θ_j) at `args`.
+    fn toolkit(f: special::ToolkitFn, _args: &[Self]) -> Result<Self, String> {
+        unavailable::<Self, _>(f.name())
+    }
 }
 
 /// The error of a function the backend `T` cannot compute.
@@ -279,6 +283,9 @@ impl<R: Real> Num for R {
     }
     fn jacobi_inverse(s: &Self, c: &Self, d: &Self, k: &Self) -> Result<Self, String> {
         special::jacobi_inverse(s, c, d, k).map_err(|e| e.to_string())
+    }
+    fn toolkit(f: special::ToolkitFn, args: &[Self]) -> Result<Self, String> {
+        f.eval(args).map_err(|e| e.to_string())
     }
 }
 

@@ -1,7 +1,8 @@
 //! `eulertop jacobi`: Jacobi elliptic functions of arguments read from standard input.
 //!
 //! Each input line is `u k` with `k ≥ 0` the **modulus** (`--parameter`: `u m` with the
-//! parameter `m = k²`, any real), or `re(u) im(u) k` with `--complex` (`0 ≤ k < 1`).
+//! parameter `m = k²`, any real), or `re(u) im(u) k` with `--complex` (any `k ≥ 0`;
+//! with `--parameter`: `re(u) im(u) m`, any real `m`).
 //! Each output line holds the functions chosen by `--functions` (default `sn,cn,dn`;
 //! any of the twelve `sn cn dn cd dc ns nc nd sc sd cs ds`), each as one number (with
 //! `--complex`: real and imaginary part).  Blank lines and lines starting with `#` are
@@ -16,7 +17,9 @@
 
 use super::CliError;
 use crate::numbers::{Cplx, Real};
-use crate::special::{JacobiFn, SpecialError, jacobi, jacobi_complex, jacobi_m};
+use crate::special::{
+    JacobiFn, SpecialError, jacobi_complex_m_set, jacobi_complex_set, jacobi_m_set, jacobi_set,
+};
 use std::io::{BufRead, Read, Write};
 
 /// Longest accepted input line in bytes.
@@ -28,7 +31,7 @@ pub struct Args {
     /// Precision in bits: 53 = f64 code path, otherwise MPFR at this many bits.
     #[arg(long, default_value_t = 53, allow_negative_numbers = true)]
     pub bits: u32,
-    /// Complex argument: lines are `re(u) im(u) k`.
+    /// Complex argument: lines are `re(u) im(u) k` (with --parameter: `re(u) im(u) m`).
     #[arg(long)]
     pub complex: bool,
     /// Lines are `u m` with the parameter m = k² (any real; m < 0 is an imaginary
@@ -67,11 +70,6 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             "--bits {} is outside 2..=1048576",
             args.bits
         )));
-    }
-    if args.complex && args.parameter {
-        return Err(CliError::new(
-            "--parameter is not available with --complex (give the modulus k)",
-        ));
     }
     let stdin = std::io::stdin();
     let stdout = std::io::stdout();
@@ -232,7 +230,8 @@ fn line_values<R: Real>(
 ) -> Result<String, CliError> {
     let fields: Vec<&str> = t.split_whitespace().take(4).collect();
     let (want, shape) = match (opts.complex, opts.parameter) {
-        (true, _) => (3, "re(u) im(u) k"),
+        (true, true) => (3, "re(u) im(u) m"),
+        (true, false) => (3, "re(u) im(u) k"),
         (false, true) => (2, "u m"),
         (false, false) => (2, "u k"),
     };
@@ -261,15 +260,22 @@ fn line_values<R: Real>(
             number(proto, fields[0], "re(u)", &pos(0))?,
             number(proto, fields[1], "im(u)", &pos(1))?,
         );
-        let k = number(proto, fields[2], "modulus k", &pos(2))?;
-        check_not_rounded_to_one(&k, fields[2], "modulus k", &pos(2))?;
-        let mut v = Vec::new();
-        for f in &opts.functions {
-            let z = jacobi_complex(*f, &u, &k).map_err(err)?;
-            v.push(z.re.to_decimal(digits));
-            v.push(z.im.to_decimal(digits));
-        }
-        v
+        let second = if opts.parameter {
+            "parameter m"
+        } else {
+            "modulus k"
+        };
+        let k = number(proto, fields[2], second, &pos(2))?;
+        check_not_rounded_to_one(&k, fields[2], second, &pos(2))?;
+        // sn, cn, dn once per line, the requested functions from them
+        let values = if opts.parameter {
+            jacobi_complex_m_set(&opts.functions, &u, &k)
+        } else {
+            jacobi_complex_set(&opts.functions, &u, &k)
+        };
+        let values = values.map_err(err)?;
+        let parts = values.iter().flat_map(|z| [&z.re, &z.im]);
+        parts.map(|x| x.to_decimal(digits)).collect()
     } else {
         let u = number(proto, fields[0], "u", &pos(0))?;
         let second = if opts.parameter {
@@ -279,16 +285,14 @@ fn line_values<R: Real>(
         };
         let k = number(proto, fields[1], second, &pos(1))?;
         check_not_rounded_to_one(&k, fields[1], second, &pos(1))?;
-        let mut v = Vec::new();
-        for f in &opts.functions {
-            let x = if opts.parameter {
-                jacobi_m(*f, &u, &k)
-            } else {
-                jacobi(*f, &u, &k)
-            };
-            v.push(x.map_err(err)?.to_decimal(digits));
-        }
-        v
+        // sn, cn, dn once per line, the requested functions from them
+        let values = if opts.parameter {
+            jacobi_m_set(&opts.functions, &u, &k)
+        } else {
+            jacobi_set(&opts.functions, &u, &k)
+        };
+        let values = values.map_err(err)?;
+        values.iter().map(|x| x.to_decimal(digits)).collect()
     };
     Ok(values.join(" "))
 }

@@ -2,27 +2,31 @@
 
 use super::jacobi::sncndn_imp;
 use super::modulus::{Modulus, Spec};
-use super::{GUARD, SpecialError, check_finite, check_modulus_below_one, show};
+use super::{GUARD, SpecialError, check_finite, show};
 use crate::numbers::{ComplexScalar, Real, Scalar};
 
-/// `(sn, cn, dn)(u, k)` for complex `u = x + iy` and real **modulus** `0 ≤ k < 1`.
+/// `(sn, cn, dn)(u, k)` for complex `u = x + iy` and real **modulus** `k ≥ 0`.
 ///
 /// Algorithm: the addition theorem DLMF 22.8.1–3 for `u = x + iy` combined with
-/// Jacobi's imaginary transformation `sn(iy,k) = i sc(y,k')`, `cn(iy,k) = nc(y,k')`,
-/// `dn(iy,k) = dc(y,k')` (Jacobi's imaginary transformation, DLMF Table 22.6.1), i.e.
-/// Abramowitz–Stegun 16.21.2–4:
+/// Jacobi's imaginary transformation `sn(iy|m) = i sc(y|1−m)`, `cn(iy|m) = nc(y|1−m)`,
+/// `dn(iy|m) = dc(y|1−m)` (DLMF Table 22.6.1, an identity for every real parameter
+/// `m = k²`), i.e. Abramowitz–Stegun 16.21.2–4:
 /// `sn = (s d₁ + i c d s₁ c₁)/δ`, `cn = (c c₁ − i s d s₁ d₁)/δ`,
 /// `dn = (d c₁ d₁ − i k² s c s₁)/δ`, `δ = c₁² + k² s² s₁²`,
 /// with `s, c, d` at `(x, k)` and `s₁, c₁, d₁` at `(y, k')` from the real algorithm
 /// (whose reduction measures `y` from the nearest multiple of `K'`, keeping relative
-/// accuracy next to the poles `2jK + (2l+1)iK'`).  No cancellation occurs, so the
-/// error is a few ulp of `max(1,|value|)` componentwise-relative; at `N` bits the
+/// accuracy next to the poles `2jK + (2l+1)iK'`).  For `k < 1` no cancellation occurs,
+/// so the error is a few ulp of `max(1,|value|)` componentwise-relative; at `N` bits the
 /// result is rounded from `N + 40` (or more) bits.  `k = 0` uses `sin`, `cos` of the
-/// complex argument directly (`K' = ∞`).
+/// complex argument directly (`K' = ∞`); `k = 1` gives `tanh u`, `sech u` through the
+/// same formula (`s₁, c₁, d₁ = sin y, cos y, 1`); for `k > 1` the real functions of
+/// `x` take the modulus by DLMF 22.17.2–4 and those of `y` the parameter
+/// `1 − k² = −(k − 1)(k + 1) < 0` (DLMF 22.17.6–8).
 ///
-/// Errors: [`SpecialError::ModulusOutOfRange`], [`SpecialError::NotFinite`] (also
-/// for overflowing results), [`SpecialError::ArgumentTooLarge`],
-/// [`SpecialError::Pole`] when `δ` vanishes (argument at a pole).
+/// Errors: [`SpecialError::ModulusOutOfRange`] (`k < 0` or not finite),
+/// [`SpecialError::NotFinite`] (also for overflowing results),
+/// [`SpecialError::ArgumentTooLarge`], [`SpecialError::Pole`] when `δ` vanishes
+/// (argument at a pole).
 ///
 /// ```
 /// use eulertop::numbers::C64;
@@ -37,51 +41,133 @@ use crate::numbers::{ComplexScalar, Real, Scalar};
 /// assert!(e.re.abs() < 1e-15 && e.im.abs() < 1e-15);
 /// let e2 = dn.clone() * dn + C64::new(0.25, 0.0) * sn.clone() * sn.clone() - C64::new(1.0, 0.0);
 /// assert!(e2.re.abs() < 1e-15 && e2.im.abs() < 1e-15);
+/// // k > 1: mpmath: ellipfun('sn', mpc(0.5, 0.25), m=4)
+/// //   = (0.459282591831489683626926170959 + 0.130497094745324312433505639583j)
+/// let (sn, _, _) = sncndn_complex(&C64::new(0.5, 0.25), &2.0).unwrap();
+/// assert!((sn.re - 0.4592825918314897).abs() < 1e-14);
+/// assert!((sn.im - 0.13049709474532431).abs() < 1e-14);
 /// ```
 pub fn sncndn_complex<C: ComplexScalar>(u: &C, k: &C::R) -> Result<(C, C, C), SpecialError> {
     if <C::R as Real>::BY_RULE {
         return by_rule(u, k);
     }
-    check_modulus_below_one(k)?;
+    super::check_modulus(k)?;
     let (x, y) = (u.re(), u.im());
     check_finite(&x, "Re u")?;
     check_finite(&y, "Im u")?;
     let n = x.prec().max(y.prec()).max(k.prec());
-    let w = n + GUARD;
-    let out = |re: C::R, im: C::R| -> Result<C, SpecialError> {
-        if !re.is_finite() || !im.is_finite() {
-            return Err(SpecialError::NotFinite(format!(
-                "result overflows at u = {} + {}i",
-                show(&x),
-                show(&y)
-            )));
-        }
-        Ok(C::from_parts(re.with_prec(n), im.with_prec(n)))
-    };
     if k.is_zero() {
-        let xw = x.with_prec(w);
-        let yw = y.with_prec(w);
-        let (s, c) = xw.sin_cos();
-        let (sh, ch) = (yw.sinh(), yw.cosh());
-        let sn = out(s.clone() * ch.clone(), c.clone() * sh.clone())?;
-        let cn = out(c * ch, -(s * sh))?;
-        let dn = out(xw.one(), xw.zero())?;
-        return Ok((sn, cn, dn));
+        return circular(&x, &y, n);
     }
-    let (s, c, d) = sncndn_imp(&x, Spec::Modulus(k, Modulus::K), n)?;
-    let (s1, c1, d1) = sncndn_imp(&y, Spec::Modulus(k, Modulus::Complement), n)?;
-    let p = |v: C::R| v.with_prec(w);
-    let (s, c, d, s1, c1, d1) = (p(s), p(c), p(d), p(s1), p(c1), p(d1));
-    let k2 = k.with_prec(w).sqr();
-    let den = c1.sqr() + k2.clone() * s.sqr() * s1.sqr();
-    if den.is_zero() {
-        return Err(SpecialError::Pole(format!(
-            "sn, cn, dn have a pole at u = {} + {}i (k = {})",
-            show(&x),
-            show(&y),
-            show(k)
+    let w = n + GUARD;
+    let one = k.one();
+    let real = sncndn_imp(&x, Spec::Modulus(k, Modulus::K), n)?;
+    let imag = if *k < one {
+        sncndn_imp(&y, Spec::Modulus(k, Modulus::Complement), n)?
+    } else {
+        // 1 − k² = −(k − 1)(k + 1), exact in the first factor
+        let kw = k.with_prec(w);
+        let mc = -((kw.clone() - kw.one()) * (kw.clone() + kw.one()));
+        sncndn_imp(&y, Spec::Parameter(&mc), n)?
+    };
+    combine(&x, &y, real, imag, &k.with_prec(w).sqr(), n)
+}
+
+/// [`sncndn_complex`] for the **parameter** `m = k²`, any real `m` (mpmath:
+/// `ellipfun(·, u, m)`): `m < 0` is an imaginary modulus.  The same formula, with
+/// `s, c, d` at `(x | m)` and `s₁, c₁, d₁` at `(y | 1 − m)` from the real algorithm
+/// ([`sncndn_m`](super::sncndn_m), DLMF 22.17.6–8 for a negative parameter).  For
+/// `m < 0` the denominator `c₁² + m s² s₁²` is a difference, so next to the poles the
+/// relative accuracy drops with the distance to them.
+///
+/// Errors: as [`sncndn_complex`].
+///
+/// ```
+/// use eulertop::numbers::C64;
+/// use eulertop::special::sncndn_complex_m;
+/// // mpmath: ellipfun('cn', mpc(0.5, 0.25), m=-0.5)
+/// //   = (0.906711785018456790013598506369 - 0.128651621685050470852382626965j)
+/// let (_, cn, _) = sncndn_complex_m(&C64::new(0.5, 0.25), &-0.5).unwrap();
+/// assert!((cn.re - 0.9067117850184568).abs() < 1e-14);
+/// assert!((cn.im + 0.12865162168505047).abs() < 1e-14);
+/// ```
+pub fn sncndn_complex_m<C: ComplexScalar>(u: &C, m: &C::R) -> Result<(C, C, C), SpecialError> {
+    super::refuse_by_rule::<C::R>("sn, cn, dn of a parameter m")?;
+    if !m.is_finite() {
+        return Err(SpecialError::ModulusOutOfRange(format!(
+            "parameter m = {} is not finite",
+            show(m)
         )));
     }
+    let (x, y) = (u.re(), u.im());
+    check_finite(&x, "Re u")?;
+    check_finite(&y, "Im u")?;
+    let n = x.prec().max(y.prec()).max(m.prec());
+    if m.is_zero() {
+        return circular(&x, &y, n);
+    }
+    let w = n + GUARD;
+    let mw = m.with_prec(w);
+    let mc = mw.one() - mw.clone();
+    let real = sncndn_imp(&x, Spec::Parameter(m), n)?;
+    let imag = sncndn_imp(&y, Spec::Parameter(&mc), n)?;
+    combine(&x, &y, real, imag, &mw, n)
+}
+
+/// `k = 0`: `sn = sin u`, `cn = cos u`, `dn = 1` of `u = x + iy`.
+fn circular<C: ComplexScalar>(x: &C::R, y: &C::R, n: u32) -> Result<(C, C, C), SpecialError> {
+    let w = n + GUARD;
+    let (xw, yw) = (x.with_prec(w), y.with_prec(w));
+    let (s, c) = xw.sin_cos();
+    let (sh, ch) = (yw.sinh(), yw.cosh());
+    let out = |re: C::R, im: C::R| finite::<C>(x, y, re, im, n);
+    let sn = out(s.clone() * ch.clone(), c.clone() * sh.clone())?;
+    let cn = out(c * ch, -(s * sh))?;
+    let dn = out(xw.one(), xw.zero())?;
+    Ok((sn, cn, dn))
+}
+
+/// `re + i·im` rounded to `n` bits, or an overflow error naming `u = x + iy`.
+fn finite<C: ComplexScalar>(
+    x: &C::R,
+    y: &C::R,
+    re: C::R,
+    im: C::R,
+    n: u32,
+) -> Result<C, SpecialError> {
+    if !re.is_finite() || !im.is_finite() {
+        return Err(SpecialError::NotFinite(format!(
+            "result overflows at u = {} + {}i",
+            show(x),
+            show(y)
+        )));
+    }
+    Ok(C::from_parts(re.with_prec(n), im.with_prec(n)))
+}
+
+/// Abramowitz–Stegun 16.21.2–4 from `(s, c, d)` of `x` with parameter `m` and
+/// `(s₁, c₁, d₁)` of `y` with parameter `1 − m`.
+fn combine<C: ComplexScalar>(
+    x: &C::R,
+    y: &C::R,
+    (s, c, d): (C::R, C::R, C::R),
+    (s1, c1, d1): (C::R, C::R, C::R),
+    m: &C::R,
+    n: u32,
+) -> Result<(C, C, C), SpecialError> {
+    let w = n + GUARD;
+    let p = |v: C::R| v.with_prec(w);
+    let (s, c, d, s1, c1, d1) = (p(s), p(c), p(d), p(s1), p(c1), p(d1));
+    let den = c1.sqr() + m.clone() * s.sqr() * s1.sqr();
+    if den.is_zero() {
+        return Err(SpecialError::Pole(format!(
+            "sn, cn, dn have a pole at u = {} + {}i (m = {})",
+            show(x),
+            show(y),
+            show(m)
+        )));
+    }
+    let out = |re: C::R, im: C::R| finite::<C>(x, y, re, im, n);
     let sn = out(
         s.clone() * d1.clone() / den.clone(),
         c.clone() * d.clone() * s1.clone() * c1.clone() / den.clone(),
@@ -90,7 +176,7 @@ pub fn sncndn_complex<C: ComplexScalar>(u: &C, k: &C::R) -> Result<(C, C, C), Sp
         c.clone() * c1.clone() / den.clone(),
         -(s.clone() * d.clone() * s1.clone() * d1.clone() / den.clone()),
     )?;
-    let dn = out(d * c1 * d1 / den.clone(), -(k2 * s * c * s1 / den))?;
+    let dn = out(d * c1 * d1 / den.clone(), -(m.clone() * s * c * s1 / den))?;
     Ok((sn, cn, dn))
 }
 

@@ -19,7 +19,7 @@ const PI_TRIPLE: [f64; 3] = [
 /// (`tan φ = −cot r`) it is `r ← r + atan((a/b) tan r)`, and `Q ← 2Q` (± 1 when `r`
 /// leaves `[−π/4, π/4]`).  So `π` never enters a subtraction with the small residual,
 /// which matters for `k → 1`, where the recursion amplifies residual errors by `a/b`.
-fn f_agm<R: Real>(q0: i64, r0: &R, kp: &R) -> Result<R, SpecialError> {
+pub(crate) fn f_agm<R: Real>(q0: i64, r0: &R, kp: &R) -> Result<R, SpecialError> {
     if !R::FIXED {
         return f_agm_tangent(q0, r0, kp);
     }

@@ -172,9 +172,25 @@ fn quotient<T: crate::numbers::Scalar>(
 /// assert!(jacobi(JacobiFn::Ns, &0.0_f64, &0.5).is_err()); // pole
 /// ```
 pub fn jacobi<R: Real>(f: JacobiFn, u: &R, k: &R) -> Result<R, SpecialError> {
+    Ok(jacobi_set(&[f], u, k)?.remove(0))
+}
+
+/// Several of the twelve Jacobi functions at one `(u, k)`, from one evaluation of
+/// `sn, cn, dn` (the quotients cost one division each): the values of [`jacobi`] for
+/// each of `fs`, in order.  The first error (pole, overflow) of any of them is returned.
+///
+/// ```
+/// use eulertop::special::{jacobi, jacobi_set, JacobiFn};
+/// let fs = [JacobiFn::Sn, JacobiFn::Cd, JacobiFn::Ds];
+/// let v = jacobi_set(&fs, &0.7_f64, &0.5).unwrap();
+/// for (f, x) in fs.iter().zip(&v) {
+///     assert_eq!(*x, jacobi(*f, &0.7_f64, &0.5).unwrap());
+/// }
+/// ```
+pub fn jacobi_set<R: Real>(fs: &[JacobiFn], u: &R, k: &R) -> Result<Vec<R>, SpecialError> {
     let k = &super::even_modulus(k)?;
     check_finite(u, "u")?;
-    real(f, u, Spec::Modulus(k, Modulus::K), k.prec())
+    real(fs, u, Spec::Modulus(k, Modulus::K), k.prec())
 }
 
 /// [`jacobi`] for the parameter `m = k²`, any real `m` (as [`sncndn_m`](super::sncndn_m)).
@@ -186,6 +202,18 @@ pub fn jacobi<R: Real>(f: JacobiFn, u: &R, k: &R) -> Result<R, SpecialError> {
 /// assert!((cd - 0.676881183647893).abs() < 1e-15);
 /// ```
 pub fn jacobi_m<R: Real>(f: JacobiFn, u: &R, m: &R) -> Result<R, SpecialError> {
+    Ok(jacobi_m_set(&[f], u, m)?.remove(0))
+}
+
+/// [`jacobi_set`] for the parameter `m = k²`, any real `m` (as [`jacobi_m`]).
+///
+/// ```
+/// use eulertop::special::{jacobi_m, jacobi_m_set, JacobiFn};
+/// let v = jacobi_m_set(&[JacobiFn::Cd, JacobiFn::Nc], &0.7_f64, &-0.5).unwrap();
+/// assert_eq!(v[0], jacobi_m(JacobiFn::Cd, &0.7_f64, &-0.5).unwrap());
+/// assert_eq!(v[1], jacobi_m(JacobiFn::Nc, &0.7_f64, &-0.5).unwrap());
+/// ```
+pub fn jacobi_m_set<R: Real>(fs: &[JacobiFn], u: &R, m: &R) -> Result<Vec<R>, SpecialError> {
     if !m.is_finite() {
         return Err(SpecialError::ModulusOutOfRange(format!(
             "parameter m = {} is not finite",
@@ -193,11 +221,17 @@ pub fn jacobi_m<R: Real>(f: JacobiFn, u: &R, m: &R) -> Result<R, SpecialError> {
         )));
     }
     check_finite(u, "u")?;
-    real(f, u, Spec::Parameter(m), m.prec())
+    real(fs, u, Spec::Parameter(m), m.prec())
 }
 
-/// `f(u)` for the modulus `spec` given at `prec` bits.
-fn real<R: Real>(f: JacobiFn, u: &R, spec: Spec<'_, R>, prec: u32) -> Result<R, SpecialError> {
+/// `f(u)` for each `f` of `fs`, the modulus `spec` given at `prec` bits: one
+/// evaluation of `sn, cn, dn`.
+fn real<R: Real>(
+    fs: &[JacobiFn],
+    u: &R,
+    spec: Spec<'_, R>,
+    prec: u32,
+) -> Result<Vec<R>, SpecialError> {
     let n = u.prec().max(prec);
     // at k = 1 (m = 1) cn = dn = sech u: cd = dc = 1 exactly, also where sech u
     // underflows
@@ -206,8 +240,9 @@ fn real<R: Real>(f: JacobiFn, u: &R, spec: Spec<'_, R>, prec: u32) -> Result<R, 
         Spec::Parameter(m) => *m == m.one(),
         Spec::Modulus(..) => false,
     };
-    if unit && matches!(f, JacobiFn::Cd | JacobiFn::Dc) {
-        return Ok(u.one().with_prec(n));
+    let is_unit = |f: &JacobiFn| unit && matches!(f, JacobiFn::Cd | JacobiFn::Dc);
+    if fs.iter().all(is_unit) {
+        return Ok(fs.iter().map(|_| u.one().with_prec(n)).collect());
     }
     let values = sncndn_imp(u, spec, n).map_err(|e| match e {
         // the reduction names the argument after the modulus transformation (k·u for
@@ -227,10 +262,17 @@ fn real<R: Real>(f: JacobiFn, u: &R, spec: Spec<'_, R>, prec: u32) -> Result<R, 
         e => e,
     })?;
     let at = || format!("u = {}", show(u));
-    quotient(f, values, |v: &R| v.is_finite(), at).map(|v| v.with_prec(n))
+    fs.iter()
+        .map(|f| {
+            if is_unit(f) {
+                return Ok(u.one().with_prec(n));
+            }
+            quotient(*f, values.clone(), |v: &R| v.is_finite(), at).map(|v| v.with_prec(n))
+        })
+        .collect()
 }
 
-/// [`jacobi`] of a complex argument, real modulus `0 ≤ k < 1` (from
+/// [`jacobi`] of a complex argument, real modulus `k ≥ 0` (from
 /// [`sncndn_complex`]).
 ///
 /// ```
@@ -243,7 +285,54 @@ fn real<R: Real>(f: JacobiFn, u: &R, spec: Spec<'_, R>, prec: u32) -> Result<R, 
 /// assert!((sc.re - want.re).abs() < 1e-15 && (sc.im - want.im).abs() < 1e-15);
 /// ```
 pub fn jacobi_complex<C: ComplexScalar>(f: JacobiFn, u: &C, k: &C::R) -> Result<C, SpecialError> {
-    let values = sncndn_complex(u, k)?;
+    Ok(jacobi_complex_set(&[f], u, k)?.remove(0))
+}
+
+/// [`jacobi_set`] of a complex argument (as [`jacobi_complex`]): one evaluation of
+/// `sn, cn, dn`.
+///
+/// ```
+/// use eulertop::numbers::C64;
+/// use eulertop::special::{jacobi_complex, jacobi_complex_set, JacobiFn};
+/// let z = C64::new(0.5, 0.25);
+/// let v = jacobi_complex_set(&[JacobiFn::Sc, JacobiFn::Dn], &z, &0.5).unwrap();
+/// assert_eq!(v[0], jacobi_complex(JacobiFn::Sc, &z, &0.5).unwrap());
+/// ```
+pub fn jacobi_complex_set<C: ComplexScalar>(
+    fs: &[JacobiFn],
+    u: &C,
+    k: &C::R,
+) -> Result<Vec<C>, SpecialError> {
+    complex_quotients(fs, u, k, sncndn_complex(u, k)?)
+}
+
+/// [`jacobi_complex_set`] for the parameter `m = k²`, any real `m` (from
+/// [`sncndn_complex_m`](super::sncndn_complex_m)).
+///
+/// ```
+/// use eulertop::numbers::C64;
+/// use eulertop::special::{jacobi_complex_m_set, sncndn_complex_m, JacobiFn};
+/// let z = C64::new(0.5, 0.25);
+/// let (s, _, d) = sncndn_complex_m(&z, &-0.5).unwrap();
+/// let v = jacobi_complex_m_set(&[JacobiFn::Sd], &z, &-0.5).unwrap();
+/// assert_eq!(v[0], s / d);
+/// ```
+pub fn jacobi_complex_m_set<C: ComplexScalar>(
+    fs: &[JacobiFn],
+    u: &C,
+    m: &C::R,
+) -> Result<Vec<C>, SpecialError> {
+    complex_quotients(fs, u, m, super::sncndn_complex_m(u, m)?)
+}
+
+/// The functions `fs` from `(sn, cn, dn)` of the complex `u` (`k`: the modulus or
+/// parameter, for messages).
+fn complex_quotients<C: ComplexScalar>(
+    fs: &[JacobiFn],
+    u: &C,
+    k: &C::R,
+    values: (C, C, C),
+) -> Result<Vec<C>, SpecialError> {
     let at = || {
         format!(
             "u = {} + {}i, k = {}",
@@ -252,10 +341,8 @@ pub fn jacobi_complex<C: ComplexScalar>(f: JacobiFn, u: &C, k: &C::R) -> Result<
             show(k)
         )
     };
-    quotient(
-        f,
-        values,
-        |v: &C| v.re().is_finite() && v.im().is_finite(),
-        at,
-    )
+    let finite = |v: &C| v.re().is_finite() && v.im().is_finite();
+    fs.iter()
+        .map(|f| quotient(*f, values.clone(), finite, at))
+        .collect()
 }

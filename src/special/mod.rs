@@ -1,5 +1,6 @@
-//! Special functions: Jacobi elliptic functions and complete/incomplete elliptic
-//! integrals of the first kind, at any precision, for real and complex arguments.
+//! Special functions: Jacobi elliptic functions of real and complex arguments, the
+//! elliptic integrals of the first, second and third kind, Jacobi's zeta and Heuman's
+//! lambda functions, the nome and the theta functions, at any precision.
 //!
 //! **Modulus convention.** Every function takes the *modulus* `k` (as in the paper and
 //! in DLMF §22.2), **not** the parameter `m = k²` used by mpmath, SciPy and
@@ -7,9 +8,10 @@
 //! `k' = √(1−k²)`, computed as `√((1−k)(1+k))` so that it keeps full relative accuracy
 //! as `k → 1`.  The Jacobi functions of a real argument take any `k ≥ 0` (`k = 1`:
 //! `tanh`, `sech`, DLMF 22.5.ii; `k > 1`: DLMF 22.17.2–4) and [`sncndn_m`] any real
-//! `m` (`m < 0`: imaginary modulus, DLMF 22.17.6–8); the elliptic integrals and the
-//! complex argument take `0 ≤ k < 1`.  Anything else (including NaN) is an error,
-//! never a panic.
+//! `m` (`m < 0`: imaginary modulus, DLMF 22.17.6–8); so does the complex argument
+//! ([`sncndn_complex`] any `k ≥ 0`, [`sncndn_complex_m`] any real `m`); the elliptic
+//! integrals take `0 ≤ k < 1` (those of the second kind `0 ≤ k ≤ 1`).  Anything else
+//! (including NaN) is an error, never a panic.
 //!
 //! All functions are written once, generically over [`Real`] / [`ComplexScalar`](crate::numbers::ComplexScalar):
 //! they run on `f64`, on `rug::Float` at any precision, on complex pairs and on
@@ -77,6 +79,16 @@
 //!   `φ_{n+1} = φ_n + atan((b_n/a_n) tan φ_n)`, `F = φ_N/(2^N a_N)`
 //!   (DLMF §19.8(i), Abramowitz–Stegun 17.6), quadratically convergent.
 //! * **Inverse** (module `inverse`): `u = F(atan2(sn, cn), k)` (DLMF 22.15.11–12).
+//! * **E, Π, Z, Λ₀** (modules `second`, `third`, `zeta` on `carlson`): Carlson's
+//!   symmetric integrals `R_F`, `R_D`, `R_J` by the duplication algorithm (DLMF
+//!   19.36.1–2), the amplitude reduced to `[−π/4, π/2]` with its sine and squared
+//!   cosine taken exactly from the residual (module `phase`), and each function written
+//!   as a sum of terms of one sign (DLMF 19.25.1, 19.25.10, 19.25.14; for `n < 0`
+//!   Abramowitz–Stegun 17.7.15).  [`ToolkitFn`] names them for callers that choose at
+//!   run time (the expression language).
+//! * **Nome and θ_j** (module `jtheta`): Jacobi's series for `q` after Landen steps;
+//!   the theta series for `q ≤ 1/4`, Gaussian sums after Jacobi's imaginary
+//!   transformation above.
 //!
 //! # Error behaviour
 //!
@@ -90,29 +102,46 @@
 
 mod agm;
 mod bottom;
+mod carlson;
 mod complex;
+mod complex_modulus;
 mod dd;
 mod ellint;
 mod fixed;
 mod glaisher;
 mod inverse;
 mod jacobi;
+mod jtheta;
 mod landen;
 mod landen_mpfr;
 mod modulus;
 mod multi;
+mod phase;
 mod reduce;
+mod second;
 mod sincos;
 #[cfg(test)]
 mod tests;
 mod theta;
+mod third;
+mod toolkit;
+mod zeta;
 
 pub use agm::{ellipk, ellipkp};
-pub use complex::sncndn_complex;
+pub use complex::{sncndn_complex, sncndn_complex_m};
+pub use complex_modulus::sncndn_complex_modulus;
 pub use ellint::ellipf;
-pub use glaisher::{JacobiFn, jacobi, jacobi_complex, jacobi_m};
+pub use glaisher::{
+    JacobiFn, jacobi, jacobi_complex, jacobi_complex_m_set, jacobi_complex_set, jacobi_m,
+    jacobi_m_set, jacobi_set,
+};
 pub use inverse::jacobi_inverse;
 pub use jacobi::{am, sncndn, sncndn_m, sncndn_many};
+pub use jtheta::{jtheta, nome};
+pub use second::{ellipe, ellipeinc};
+pub use third::ellippi;
+pub use toolkit::ToolkitFn;
+pub use zeta::{heumanlambda, jacobizeta};
 
 use crate::numbers::Real;
 
@@ -135,6 +164,10 @@ pub enum SpecialError {
     /// The argument is too large for the argument reduction (`|u|/K ≥ 2^50`).
     #[error("argument too large: {0}")]
     ArgumentTooLarge(String),
+    /// An argument outside the domain where the function is real and finite (e.g. the
+    /// characteristic `n > 1/sin²φ` of `Π(n, φ, k)`).
+    #[error("domain: {0}")]
+    Domain(String),
     /// Input values that are not sn, cn, dn of one real argument.
     #[error("inconsistent input: {0}")]
     Inconsistent(String),
@@ -177,7 +210,7 @@ pub(crate) fn even_modulus<R: Real>(k: &R) -> Result<R, SpecialError> {
     Ok(if *k < k.zero() { -k.clone() } else { k.clone() })
 }
 
-/// Checks `0 ≤ k < 1` and finiteness (elliptic integrals, complex argument).
+/// Checks `0 ≤ k < 1` and finiteness (elliptic integrals).
 #[inline]
 pub(crate) fn check_modulus_below_one<R: Real>(k: &R) -> Result<(), SpecialError> {
     if !k.is_finite() || *k < k.zero() || *k >= k.one() {
@@ -187,7 +220,7 @@ pub(crate) fn check_modulus_below_one<R: Real>(k: &R) -> Result<(), SpecialError
 }
 
 #[cold]
-fn modulus_error<R: Real>(k: &R, range: &str) -> SpecialError {
+pub(crate) fn modulus_error<R: Real>(k: &R, range: &str) -> SpecialError {
     SpecialError::ModulusOutOfRange(format!("k = {} is outside {range}", show(k)))
 }
 

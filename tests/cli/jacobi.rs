@@ -142,8 +142,8 @@ fn errors_are_one_line_with_the_line_number() {
         ),
         (
             vec!["--complex", "--parameter"],
-            b"".to_vec(),
-            "not available",
+            b"0.5 0.5 x\n".to_vec(),
+            "<stdin>:1:9: malformed parameter m",
         ),
         (vec![], b"0.5 0.5\n0.1 0.2\n1 x\n".to_vec(), "<stdin>:3:"),
         (vec![], b"0.5 abc\n".to_vec(), "<stdin>:1:"),

@@ -165,3 +165,38 @@ proptest! {
         prop_assert!((cd * dc - 1.0).abs() <= tol && (sc * cs - 1.0).abs() <= tol && (sd * ds - 1.0).abs() <= tol);
     }
 }
+
+/// The functions of one `(u, k)` from one evaluation of sn, cn, dn (`jacobi_set`, used
+/// by `eulertop jacobi`) are the values of `jacobi` one by one, bit for bit, and a pole
+/// of any of them is the error of the set.
+#[test]
+fn set_is_each_function() {
+    use eulertop::special::{jacobi_m_set, jacobi_set};
+    let fs = JacobiFn::ALL;
+    for (u, k) in [(0.7, 0.5), (-3.1, 0.999), (12.0, 1.0), (0.3, 2.5)] {
+        let set = jacobi_set(&fs, &u, &k).unwrap();
+        let mset = jacobi_m_set(&fs, &u, &(k * k)).unwrap();
+        for (i, f) in fs.iter().enumerate() {
+            assert_eq!(set[i], jacobi(*f, &u, &k).unwrap(), "{f:?} {u} {k}");
+            assert_eq!(
+                mset[i],
+                jacobi_m(*f, &u, &(k * k)).unwrap(),
+                "{f:?} {u} {k}"
+            );
+        }
+        let (uu, kk) = (Float::with_val(128, u), Float::with_val(128, k));
+        let set = jacobi_set(&fs, &uu, &kk).unwrap();
+        for (i, f) in fs.iter().enumerate() {
+            assert_eq!(
+                set[i],
+                jacobi(*f, &uu, &kk).unwrap(),
+                "{f:?} {u} {k} 128 bits"
+            );
+        }
+    }
+    let pole = jacobi_set(&[JacobiFn::Sn, JacobiFn::Ns], &0.0, &0.5);
+    assert_eq!(
+        pole.unwrap_err(),
+        jacobi(JacobiFn::Ns, &0.0, &0.5).unwrap_err()
+    );
+}

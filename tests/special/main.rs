@@ -10,6 +10,7 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 mod common;
 
 mod ellint;
+mod ellint2;
 mod jacobi_builtins;
 mod jacobi_complex;
 mod jacobi_dual;

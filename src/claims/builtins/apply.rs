@@ -5,7 +5,7 @@ use crate::claims::backend::{Num, RealFn, RealFn2};
 use crate::claims::cmath;
 use crate::claims::value::Value;
 use crate::linalg::{Mat2, Mat3, Vec3};
-use crate::special::JacobiFn;
+use crate::special::{JacobiFn, ToolkitFn};
 
 fn arity<T>(a: &[Value<T>], n: usize) -> Result<(), String> {
     if a.len() != n {
@@ -32,6 +32,8 @@ pub fn apply<T: Num>(f: Builtin, like: &T, a: &[Value<T>]) -> Result<Value<T>, S
         B::Sn | B::Cn | B::Dn => jacobi(f, a),
         B::Cd | B::Dc | B::Ns | B::Nc | B::Nd | B::Sc | B::Sd | B::Cs | B::Ds => jacobi(f, a),
         B::Am | B::K | B::Kp | B::F | B::JacobiInverse => elliptic(f, a),
+        B::Ellipe | B::Ellipeinc | B::Ellippi | B::Jacobizeta => toolkit(f, a),
+        B::Heumanlambda | B::Nome | B::Jtheta => toolkit(f, a),
         B::Vec | B::Dot | B::Cross | B::Norm2 | B::Norm | B::VnormInf => vector(f, a),
         B::Sum | B::Prod | B::D | B::Grad => {
             Err(format!("'{}' is a special form, not a function", f.name()))
@@ -226,6 +228,18 @@ fn elliptic<T: Num>(f: Builtin, a: &[Value<T>]) -> Result<Value<T>, String> {
             T::jacobi_inverse(&r(0)?, &r(1)?, &r(2)?, &r(3)?).map(Value::Real)
         }
     }
+}
+
+/// The functions of the elliptic toolkit ([`ToolkitFn`], same names): real arguments,
+/// `jtheta`'s index an integer.
+fn toolkit<T: Num>(f: Builtin, a: &[Value<T>]) -> Result<Value<T>, String> {
+    let g = ToolkitFn::from_name(f.name()).ok_or("not a toolkit function")?;
+    arity(a, g.arity())?;
+    let args = a
+        .iter()
+        .map(Value::as_real)
+        .collect::<Result<Vec<T>, _>>()?;
+    T::toolkit(g, &args).map(Value::Real)
 }
 
 fn vector<T: Num>(f: Builtin, a: &[Value<T>]) -> Result<Value<T>, String> {

@@ -157,7 +157,7 @@ name_table! {
         Arg = "arg"("z"): Exact(1), "complex → real", Complex, Operator;
         /// a + b·i
         Cplx = "cplx"("a, b"): Exact(2), "real, real → complex", Complex, Name;
-        /// Jacobi sn (modulus k, not the parameter m = k²; real u: any real k, a negative one as |k| by DLMF 22.17.1; complex u: 0 ≤ k < 1)
+        /// Jacobi sn (modulus k, not the parameter m = k²; real u: any real k, a negative one as |k| by DLMF 22.17.1; complex u: k ≥ 0)
         Sn = "sn"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
         /// Jacobi cn (modulus k)
         Cn = "cn"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
@@ -189,6 +189,20 @@ name_table! {
         Kp = "Kp"("k"): Exact(1), "real → real", Elliptic, Name;
         /// incomplete elliptic integral of the first kind
         F = "F"("phi, k"): Exact(2), "real, real → real", Elliptic, Name;
+        /// complete elliptic integral of the second kind E(k), 0 ≤ k ≤ 1 (DLMF 19.2.8)
+        Ellipe = "ellipe"("k"): Exact(1), "real → real", Elliptic, Name;
+        /// incomplete elliptic integral of the second kind E(φ, k), any real φ (DLMF 19.2.5)
+        Ellipeinc = "ellipeinc"("phi, k"): Exact(2), "real, real → real", Elliptic, Name;
+        /// incomplete elliptic integral of the third kind Π(n, φ, k), characteristic n, n sin²φ < 1 (DLMF 19.2.7)
+        Ellippi = "ellippi"("n, phi, k"): Exact(3), "real, real, real → real", Elliptic, Name;
+        /// Jacobi's zeta function Z(φ, k) = E(φ, k) − E(k)F(φ, k)/K(k) (DLMF 19.2.33)
+        Jacobizeta = "jacobizeta"("phi, k"): Exact(2), "real, real → real", Elliptic, Name;
+        /// Heuman's lambda function Λ₀(φ, k) (DLMF 19.2.32)
+        Heumanlambda = "heumanlambda"("phi, k"): Exact(2), "real, real → real", Elliptic, Name;
+        /// the nome q = exp(−πK'(k)/K(k)) (DLMF 22.2.1)
+        Nome = "nome"("k"): Exact(1), "real → real", Elliptic, Name;
+        /// Jacobi theta function θ_j(z, q), j = 1, 2, 3, 4, real nome q (DLMF 20.2.1–4)
+        Jtheta = "jtheta"("j, z, q"): Exact(3), "integer 1, 2, 3, 4, real, real → real", Elliptic, Name;
         /// the real u ∈ (−2K, 2K] with sn, cn, dn = s, c, d
         JacobiInverse = "jacobi_inverse"("s, c, d, k"): Exact(4), "real, real, real, real → real", Elliptic, Name;
         /// the vector (a, b, c)
