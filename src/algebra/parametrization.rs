@@ -49,9 +49,12 @@ const MAX_OUTPUT_TERMS: usize = 40_000;
 /// alternative parametrization (their substitutions grow fast).
 pub(crate) const MAX_WIDENED_TERMS: usize = 64;
 /// The largest exponent of the Pólya multiplier (see [`Parametrization::poly_sign_polya`]).
-const MAX_POLYA: u32 = 12;
-/// The most terms a polynomial may have, before and after a Pólya multiplication.
-const MAX_POLYA_TERMS: usize = 2_000;
+const MAX_POLYA: u32 = 8;
+/// The most terms a polynomial may have for a Pólya multiplication to be tried (the
+/// test is tried on every undecided sign, so it must stay cheap).
+const MAX_POLYA_START_TERMS: usize = 40;
+/// The most terms a Pólya multiple may have.
+const MAX_POLYA_TERMS: usize = 400;
 
 /// How a parameter ranges.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -318,7 +321,8 @@ impl Parametrization {
     }
 
     /// Multiplies by `1 + Σ tᵢ` (over the parameters that occur) until the coefficients
-    /// have one sign, within [`MAX_POLYA`] steps and [`MAX_POLYA_TERMS`] terms; not for a
+    /// have one sign, from at most [`MAX_POLYA_START_TERMS`] terms, within [`MAX_POLYA`]
+    /// steps and [`MAX_POLYA_TERMS`] terms; not for a
     /// polynomial in a parameter of either sign.
     fn polya(&self, mut acc: Poly) -> Option<(i32, u32)> {
         let used = acc.used_vars();
@@ -327,7 +331,7 @@ impl Parametrization {
                 .get(*i)
                 .is_some_and(|(_, k)| *k == ParamKind::NonZero)
         };
-        if acc.len() > MAX_POLYA_TERMS || used.iter().any(either) {
+        if acc.len() > MAX_POLYA_START_TERMS || used.iter().any(either) {
             return None;
         }
         let mut step = Poly::from_i64(&self.ctx, 1);
