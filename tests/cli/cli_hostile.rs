@@ -1443,3 +1443,39 @@ fn a_literal_that_underflows_is_not_silently_zero() {
         o.stderr
     );
 }
+
+// -- M16: a refutation judged on rungs below 128 bits ------------------------------------
+
+#[test]
+fn m16_a_refutation_below_128_bits_names_the_rungs_it_was_judged_on() {
+    let o = run(&[
+        "verify",
+        "--bits",
+        "53,64",
+        "--only",
+        "sec5.u0.printed",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    assert!(o.stdout.contains("\"refuted\""), "{}", o.stdout);
+    assert!(
+        o.stdout
+            .contains("at every rung run (53, 64 bits; none of 128 bits or more)"),
+        "{}",
+        o.stdout
+    );
+    assert!(!o.stdout.contains("every rung ≥ 128 bits"), "{}", o.stdout);
+}
+
+#[test]
+fn m16_audit_of_an_asymptotic_claim_explains_the_missing_fit() {
+    let o = run(&["audit", "sec3.as.g1.printed", "--bits", "64,128"]);
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    assert!(!o.stdout.contains("fewer than two rungs"), "{}", o.stdout);
+    assert!(
+        o.stdout.contains("order of convergence in h, not a residual"),
+        "{}",
+        o.stdout
+    );
+}
