@@ -193,7 +193,10 @@ mod tests {
         assert_eq!(verdict(&w, 24.0, 30.0).0, Verdict::Refuted);
         let (v, _, reason) = verdict(&rungs(&[(53, -10.0), (64, -10.0)]), 24.0, 30.0);
         assert_eq!(v, Verdict::Refuted);
-        assert!(reason.contains("(53, 64 bits; none of 128 bits or more)"), "{reason}");
+        assert!(
+            reason.contains("(53, 64 bits; none of 128 bits or more)"),
+            "{reason}"
+        );
         assert!(!reason.contains("≥ 128"), "{reason}");
     }
 
