@@ -28,17 +28,18 @@ pub struct Args {
 
 /// Writes one row per rung: the residual of the claim run at that precision alone, flushed as
 /// soon as it is known.  Returns `(bits, −log2 residual)` of the rungs with a nonzero
-/// residual.
+/// residual, and whether any rung was an order of convergence instead of a residual.
 fn ladder(
     out: &mut impl Write,
     cat: &Catalogue,
     claim: &Claim,
     bits: &[u32],
     bar: Option<&indicatif::ProgressBar>,
-) -> Result<(Vec<f64>, Vec<f64>), CliError> {
+) -> Result<(Vec<f64>, Vec<f64>, bool), CliError> {
     let err = write_error("standard output");
     let mut xs = Vec::new();
     let mut ys = Vec::new();
+    let mut slopes = false;
     for &b in bits {
         let opts = Options {
             bits: vec![b],
@@ -48,7 +49,10 @@ fn ladder(
         let rung = r.residuals.first();
         let cell = match rung {
             None => format!("- ({})", r.reason),
-            Some(Rung::Slope { slope, .. }) => format!("slope {slope:.3}"),
+            Some(Rung::Slope { slope, .. }) => {
+                slopes = true;
+                format!("slope {slope:.3}")
+            }
             Some(x) => fmt_log2(x.log2()),
         };
         if let Some(l) = rung.and_then(|x| x.log2()) {
@@ -64,7 +68,30 @@ fn ladder(
             None => row().map_err(&err)?,
         }
     }
-    Ok((xs, ys))
+    Ok((xs, ys, slopes))
+}
+
+/// The "fitted slope" line: the least-squares slope of −log2 residual against precision,
+/// or why there is none.
+fn slope_line(slopes: bool, bits: &[u32], xs: &[f64], ys: &[f64]) -> String {
+    if let Some(s) = ls_slope(xs, ys) {
+        return format!("fitted slope: {s:.3} bits of agreement per bit of precision");
+    }
+    let why = if slopes {
+        "an asymptotic claim: each rung shows its order of convergence in h, not a residual"
+            .to_string()
+    } else if bits.len() < 2 {
+        format!("{} rung run; two are needed", bits.len())
+    } else if xs.len() < 2 {
+        format!(
+            "{} of the {} rungs have a nonzero residual; two are needed",
+            xs.len(),
+            bits.len()
+        )
+    } else {
+        "the residuals do not determine a slope".to_string()
+    };
+    format!("fitted slope: n/a ({why})")
 }
 
 /// Runs `eulertop audit`.
@@ -90,7 +117,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     let bar = std::io::stderr()
         .is_terminal()
         .then(|| indicatif::ProgressBar::new(bits.len() as u64 + 1));
-    let (xs, ys) = ladder(&mut out, &cat, claim, &bits, bar.as_ref())?;
+    let (xs, ys, slopes) = ladder(&mut out, &cat, claim, &bits, bar.as_ref())?;
     let opts = Options {
         bits: bits.clone(),
         exact: true,
@@ -99,10 +126,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     if let Some(p) = &bar {
         p.finish_and_clear();
     }
-    let slope = match ls_slope(&xs, &ys) {
-        Some(s) => format!("fitted slope: {s:.3} bits of agreement per bit of precision"),
-        None => "fitted slope: n/a (residual exactly zero or fewer than two rungs)".to_string(),
-    };
+    let slope = slope_line(slopes, &bits, &xs, &ys);
     writeln!(out, "{slope}")
         .and_then(|()| {
             writeln!(

@@ -62,7 +62,7 @@ impl<R: Real> EllipticParams<R> {
         let ae = a.clone() * e.clone() - m2.clone(); // AE − M²
         let ce = m2.clone() - c.clone() * e.clone(); // M² − CE
         let regime = Regime::of(inertia, m2, e);
-        Self::from_differences(inertia, m2, e, ae, ce, regime)
+        Self::rounded_to_regime(inertia, m2, e, ae, ce, regime)
     }
 
     /// The same parameters for the `(M², E)` of the point `m`, with the differences
@@ -88,7 +88,26 @@ impl<R: Real> EllipticParams<R> {
         // an exact evaluation then squares each component once
         let m2 = x2.clone() + y2.clone() + z2.clone();
         let e = x2 / a.clone() + y2 / b.clone() + z2 / c.clone();
-        Self::from_differences(inertia, &m2, &e, ae, ce, regime)
+        Self::rounded_to_regime(inertia, &m2, &e, ae, ce, regime)
+    }
+
+    /// [`from_differences`](Self::from_differences), except that at a finite precision a
+    /// modulus that rounds to 1 or beyond (the point lies within rounding of the
+    /// separatrix) takes the separatrix formulas, with which `k² = 1` is consistent;
+    /// exact arithmetic keeps the regime of the sign.
+    fn rounded_to_regime(
+        inertia: &Inertia<R>,
+        m2: &R,
+        e: &R,
+        ae: R,
+        ce: R,
+        regime: Regime,
+    ) -> Result<Self, ModelError> {
+        let p = Self::from_differences(inertia, m2, e, ae.clone(), ce.clone(), regime)?;
+        if p.regime == Regime::Separatrix || m2.precision().is_none() || p.k2 < m2.one() {
+            return Ok(p);
+        }
+        Self::from_differences(inertia, m2, e, ae, ce, Regime::Separatrix)
     }
 
     fn from_differences(

@@ -1443,3 +1443,108 @@ fn a_literal_that_underflows_is_not_silently_zero() {
         o.stderr
     );
 }
+
+// -- M16: a refutation judged on rungs below 128 bits ------------------------------------
+
+#[test]
+fn m16_a_refutation_below_128_bits_names_the_rungs_it_was_judged_on() {
+    let o = run(&[
+        "verify",
+        "--bits",
+        "53,64",
+        "--only",
+        "sec5.u0.printed",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    assert!(o.stdout.contains("\"refuted\""), "{}", o.stdout);
+    assert!(
+        o.stdout
+            .contains("at every rung run (53, 64 bits; none of 128 bits or more)"),
+        "{}",
+        o.stdout
+    );
+    assert!(!o.stdout.contains("every rung ≥ 128 bits"), "{}", o.stdout);
+}
+
+#[test]
+fn m16_audit_of_an_asymptotic_claim_explains_the_missing_fit() {
+    let o = run(&["audit", "sec3.as.g1.printed", "--bits", "64,128"]);
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    assert!(!o.stdout.contains("fewer than two rungs"), "{}", o.stdout);
+    assert!(
+        o.stdout
+            .contains("order of convergence in h, not a residual"),
+        "{}",
+        o.stdout
+    );
+}
+
+// -- M17: an orbit from a point whose modulus rounds to 1 ------------------------------
+
+#[test]
+fn m17_an_orbit_from_within_rounding_of_the_separatrix_runs() {
+    for (bits, start) in [
+        ("53", ["1e-10", "1", "1e-10"]),
+        ("256", ["1e-40", "1", "1e-40"]),
+        ("53", ["3", "1", "1.7320508075688772"]),
+    ] {
+        let mut args = vec![
+            "orbit",
+            "--inertia",
+            "3,2,1",
+            "--h",
+            "0.1",
+            "--gamma",
+            "1",
+            "--steps",
+            "50",
+            "--bits",
+            bits,
+        ];
+        args.extend(start);
+        let o = run(&args);
+        assert_eq!(o.code, Some(0), "{args:?}: {}", o.stderr);
+        assert!(
+            !o.stderr.contains("outside [0, 1)"),
+            "{args:?}: {}",
+            o.stderr
+        );
+        assert_eq!(o.stdout.lines().count(), 50, "{args:?}: {}", o.stdout);
+    }
+}
+
+// -- R2: a proof that must evaluate pi fails at once -------------------------------------
+
+#[test]
+fn r2_a_proof_that_evaluates_pi_fails_before_the_work() {
+    let n = 12;
+    let mut lets = vec!["a0 = 1".to_string(), "b0 = sqrt(1 - k^2)".to_string()];
+    for j in 1..=n {
+        lets.push(format!("a{j} = (a{} + b{})/2", j - 1, j - 1));
+        lets.push(format!("b{j} = sqrt(a{}*b{})", j - 1, j - 1));
+    }
+    let text = format!(
+        "[[claim]]\nid = \"t.pi\"\nlocation = \"test\"\nprinted = 'x'\n\
+         environment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\n\
+         expect = \"holds\"\nvars = [[\"k\", \"uniform(0.1, 0.9)\"]]\n\
+         let = '''\n{}\n'''\nlhs = \"a{n}^2 - b{n}^2 + pi\"\nrhs = \"(a{m} - b{m})^2/4 + pi\"\n",
+        lets.join("\n"),
+        m = n - 1
+    );
+    let dir = catalogue("pi-fast", text.as_bytes());
+    let start = Instant::now();
+    let o = run(&["prove", "t.pi", "--catalogue", dir.to_str().unwrap()]);
+    assert!(
+        start.elapsed() < Duration::from_secs(5),
+        "{:?}",
+        start.elapsed()
+    );
+    assert!(
+        o.stdout.contains("pi is not algebraic"),
+        "{}{}",
+        o.stdout,
+        o.stderr
+    );
+}

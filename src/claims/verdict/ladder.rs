@@ -62,6 +62,19 @@ pub fn worst_residuals<P>(bits: &[u32], samples: &[Sample<P, Sides>]) -> Vec<Wor
         .collect()
 }
 
+/// Which rungs were judged, in words: "at every rung ≥ 128 bits", or, when none of them
+/// reaches [`JUDGED_FROM_BITS`], the rungs that were run.
+fn judged_phrase(judged: &[&Worst]) -> String {
+    if judged.iter().any(|w| w.bits >= JUDGED_FROM_BITS) {
+        return format!("at every rung ≥ {JUDGED_FROM_BITS} bits");
+    }
+    let list: Vec<String> = judged.iter().map(|w| w.bits.to_string()).collect();
+    format!(
+        "at every rung run ({} bits; none of {JUDGED_FROM_BITS} bits or more)",
+        list.join(", ")
+    )
+}
+
 /// The ladder verdict from the worst residual per rung: (verdict, g, reason).
 pub fn verdict(
     worst: &[Worst],
@@ -80,12 +93,14 @@ pub fn verdict(
     let judged = judged(worst, |w| w.bits);
     if !judged.is_empty() && judged.iter().all(|w| w.value >= -refute_floor_bits) {
         let reason = format!(
-            "residual ≥ 2^-{refute_floor_bits} at every rung ≥ 128 bits: it does not shrink with precision"
+            "residual ≥ 2^-{refute_floor_bits} {}: it does not shrink with precision",
+            judged_phrase(&judged)
         );
         return (Verdict::Refuted, g_rep, reason);
     }
     let reason = format!(
-        "residual neither within 2^(−p+{max_loss_bits}) at every rung nor above 2^-{refute_floor_bits} from 128 bits on (g = {g_rep:.1})"
+        "residual neither within 2^(−p+{max_loss_bits}) at every rung nor above 2^-{refute_floor_bits} {} (g = {g_rep:.1})",
+        judged_phrase(&judged)
     );
     (Verdict::Inconclusive, g_rep, reason)
 }
@@ -176,6 +191,13 @@ mod tests {
         // 2^-10 at every rung: the 53-bit rung is not judged, so its value is irrelevant
         let w = rungs(&[(53, -60.0), (128, -10.0), (256, -10.0)]);
         assert_eq!(verdict(&w, 24.0, 30.0).0, Verdict::Refuted);
+        let (v, _, reason) = verdict(&rungs(&[(53, -10.0), (64, -10.0)]), 24.0, 30.0);
+        assert_eq!(v, Verdict::Refuted);
+        assert!(
+            reason.contains("(53, 64 bits; none of 128 bits or more)"),
+            "{reason}"
+        );
+        assert!(!reason.contains("≥ 128"), "{reason}");
     }
 
     #[test]

@@ -60,7 +60,7 @@ use crate::claims::sampler::{Point, Stream};
 use crate::claims::value::Value;
 use case::{Signs, prove_case};
 use cases::{Cases, Role, case_points, role_of};
-use scope::{iteration, not_analytic, states_condition};
+use scope::{evaluates_pi, iteration, not_analytic, states_condition};
 use std::time::Instant;
 
 /// Attempts a symbolic proof of `lhs = rhs` on the claim's domain.
@@ -74,7 +74,7 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
     if let Some(why) = not_analytic(ctx, sampler.variables(), &[lhs, rhs]) {
         return ProofInfo::none(why);
     }
-    if let Some(why) = iteration(ctx, &[lhs, rhs]) {
+    if let Some(why) = iteration(ctx, &[lhs, rhs]).or_else(|| evaluates_pi(ctx, &[lhs, rhs])) {
         return ProofInfo::none(why);
     }
     let signs = Signs {

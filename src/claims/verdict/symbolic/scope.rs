@@ -120,3 +120,41 @@ pub(super) fn is_literal(e: &Expr) -> bool {
         _ => false,
     }
 }
+
+/// Why no proof is attempted when the claim's formulas evaluate `pi` whatever the
+/// point: π is not algebraic, so the attempt would fail when it reaches it, after all
+/// the work before it.  Occurrences in an `if` branch, a `sum` body or a derivative may
+/// never be evaluated and are not counted; neither is a `pi` the claim binds itself.
+pub(super) fn evaluates_pi(ctx: Ctx<'_>, sides: &[&PExpr]) -> Option<String> {
+    let claim = ctx.claim;
+    let bound = claim.vars.iter().any(|(n, _)| n == "pi")
+        || claim.lets.iter().any(|b| {
+            b.name == "pi"
+                || b.params
+                    .as_ref()
+                    .is_some_and(|p| p.iter().any(|n| n == "pi"))
+        });
+    if bound {
+        return None;
+    }
+    let forced = sides.iter().any(|s| forces_pi(&s.expr))
+        || claim
+            .lets
+            .iter()
+            .any(|b| b.params.is_none() && forces_pi(&b.body));
+    forced.then(|| "pi is not algebraic: the symbolic prover cannot expand it".to_string())
+}
+
+/// Whether evaluating `e` evaluates the constant `pi` at every point.
+fn forces_pi(e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Name(n) => n == "pi",
+        ExprKind::Num(_) | ExprKind::Deriv { .. } | ExprKind::Grad { .. } => false,
+        ExprKind::Call(_, a) | ExprKind::List(a) => a.iter().any(forces_pi),
+        ExprKind::Unary(_, a) => forces_pi(a),
+        ExprKind::Binary(_, a, b) => forces_pi(a) || forces_pi(b),
+        ExprKind::If(c, _, _) => forces_pi(c),
+        ExprKind::Index(a, ix) => forces_pi(a) || ix.iter().any(forces_pi),
+        ExprKind::Sum { from, to, .. } => forces_pi(from) || forces_pi(to),
+    }
+}
