@@ -107,6 +107,13 @@ impl<R: Real> EllipticParams<R> {
         if p.regime == Regime::Separatrix || m2.precision().is_none() || p.k2 < m2.one() {
             return Ok(p);
         }
+        // only within rounding of 1: a modulus that overflows or lies far beyond 1 is
+        // an error of the input, reported as before
+        let excess = p.k2.clone() - m2.one();
+        let rounding = m2.epsilon() * m2.from_i64(64);
+        if !excess.is_finite() || excess > rounding {
+            return Ok(p);
+        }
         Self::from_differences(inertia, m2, e, ae, ce, Regime::Separatrix)
     }
 
