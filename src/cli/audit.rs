@@ -3,6 +3,7 @@
 
 use super::verify::{fmt_log2, load, parse_bits};
 use super::{CliError, stdout, write_error};
+use crate::claims::catalogue::lookup::{Scope, find};
 use crate::claims::catalogue::{Catalogue, Claim};
 use crate::claims::verdict::{Options, Rung, run_claim};
 use crate::stats::ls_slope;
@@ -12,7 +13,7 @@ use std::io::{IsTerminal, Write};
 /// Arguments of `eulertop audit`.
 #[derive(Parser, Debug)]
 pub struct Args {
-    /// The claim id.
+    /// The claim id, an environment name (its statement claims) or a paper label.
     pub id: String,
     /// Precision ladder in bits.
     #[arg(
@@ -94,16 +95,37 @@ fn slope_line(slopes: bool, bits: &[u32], xs: &[f64], ys: &[f64]) -> String {
     format!("fitted slope: n/a ({why})")
 }
 
-/// Runs `eulertop audit`.
+/// Runs `eulertop audit`: `ID` may also name an environment (its statement claims) or a
+/// paper label (the claims carrying it), audited one after another in catalogue order;
+/// exit status 0 iff every verdict is as expected.
 pub fn run(args: Args) -> Result<i32, CliError> {
     let bits = parse_bits(&args.bits)?;
     let cat = load(&args.catalogue)?;
-    let claim = cat
-        .claims
-        .iter()
-        .find(|c| c.id == args.id)
-        .ok_or_else(|| CliError(format!("no claim with id '{}'", args.id)))?;
+    let sel = find(&cat, &args.id, Scope::Statement).map_err(CliError::new)?;
     let mut out = stdout();
+    if sel.claims.len() > 1 || sel.claims[0].id != args.id {
+        let n = sel.claims.len();
+        let s = if n == 1 { "" } else { "s" };
+        writeln!(out, "{}: {n} claim{s}\n", sel.what).map_err(write_error("standard output"))?;
+    }
+    let mut as_expected = true;
+    for (j, claim) in sel.claims.iter().enumerate() {
+        if j > 0 {
+            writeln!(out).map_err(write_error("standard output"))?;
+        }
+        as_expected &= audit_one(&mut out, &cat, claim, &bits)?;
+    }
+    Ok(i32::from(!as_expected))
+}
+
+/// Audits one claim: the ladder, the fitted slope and the verdict.  Returns whether the
+/// verdict is as expected.
+fn audit_one(
+    out: &mut impl Write,
+    cat: &Catalogue,
+    claim: &Claim,
+    bits: &[u32],
+) -> Result<bool, CliError> {
     let err = write_error("standard output");
     writeln!(
         out,
@@ -117,16 +139,16 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     let bar = std::io::stderr()
         .is_terminal()
         .then(|| indicatif::ProgressBar::new(bits.len() as u64 + 1));
-    let (xs, ys, slopes) = ladder(&mut out, &cat, claim, &bits, bar.as_ref())?;
+    let (xs, ys, slopes) = ladder(out, cat, claim, bits, bar.as_ref())?;
     let opts = Options {
-        bits: bits.clone(),
+        bits: bits.to_vec(),
         exact: true,
     };
-    let full = run_claim(&cat, claim, &opts);
+    let full = run_claim(cat, claim, &opts);
     if let Some(p) = &bar {
         p.finish_and_clear();
     }
-    let slope = slope_line(slopes, &bits, &xs, &ys);
+    let slope = slope_line(slopes, bits, &xs, &ys);
     writeln!(out, "{slope}")
         .and_then(|()| {
             writeln!(
@@ -139,5 +161,5 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         })
         .and_then(|()| out.flush())
         .map_err(&err)?;
-    Ok(i32::from(!full.as_expected))
+    Ok(full.as_expected)
 }

@@ -7,7 +7,8 @@
 
 use super::cert_source::{RawCatalogue, bind, premise_lines};
 use super::{CliError, stdout, write_error};
-use crate::claims::catalogue::Body;
+use crate::claims::catalogue::lookup::{Scope, find};
+use crate::claims::catalogue::{Body, Catalogue, Claim, PExpr};
 use crate::claims::verdict::context::Ctx;
 use crate::claims::verdict::independence::derivative_sides;
 use crate::claims::verdict::symbolic::{ProofInfo, prove};
@@ -17,7 +18,8 @@ use std::io::Write;
 /// Arguments of `eulertop prove`.
 #[derive(Parser, Debug)]
 pub struct Args {
-    /// The claim id (an identity, or an independence claim: d(expr, wrt) = 0).
+    /// The claim id (an identity, or an independence claim: d(expr, wrt) = 0), an
+    /// environment name (its statement claims) or a paper label (the claims carrying it).
     pub id: String,
     /// Catalogue directory.
     #[arg(long, default_value = "identities")]
@@ -67,36 +69,85 @@ pub fn derivation(id: &str, printed: &str, p: &ProofInfo) -> String {
     out
 }
 
-/// Runs `eulertop prove`; exit status 0 if proved, 1 if not.
+/// Runs `eulertop prove`; exit status 0 if proved, 1 if not.  `ID` may also name an
+/// environment (its statement claims) or a paper label (the claims carrying it): each
+/// identity or independence claim among them is proved in catalogue order, and the exit
+/// status is 0 iff every one is proved.
 pub fn run(args: Args) -> Result<i32, CliError> {
     args.budget.apply()?;
     let cat = super::verify::load(&args.catalogue)?;
-    let claim = cat
-        .claims
-        .iter()
-        .find(|c| c.id == args.id)
-        .ok_or_else(|| CliError(format!("no claim with id '{}'", args.id)))?;
-    let (lhs, rhs) = match &claim.body {
-        Body::Identity { lhs, rhs } => (lhs.clone(), rhs.clone()),
-        // independence: d(expr, wrt) = 0
-        Body::Independence { expr, wrt, .. } => derivative_sides(expr, wrt),
-        _ => {
-            return Err(CliError(format!(
-                "claim '{}' is of kind {}, and only identities and independence claims are proved symbolically",
+    let sel = find(&cat, &args.id, Scope::Statement).map_err(CliError::new)?;
+    if let [claim] = sel.claims[..] {
+        if claim.id != args.id {
+            let mut out = stdout();
+            writeln!(out, "{}: 1 claim\n", sel.what).map_err(write_error("standard output"))?;
+        }
+        return prove_one(&args, &cat, claim);
+    }
+    if args.certificate.is_some() {
+        return Err(CliError(format!(
+            "--certificate needs one claim, and '{}' names {} ({})",
+            args.id,
+            sel.claims.len(),
+            sel.what
+        )));
+    }
+    let provable = |c: &Claim| matches!(c.body, Body::Identity { .. } | Body::Independence { .. });
+    if !sel.claims.iter().any(|c| provable(c)) {
+        return Err(CliError(format!(
+            "none of the {} claims of {} is an identity or an independence claim, the kinds proved symbolically",
+            sel.claims.len(),
+            sel.what
+        )));
+    }
+    let mut out = stdout();
+    let err = write_error("standard output");
+    writeln!(out, "{}: {} claims", sel.what, sel.claims.len()).map_err(&err)?;
+    let mut all_proved = true;
+    for claim in &sel.claims {
+        writeln!(out).map_err(&err)?;
+        if !provable(claim) {
+            writeln!(
+                out,
+                "claim {}\n  skipped: of kind {}, which is not proved symbolically",
                 claim.id,
                 claim.kind.name()
-            )));
+            )
+            .map_err(&err)?;
+            continue;
         }
-    };
+        let (lhs, rhs) = sides(claim)?;
+        let p = prove(Ctx { cat: &cat, claim }, &lhs, &rhs, false);
+        all_proved &= p.is_proved();
+        out.write_all(derivation(&claim.id, &claim.printed, &p).as_bytes())
+            .and_then(|()| out.flush())
+            .map_err(&err)?;
+    }
+    out.flush().map_err(&err)?;
+    Ok(i32::from(!all_proved))
+}
+
+/// The two sides whose difference the proof reduces to zero: an identity's, or
+/// `d(expr, wrt) = 0` for an independence claim.
+fn sides(claim: &Claim) -> Result<(PExpr, PExpr), CliError> {
+    match &claim.body {
+        Body::Identity { lhs, rhs } => Ok((lhs.clone(), rhs.clone())),
+        Body::Independence { expr, wrt, .. } => Ok(derivative_sides(expr, wrt)),
+        _ => Err(CliError(format!(
+            "claim '{}' is of kind {}, and only identities and independence claims are proved symbolically",
+            claim.id,
+            claim.kind.name()
+        ))),
+    }
+}
+
+/// Proves one claim, with the certificate if asked for.
+fn prove_one(args: &Args, cat: &Catalogue, claim: &Claim) -> Result<i32, CliError> {
+    let (lhs, rhs) = sides(claim)?;
     if let Some(path) = &args.certificate {
         check_certificate_path(path)?;
     }
-    let p = prove(
-        Ctx { cat: &cat, claim },
-        &lhs,
-        &rhs,
-        args.certificate.is_some(),
-    );
+    let p = prove(Ctx { cat, claim }, &lhs, &rhs, args.certificate.is_some());
     if let (Some(path), Some(cert)) = (&args.certificate, &p.certificate) {
         let source = RawCatalogue::read(&args.catalogue)?.source_lines(&claim.id)?;
         let cert = bind(cert, &source, &premise_lines(&p.hypotheses));

@@ -2,10 +2,12 @@
 //! (or JSON); exit 0 iff every verdict equals its `expect`.
 
 use super::CliError;
+use crate::claims::catalogue::lookup::{self, NotFound, Scope};
 use crate::claims::catalogue::{Catalogue, latex_labels, load_dir};
 use crate::claims::verdict::{ClaimResult, Options, Rung, Verdict, coverage_table, verify};
 use clap::Parser;
 use serde::Serialize;
+use std::collections::BTreeSet;
 use std::io::{IsTerminal, Write};
 use std::path::Path;
 
@@ -19,7 +21,8 @@ pub struct Args {
         allow_hyphen_values = true
     )]
     pub bits: String,
-    /// Only claims whose id contains this text (`*` matches any run of characters).
+    /// Only the claims of this environment ("Lemma 2"), of this paper label ("(J)"), or
+    /// whose id contains this text (`*` matches any run of characters).
     #[arg(long)]
     pub only: Option<String>,
     /// Output format: text or json.
@@ -47,6 +50,35 @@ pub struct Args {
 pub fn load(dir: &str) -> Result<Catalogue, CliError> {
     let reg = crate::bindings::euler_top::registry().map_err(CliError::new)?;
     load_dir(Path::new(dir), reg).map_err(|e| CliError(e.to_string()))
+}
+
+/// The ids of the claims `--only QUERY` selects: every claim of the environment QUERY
+/// names (ignoring case); else the claims carrying the label "(QUERY)"; else those whose
+/// id matches the pattern QUERY ([`matches_pattern`]); else those carrying the label
+/// QUERY.  Nothing matched is an error that names the closest ids, environments and
+/// labels.
+pub fn only(cat: &Catalogue, query: &str) -> Result<BTreeSet<String>, NotFound> {
+    let ids = |claims: Vec<&crate::claims::catalogue::Claim>| {
+        claims.into_iter().map(|c| c.id.clone()).collect()
+    };
+    if let Some(s) =
+        lookup::environment(cat, query, Scope::Whole).or_else(|| lookup::label(cat, query, true))
+    {
+        return Ok(ids(s.claims));
+    }
+    let by_id: BTreeSet<String> = cat
+        .claims
+        .iter()
+        .filter(|c| matches_pattern(&c.id, query))
+        .map(|c| c.id.clone())
+        .collect();
+    if !by_id.is_empty() {
+        return Ok(by_id);
+    }
+    match lookup::label(cat, query, false) {
+        Some(s) => Ok(ids(s.claims)),
+        None => Err(lookup::not_found(cat, query)),
+    }
 }
 
 /// Simple pattern match: substring, with `*` as a wildcard.
@@ -258,16 +290,16 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         bits: bits.clone(),
         exact: true,
     };
-    let only = args.only.clone();
+    let chosen = match &args.only {
+        None => None,
+        Some(q) => Some(only(&cat, q).map_err(CliError::new)?),
+    };
     let select = move |c: &crate::claims::catalogue::Claim| {
-        only.as_deref().is_none_or(|p| matches_pattern(&c.id, p))
+        chosen.as_ref().is_none_or(|ids| ids.contains(&c.id))
     };
     let total = cat.claims.iter().filter(|c| select(c)).count();
     if total == 0 {
-        return Err(CliError(format!(
-            "no claim matches '{}'",
-            args.only.unwrap_or_default()
-        )));
+        return Err(CliError("the catalogue has no claims".to_string()));
     }
     check_domains_reachable(&cat, &select)?;
     // the labels are read before the run, so a bad EULERTOP_PAPER costs nothing

@@ -249,3 +249,47 @@ fn eval_sees_catalogue_definitions() {
     let out = bin().args(["eval", "cube(3)"]).output().unwrap();
     assert_eq!(out.status.code(), Some(2), "unknown without the catalogue");
 }
+
+/// `verify --only` with an environment name runs that environment's claims and no other.
+#[test]
+fn verify_only_an_environment_runs_its_claims() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_eulertop"))
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args([
+            "verify", "--only", "Lemma 2", "--bits", "53", "--format", "json",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let claims = v["claims"].as_array().unwrap();
+    let got: Vec<&str> = claims.iter().map(|c| c["id"].as_str().unwrap()).collect();
+    let mut files: Vec<PathBuf> =
+        std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/identities"))
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+            .collect();
+    files.sort();
+    let mut expected = Vec::new();
+    for f in files {
+        let t: toml::Value = toml::from_str(&std::fs::read_to_string(f).unwrap()).unwrap();
+        for c in t
+            .get("claim")
+            .and_then(|c| c.as_array())
+            .into_iter()
+            .flatten()
+        {
+            if c.get("environment").and_then(|e| e.as_str()) == Some("Lemma 2") {
+                expected.push(c["id"].as_str().unwrap().to_string());
+            }
+        }
+    }
+    assert!(expected.len() > 1);
+    assert_eq!(got, expected);
+}

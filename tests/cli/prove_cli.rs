@@ -65,7 +65,7 @@ fn bad_ids_and_kinds_are_one_line_errors_with_status_2() {
     for (args, expected) in [
         (
             vec!["prove", "no.such.claim"],
-            "no claim with id 'no.such.claim'",
+            "no claim id, environment or label 'no.such.claim'",
         ),
         (
             vec!["prove", "sec7.delta12-asym.g1.up"],
@@ -164,4 +164,61 @@ fn a_certificate_states_its_claim_as_the_catalogue_writes_it() {
             .any(|l| l.starts_with("assume branch delta1 \""))
     );
     assert!(!cert.contains("# assumption"), "{cert}");
+}
+
+#[test]
+fn an_environment_name_proves_its_statement_claims_in_order() {
+    let (code, out, err) = run(&["prove", "Theorem 2"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with("Theorem 2 (statement): 1 claim"), "{out}");
+    assert!(out.contains("claim sec8.thm2.gammaMV\n"), "{out}");
+    assert!(!out.contains("claim sec8.thm2.gammaMV.model"), "{out}");
+    assert!(
+        out.trim_end()
+            .ends_with("normal form of lhs - rhs: 0: proved"),
+        "{out}"
+    );
+}
+
+#[test]
+fn a_paper_label_proves_the_claims_carrying_it() {
+    for label in ["(gammaMV)", "gammaMV"] {
+        let (code, out, err) = run(&["prove", label]);
+        assert_eq!(code, 0, "{label}: {err}");
+        assert!(out.starts_with("label (gammaMV): "), "{out}");
+        let ids: Vec<&str> = out
+            .lines()
+            .filter_map(|l| l.strip_prefix("claim "))
+            .collect();
+        // catalogue order; the definition among them is named, not proved
+        let thm = ids.iter().position(|i| *i == "sec8.thm2.gammaMV");
+        let model = ids.iter().position(|i| *i == "sec8.thm2.gammaMV.model");
+        assert!(thm.is_some() && thm < model, "{ids:?}");
+        assert!(out.contains("skipped: of kind definition"), "{out}");
+    }
+}
+
+#[test]
+fn a_misspelled_id_or_name_gets_one_did_you_mean_line() {
+    for (args, closest) in [
+        (vec!["prove", "sec8.thm2.gammaMW"], "sec8.thm2.gammaMV"),
+        (vec!["prove", "Theorm 2"], "Theorem 2"),
+        (vec!["audit", "(gammaMW)"], "(gammaMV)"),
+        (vec!["verify", "--only", "Lema 2"], "Lemma 2"),
+    ] {
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(out.is_empty(), "{out}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(err.contains("did you mean"), "{err}");
+        assert!(err.contains(closest), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn a_certificate_needs_a_single_claim() {
+    let (code, out, err) = run(&["prove", "gammaMV", "--certificate", "x.cert"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty(), "{out}");
+    assert!(err.contains("--certificate needs one claim"), "{err}");
 }

@@ -12,6 +12,7 @@ pub mod check;
 pub mod claim;
 pub mod defaults;
 mod fields;
+pub mod lookup;
 mod raw;
 pub mod source;
 pub mod structure;
