@@ -32,11 +32,9 @@ pub struct Args {
     #[arg(long)]
     pub jobs: Option<usize>,
     /// A README whose verdict-count block (between `<!-- verdicts -->` and
-    /// `<!-- /verdicts -->`) is rewritten; empty to skip.  Without it, `README.md` is
-    /// rewritten only when the pages go to the default `reports`: a report written
-    /// elsewhere touches nothing outside its directory.
-    #[arg(long)]
-    pub readme: Option<String>,
+    /// `<!-- /verdicts -->`) is rewritten; empty to skip.
+    #[arg(long, default_value = "README.md")]
+    pub readme: String,
     /// The budget of every proof attempt.
     #[command(flatten)]
     pub budget: super::ProofBudgetArgs,
@@ -194,10 +192,9 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     args.budget.apply()?;
     let bits = parse_bits(&args.bits)?;
     super::check_jobs(args.jobs)?;
-    let readme = match (args.readme.as_deref(), args.out == "reports") {
-        (Some(""), _) | (None, false) => None,
-        (Some(r), _) => Some(read_readme(Path::new(r))?),
-        (None, true) => Some(read_readme(Path::new("README.md"))?),
+    let readme = match args.readme.as_str() {
+        "" => None,
+        r => Some(read_readme(Path::new(r))?),
     };
     let out = Path::new(&args.out);
     check_out(out, readme.as_ref())?;
