@@ -425,6 +425,11 @@ fn print_text(
             )?;
         }
     }
+    print_counts(w, results, sum)
+}
+
+/// The count line and the line of certified verdicts that end the text output.
+fn print_counts(w: &mut impl Write, results: &[ClaimResult], sum: &Summary) -> std::io::Result<()> {
     writeln!(
         w,
         "\n{} claims: {} holds, {} proved, {} by construction, {} refuted, {} inconclusive, {} definitions; {} not as expected{}",

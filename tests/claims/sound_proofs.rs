@@ -170,39 +170,40 @@ fn a_stated_hypothesis_decides_a_branch_and_is_checked_at_the_samples() {
     assert!(r.reason.contains("fails at"), "{}", r.reason);
 }
 
-#[test]
-fn a_positive_multiple_of_a_principal_root_is_the_principal_root_of_its_square() {
-    use eulertop::claims::verdict::{Options, Verdict, run_claim};
-    // √(q (1 + x²)²) = (1 + x²) √q: the root √q is principal by definition and
-    // 1 + x² > 0 is proved; the radicand's sign rests on the hypothesis q > 0
+/// The verdict of `lhs = rhs` on `x ∈ (0, 1)` under the stated hypothesis
+/// `q = x² − x + 0.2501 > 0`.
+fn verdict_under_q_positive(lhs: &str, rhs: &str) -> eulertop::claims::verdict::ClaimResult {
+    use eulertop::claims::verdict::{Options, run_claim};
     let claim = identity_claim_with(
         "h.multiple",
         "control",
         r#"vars = [["x", "uniform(0, 1)"]]
 hypotheses = ["q-positive"]"#,
+        lhs,
+        rhs,
+    );
+    let text = format!(
+        "[hypothesis.q-positive]\nwhen = \"x^2 - x + 0.2501 > 0\"\nstatement = \"q > 0\"\npaper = \"a control\"\n{claim}"
+    );
+    let cat = controls_only(text);
+    run_claim(&cat, &cat.claims[0], &Options::default())
+}
+
+#[test]
+fn a_positive_multiple_of_a_principal_root_is_the_principal_root_of_its_square() {
+    use eulertop::claims::verdict::Verdict;
+    // √(q (1 + x²)²) = (1 + x²) √q: the root √q is principal by definition and
+    // 1 + x² > 0 is proved; the radicand's sign rests on the hypothesis q > 0
+    let r = verdict_under_q_positive(
         "sqrt((x^2 - x + 0.2501) * (1 + x^2)^2)",
         "(1 + x^2) * sqrt(x^2 - x + 0.2501)",
     );
-    let text = format!(
-        "[hypothesis.q-positive]\nwhen = \"x^2 - x + 0.2501 > 0\"\nstatement = \"q > 0\"\npaper = \"a control\"\n{claim}"
-    );
-    let cat = controls_only(text);
-    let r = run_claim(&cat, &cat.claims[0], &Options::default());
     assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
     // the same with the factor's sign unknown (x − 0.5 changes sign): not proved
-    let claim = identity_claim_with(
-        "h.multiple",
-        "control",
-        r#"vars = [["x", "uniform(0, 1)"]]
-hypotheses = ["q-positive"]"#,
+    let r = verdict_under_q_positive(
         "sqrt((x^2 - x + 0.2501) * (x - 0.5)^2)",
         "(x - 0.5) * sqrt(x^2 - x + 0.2501)",
     );
-    let text = format!(
-        "[hypothesis.q-positive]\nwhen = \"x^2 - x + 0.2501 > 0\"\nstatement = \"q > 0\"\npaper = \"a control\"\n{claim}"
-    );
-    let cat = controls_only(text);
-    let r = run_claim(&cat, &cat.claims[0], &Options::default());
     assert_ne!(r.verdict, Verdict::Proved, "{}", r.reason);
 }
 
