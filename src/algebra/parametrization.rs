@@ -31,8 +31,8 @@
 
 use super::flint::{Ctx, Poly};
 use rug::Rational;
-use std::collections::BTreeMap;
-use std::sync::Arc;
+use std::collections::{BTreeMap, HashMap};
+use std::sync::{Arc, Mutex};
 
 /// The most parameters of a parametrization.
 pub const MAX_PARAMS: usize = 24;
@@ -48,6 +48,8 @@ const MAX_OUTPUT_TERMS: usize = 40_000;
 /// The largest numerator, in terms, tested with `sn²` as a parameter or with the
 /// alternative parametrization (their substitutions grow fast).
 pub(crate) const MAX_WIDENED_TERMS: usize = 64;
+/// The most substitutions a parametrization remembers (see [`SubstMemo`]).
+const MAX_MEMO: usize = 4096;
 /// The largest exponent of the Pólya multiplier (see [`Parametrization::poly_sign_polya`]).
 const MAX_POLYA: u32 = 8;
 /// The most terms a polynomial may have for a Pólya multiplication to be tried (the
@@ -150,7 +152,29 @@ pub struct Parametrization {
     descriptions: Vec<String>,
     /// See [`Parametrization::set_alternative`].
     alternative: Option<Box<Parametrization>>,
+    /// Substitutions already made (a claim's cases and decisions ask for the sign of
+    /// the same polynomial many times).
+    memo: SubstMemo,
 }
+
+/// What a variable stands for in a substitution, as a memo key.
+#[derive(Clone, PartialEq, Eq, Hash)]
+enum ImageKey {
+    Var(Poly, Poly),
+    Root(usize),
+    Square(usize),
+}
+
+/// The memo of [`Parametrization::substituted`]: the polynomial and the images of the
+/// variables it uses determine the result.  At most [`MAX_MEMO`] entries.  A key
+/// starts with the address of the polynomial's context, so that polynomials of
+/// different contexts are never compared (the key's polynomial keeps its context
+/// alive, so the address is not reused while the entry exists).
+#[derive(Default)]
+struct SubstMemo(Mutex<HashMap<SubstKey, Option<(Poly, i32)>>>);
+
+/// See [`SubstMemo`].
+type SubstKey = (usize, Poly, Vec<(usize, ImageKey)>);
 
 impl std::fmt::Debug for Parametrization {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -173,6 +197,7 @@ impl Parametrization {
             images: BTreeMap::new(),
             descriptions: Vec::new(),
             alternative: None,
+            memo: SubstMemo::default(),
         }
     }
 
@@ -351,11 +376,37 @@ impl Parametrization {
     }
 
     /// `p` with the images substituted and the denominators cleared (a polynomial in
-    /// the parameters), and the sign of the cleared denominators.
+    /// the parameters), and the sign of the cleared denominators; remembered.
     fn substituted(&self, p: &Poly, images: &[Image<'_>]) -> Option<(Poly, i32)> {
         if p.is_zero() || p.len() > MAX_INPUT_TERMS {
             return None;
         }
+        let mut key_images = Vec::new();
+        for i in p.used_vars() {
+            key_images.push((
+                i,
+                match images.get(i)? {
+                    Image::Var(r) => ImageKey::Var(r.num.clone(), r.den.clone()),
+                    Image::Root(slot) => ImageKey::Root(*slot),
+                    Image::Square(slot) => ImageKey::Square(*slot),
+                    Image::None => return None,
+                },
+            ));
+        }
+        let key = (Arc::as_ptr(p.ctx()) as usize, p.clone(), key_images);
+        if let Some(known) = self.memo.0.lock().ok()?.get(&key) {
+            return known.clone();
+        }
+        let out = self.substitute(p, images);
+        let mut memo = self.memo.0.lock().ok()?;
+        if memo.len() < MAX_MEMO {
+            memo.insert(key, out.clone());
+        }
+        out
+    }
+
+    /// [`Parametrization::substituted`] computed.
+    fn substitute(&self, p: &Poly, images: &[Image<'_>]) -> Option<(Poly, i32)> {
         let degs = p.degrees();
         let used = p.used_vars();
         let mut factor = 1;
