@@ -45,7 +45,6 @@ fn solve_phase<R: Real, F>(
 where
     F: Fn(&Dual<R>, &Dual<R>, &Dual<R>) -> Dual<R>,
 {
-    let pd = p.map(|x| Dual::constant(x.clone()));
     if h.is_zero() {
         return Ok(h.zero());
     }
@@ -54,7 +53,7 @@ where
     let eps = h.epsilon();
     let mut prev: Option<R> = None;
     for it in 0..200 {
-        let (sn, cn, dn) = sncndn_params(&Dual::var(x.clone()), &pd)?;
+        let (sn, cn, dn) = sncndn_var(&x, p)?;
         let v = f(&sn, &cn, &dn);
         if v.d.is_zero() || !v.d.is_finite() {
             break;
@@ -86,6 +85,25 @@ where
         iterations: 200,
         residual: f64::NAN,
     })
+}
+
+/// `(sn, cn, dn)` at the phase `x` as [`Dual`] numbers with derivative along `x`
+/// (DLMF 22.13.1–3: `sn' = cn dn`, `cn' = −sn dn`, `dn' = −k² sn cn`; on the separatrix
+/// `k = 1` and these are the derivatives of tanh and sech): the functions are
+/// evaluated once, at the value, rather than through the dual numbers.
+fn sncndn_var<R: Real>(
+    x: &R,
+    p: &EllipticParams<R>,
+) -> Result<(Dual<R>, Dual<R>, Dual<R>), ModelError> {
+    let (sn, cn, dn) = sncndn_params(x, p)?;
+    let k2 = match p.regime {
+        super::Regime::Separatrix => x.one(),
+        _ => p.k2.clone(),
+    };
+    let d_sn = cn.clone() * dn.clone();
+    let d_cn = -(sn.clone() * dn.clone());
+    let d_dn = -(k2 * sn.clone() * cn.clone());
+    Ok((Dual::new(sn, d_sn), Dual::new(cn, d_cn), Dual::new(dn, d_dn)))
 }
 
 /// `δ` solving (master12) `sn/(cn dn) = (hν/2)/(1 − α sn²)` for a given `α`

@@ -100,6 +100,56 @@ pub fn omega_residual<S: Scalar>(v: &Vec3<S>, j: &Mat3<S>, hm: &Mat3<S>) -> Vec3
     vee(&(w.clone() * j.clone() - j.clone() * w.transpose() - hm.clone()))
 }
 
+/// [`omega_residual`] for a diagonal `J`, given by its diagonal `j`: the three entries
+/// `(ωJ − Jωᵀ − hM̌)ᵢₖ = ωᵢₖJₖ − Jᵢωₖᵢ − hM̌ᵢₖ` that [`vee`] reads, from the six
+/// off-diagonal entries `ωᵢₖ = c(Vᵢₖ + vᵢvₖ)`, `c = 2/(1 + |v|²)`, of `ω = cayley(v)`.
+///
+/// ```
+/// use eulertop::linalg::{Mat3, Vec3};
+/// use eulertop::model::veselov_moser::{hat, omega_residual, omega_residual_diag};
+/// let (v, j) = (Vec3::new(0.1, -0.2, 0.3), Vec3::new(0.5, 1.5, 2.5));
+/// let hm = hat(&Vec3::new(0.7, 0.1, -0.4));
+/// let full = omega_residual(&v, &Mat3::diag(&j), &hm);
+/// let diag = omega_residual_diag(&v, &j, &hm);
+/// assert!((full - diag).max_magnitude() < 1e-15);
+/// ```
+pub fn omega_residual_diag<S: Scalar>(v: &Vec3<S>, j: &Vec3<S>, hm: &Mat3<S>) -> Vec3<S> {
+    let [v1, v2, v3] = &v.0;
+    let one = v1.one();
+    let n2 = v1.clone() * v1.clone() + v2.clone() * v2.clone() + v3.clone() * v3.clone();
+    let c = (one.clone() + one.clone()) / (one + n2);
+    let vm = hat(v);
+    let w = |i: usize, k: usize| c.clone() * (vm.0[i][k].clone() + v.0[i].clone() * v.0[k].clone());
+    let x = |i: usize, k: usize| {
+        w(i, k) * j.0[k].clone() - j.0[i].clone() * w(k, i) - hm.0[i][k].clone()
+    };
+    Vec3::new(x(1, 2), x(2, 0), x(0, 1))
+}
+
+/// The residual of (M thru omega) at `v` and its Jacobian in `v`, by [`Dual`] numbers
+/// (one pass per column), for a diagonal `J` (see [`omega_residual_diag`]).
+fn residual_and_jacobian<R: Real>(
+    v: &Vec3<R>,
+    jd: &Vec3<Dual<R>>,
+    hmd: &Mat3<Dual<R>>,
+) -> (Vec3<R>, Mat3<R>) {
+    let mut jac = Mat3::zeros(&v.0[0]);
+    let mut res = Vec3::zeros(&v.0[0]);
+    for col in 0..3 {
+        let vd = Vec3(std::array::from_fn(|k| {
+            let x = v.0[k].clone();
+            let d = if k == col { x.one() } else { x.zero() };
+            Dual::new(x, d)
+        }));
+        let r = omega_residual_diag(&vd, jd, hmd);
+        for row in 0..3 {
+            jac.0[row][col] = r.0[row].d.clone();
+        }
+        res = Vec3(r.0.map(|x| x.v));
+    }
+    (res, jac)
+}
+
 /// One Veselov–Moser step with its by-products.
 #[derive(Clone, Debug, PartialEq)]
 pub struct VmStep<R> {
@@ -127,7 +177,7 @@ pub fn vm_step<R: Real>(inertia: &Inertia<R>, m: &Vec3<R>, h: &R) -> Result<VmSt
         vm_step(&inertia.at_prec(q), &m.at_prec(q), &h.at_prec(q)).map(|s| s.v)
     })
     .unwrap_or_else(|| inertia.omega(m).scale(&(h.clone() * half)));
-    let jd = Mat3::diag(&Vec3(jv.0.clone().map(Dual::constant)));
+    let jd = Vec3(jv.0.clone().map(Dual::constant));
     let hmd = Mat3::from_fn(|i, k| Dual::constant(hm.0[i][k].clone()));
     let eps = h.epsilon();
     let scale = inf_norm(&jv).max_of(&(h.abs() * inf_norm(m)));
@@ -143,20 +193,7 @@ pub fn vm_step<R: Real>(inertia: &Inertia<R>, m: &Vec3<R>, h: &R) -> Result<VmSt
         if it >= max_iter {
             return Err(fail(it, f64::NAN));
         }
-        let mut jac = Mat3::zeros(h);
-        let mut res = Vec3::zeros(h);
-        for col in 0..3 {
-            let vd = Vec3(std::array::from_fn(|k| {
-                let x = v.0[k].clone();
-                let d = if k == col { x.one() } else { x.zero() };
-                Dual::new(x, d)
-            }));
-            let r = omega_residual(&vd, &jd, &hmd);
-            for row in 0..3 {
-                jac.0[row][col] = r.0[row].d.clone();
-            }
-            res = Vec3(r.0.map(|x| x.v));
-        }
+        let (res, jac) = residual_and_jacobian(&v, &jd, &hmd);
         let inv = jac.inverse().ok_or_else(|| fail(it, f64::NAN))?;
         let dv = inv.mul_vec(&res);
         v = v - dv.clone();
