@@ -20,8 +20,8 @@
 use crate::algebra::positivity::{ParamRat, Parametrization};
 use crate::claims::ast::{BinOp, Expr, ExprKind, UnOp};
 use crate::claims::catalogue::PExpr;
-use std::collections::BTreeMap;
-use std::sync::Arc;
+use std::collections::{BTreeMap, HashMap};
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// A parametrized value: a scalar or the components of a vector.
 #[derive(Clone)]
@@ -30,9 +30,35 @@ enum PVal {
     Vector(Vec<ParamRat>),
 }
 
+/// The parametrizations made so far, by the definitions of the sampled variables
+/// (claims on one domain share theirs, with what its sign tests remember).  At most
+/// [`MAX_CACHED`] entries.
+type Cache = Mutex<HashMap<String, Option<Arc<Parametrization>>>>;
+
+/// The most parametrizations [`parametrization`] keeps.
+const MAX_CACHED: usize = 256;
+
 /// The parametrization of the claim's sampled variables, or `None` when none of them
-/// can be parametrized.
+/// can be parametrized; made once per list of definitions.
 pub(super) fn parametrization(vars: &[(String, &PExpr)]) -> Option<Arc<Parametrization>> {
+    static CACHE: OnceLock<Cache> = OnceLock::new();
+    let key: String = (vars.iter())
+        .map(|(n, d)| format!("{n} = {}\n", d.text))
+        .collect();
+    let cache = CACHE.get_or_init(Cache::default);
+    if let Some(known) = cache.lock().ok()?.get(&key) {
+        return known.clone();
+    }
+    let par = made(vars);
+    let mut cache = cache.lock().ok()?;
+    if cache.len() < MAX_CACHED {
+        cache.insert(key, par.clone());
+    }
+    par
+}
+
+/// [`parametrization`] made.
+fn made(vars: &[(String, &PExpr)]) -> Option<Arc<Parametrization>> {
     let mut par = parametrized(vars, false)?;
     if let Some(exact) = parametrized(vars, true) {
         par.set_alternative(exact);
