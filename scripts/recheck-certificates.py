@@ -282,6 +282,8 @@ class Cert:
         self.pring = None
         self.images = {}  # indeterminate -> (num, den) in the parameters
         self.posroots = {}  # root name -> None (declared), True/False (radicand checked)
+        self.real_declared = set()  # opaque symbols declared real (`field x param real`)
+        self.realmemo = {}  # symbol -> None (being checked), True/False
         self.checked = 0
         self.points = []
         self.sqrts = []  # (node id, radicand, stated value) of every square root
@@ -559,6 +561,8 @@ class Cert:
         parts = rest.split()
         self.index(parts[0])
         self.kinds[parts[0]] = parts[1] if len(parts) > 1 else "indeterminate"
+        if "real" in parts[2:]:
+            self.real_declared.add(parts[0])
 
     def root(self, rest):
         name, rad = rest.split("=", 1)
@@ -574,6 +578,7 @@ class Cert:
         import sympy
         if self.pring is None:
             names = [n for n, _ in self.params] + ["root__" + r for r, _, _ in self.roots]
+            names += ["sq__" + n for n, k in self.kinds.items() if k == "sn"]
             self.pring, *_ = ring(",".join(names) or "_unused", ZZ)
             self.pnames = {str(g): g for g in self.pring.gens}
         parts = split_top(text.strip().replace(")/(", "),("))
@@ -614,25 +619,82 @@ class Cert:
             if deg <= 0:
                 continue
             name = str(self.ring.symbols[i])
+            half = 1
             if name in self.images:
                 n, d = self.images[name]
             elif self.kinds.get(name) == "root" and self.root_positive(name):
                 n, d = self.pnames["root__" + name], self.pring.one
+            elif self.sn_square(name) and all(m[i] % 2 == 0 for m in p.itermonoms()):
+                # sn of a real argument at a real modulus 0 < k² < 1 enters through its
+                # square: sn² = u/(1 + u), u > 0 (DLMF 22.2.4, 22.4.1: sn is real and
+                # |sn| <= 1; the strict signs hold where 0 < sn² < 1)
+                n = self.pnames["sq__" + name]
+                d, half, deg = self.pring.one + n, 2, deg // 2
             else:
                 return None
             sd = self.definite(d)
             if sd is None:
                 return None
             factor *= sd ** (deg % 2)
-            rows.append((i, [n**k for k in range(deg + 1)], [d**k for k in range(deg + 1)], deg))
+            rows.append((i, [n**k for k in range(deg + 1)], [d**k for k in range(deg + 1)], deg, half))
         acc = self.pring.zero
         for monom, c in p.terms():
             t = self.pring(c)
-            for i, npw, dpw, deg in rows:
-                t = t * npw[monom[i]] * dpw[deg - monom[i]]
+            for i, npw, dpw, deg, half in rows:
+                e = monom[i] // half
+                t = t * npw[e] * dpw[deg - e]
             acc += t
         s = self.definite(acc)
         return None if s is None else s * factor
+
+    # ---- real values: sn² of a real argument as a parameter in (0, 1) -----------------
+    def frac_sign(self, f):
+        a, b = self.tower_sign(f.num), self.tower_sign(f.den)
+        return None if a is None or b is None else a * b
+
+    def frac_real(self, f):
+        gens = [i for i, (a, b) in enumerate(zip(f.num.degrees(), f.den.degrees())) if a > 0 or b > 0]
+        return all(self.sym_real(str(self.ring.symbols[i])) for i in gens)
+
+    def sym_real(self, name):
+        """Is the symbol real by construction: an indeterminate, an opaque symbol declared
+        real, a named value whose definition is real, sn of a real base argument at a
+        real modulus with 0 < k² < 1, or a square root of a real radicand proved
+        positive?  Cycles count as not real."""
+        if name in self.realmemo:
+            return bool(self.realmemo[name])
+        self.realmemo[name] = None
+        kind = self.kinds.get(name)
+        if kind == "indeterminate" or name in self.real_declared:
+            ok = True
+        elif name in self.named:
+            ok = self.frac_real(self.named[name])
+        elif kind == "sn":
+            ok = self.sn_square(name)
+        elif kind == "root":
+            rad = next(a for r, _, a in self.roots if r == name)
+            ok = self.frac_real(Frac(rad, self.ring.one)) and self.tower_sign(rad) == 1
+        else:
+            ok = False
+        self.realmemo[name] = ok
+        return ok
+
+    def sn_square(self, name):
+        """Is `name` the sn of a base whose argument is real and whose modulus is real
+        with 0 < k² < 1 (so that sn² lies in [0, 1])?"""
+        if self.kinds.get(name) != "sn":
+            return False
+        key = ("sn", name)
+        if key in self.realmemo:
+            return bool(self.realmemo[key])
+        self.realmemo[key] = None
+        b = next((b for b in self.bases.values() if b["s_name"] == name), None)
+        ok = False
+        if b is not None and b["z"] is None and self.frac_real(b["arg"]) and self.frac_real(b["k"]):
+            k2 = self.mul(b["k"], b["k"])
+            ok = self.frac_sign(k2) == 1 and self.frac_sign(self.add(self.one, k2, -1)) == 1
+        self.realmemo[key] = ok
+        return ok
 
     def tower_sign(self, p, depth=0):
         """poly_sign, and where it fails and p = a + b*r in its last declared positive root

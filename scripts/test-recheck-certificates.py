@@ -133,6 +133,13 @@ class Cases:
         self.expect("the wrong square-root branch of the issue is rejected",
                     recheck([os.path.join(DATA, "wrong-branch.cert")], "--unbound"), False,
                     "square-root branch has no evidence")
+        self.expect("sn² of a real argument at 0 < k² < 1 is a parameter in (0, 1): 1 - sn² > 0",
+                    recheck([os.path.join(DATA, "sn-square.cert")], "--unbound"), True, "1 of 1")
+        for name, why in (("modulus-2", "at k = 2"), ("odd-power", "for sn itself (an odd power)"),
+                          ("opaque-argument", "for an argument not known to be real")):
+            self.expect(f"sn² as a parameter is refused {why}",
+                        recheck([os.path.join(DATA, f"sn-square-{name}.cert")], "--unbound"), False,
+                        "is not proved by the parametrization")
         self.expect("a chart parameter with a false derivative is rejected",
                     recheck([os.path.join(DATA, "param-derivative.cert")], "--unbound"), False,
                     "chart parameter y")

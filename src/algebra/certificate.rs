@@ -6,6 +6,7 @@
 //!
 //! ```text
 //! field A indeterminate            # a field variable and its kind (sn, zeta, K, Kp, named, …)
+//! field delta param real           # an opaque symbol declared real (a real chart parameter)
 //! root r_1 = A - C                 # a root symbol: r_1**2 = A - C
 //! named k = (expression)           # a named quantity's definition (for derivatives)
 //! base b_1 k=(…) s=sn_1 c=(…) d=(…) arg=(…)   # an elliptic base argument
@@ -319,7 +320,13 @@ impl Ring {
                 VarKind::Opaque { constant: false } if params[j] => "param",
                 _ => kind_tag(&v.kind),
             };
-            let _ = writeln!(out, "field {} {tag}  # {what}", v.name);
+            // an opaque symbol declared real (a real chart parameter) says so
+            let real = if st.signs.real_opaque.contains(&j) {
+                " real"
+            } else {
+                ""
+            };
+            let _ = writeln!(out, "field {} {tag}{real}  # {what}", v.name);
             if let VarKind::Named(def) = &v.kind {
                 let _ = writeln!(
                     out,

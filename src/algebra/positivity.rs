@@ -217,15 +217,9 @@ impl Ring {
                 *slot = Image::Var(img);
             }
         }
-        let used = num.used_vars();
         for (j, real) in squares.iter().enumerate() {
             if *real && let Some(slot) = images.get_mut(max_roots + j) {
                 *slot = Image::Square(j);
-                if used.contains(&(max_roots + j)) {
-                    self.mark_uncertified(
-                        "a sign proved with sn² ∈ [0, 1] for a real argument, which the certificate format does not record",
-                    );
-                }
             }
         }
         for (i, radicand, positive) in roots {

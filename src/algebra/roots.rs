@@ -15,6 +15,7 @@
 //! tested for being a square in the tower by denesting `(a + b r)² = P + Q r`
 //! (`a² = (P ± √(P² − a_r Q²))/2`); otherwise it gets a root of its own.
 
+use super::decide::Decision;
 use super::den_factors::Factors;
 use super::error::{AlgResult, AlgebraError};
 use super::flint::{Poly, factor_integer};
@@ -516,10 +517,19 @@ impl Sym {
     /// proved negative.  Otherwise the branch is undecided (an error; the ring
     /// remembers the value, so that the domain may be split by its sign).
     fn principal_branch_proved(&self, radicand: &Sym, what: &str) -> AlgResult<()> {
-        if self.decided_sign() == Some(1) {
-            return Ok(());
-        }
         let ring = &self.ring;
+        match self.decision() {
+            Decision::Proved(1) | Decision::Definition(1) => return Ok(()),
+            Decision::Hypothesis(1, _) => {
+                if ring.certifying() {
+                    ring.mark_uncertified(
+                        "a square-root branch decided by a stated hypothesis, which a certificate records only as a premise",
+                    );
+                }
+                return Ok(());
+            }
+            _ => {}
+        }
         if self.is_positive_multiple_of_principal_root() {
             // √(c²a) = c·√a for c > 0, whatever the sign of a
             if ring.certifying() {
