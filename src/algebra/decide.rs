@@ -320,3 +320,36 @@ impl Ring {
         st.signs.stated.push((val, sign, label));
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::RingOptions;
+
+    /// Constants in a tower of square roots have their signs decided exactly (rule 2
+    /// recurses to rational numbers), with no parametrization and at no point.
+    #[test]
+    fn signs_of_constant_algebraic_numbers_are_exact() {
+        let ring = Ring::new(RingOptions {
+            points: 1,
+            ..Default::default()
+        });
+        let root = |n: i64| ring.integer(n).sqrt().unwrap();
+        // √2 + √3 − √10 ≈ −0.0161
+        let x = root(2) + root(3) - root(10);
+        assert_eq!(x.decision(), Decision::Proved(-1));
+        // √11 − √(10 + √(2/5)) ≈ 0.0559, and its negative
+        let y = root(11)
+            - (ring.integer(10) + (ring.integer(2) / ring.integer(5)).sqrt().unwrap())
+                .sqrt()
+                .unwrap();
+        assert_eq!(y.decision(), Decision::Proved(1));
+        assert_eq!(y.negate().decision(), Decision::Proved(-1));
+        // √2 + √3 − √(5 + 2√6) is exactly 0
+        let z = root(2) + root(3)
+            - (ring.integer(5) + ring.integer(2) * root(6))
+                .sqrt()
+                .unwrap();
+        assert_eq!(z.decision(), Decision::Proved(0));
+    }
+}

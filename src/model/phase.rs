@@ -103,7 +103,11 @@ fn sncndn_var<R: Real>(
     let d_sn = cn.clone() * dn.clone();
     let d_cn = -(sn.clone() * dn.clone());
     let d_dn = -(k2 * sn.clone() * cn.clone());
-    Ok((Dual::new(sn, d_sn), Dual::new(cn, d_cn), Dual::new(dn, d_dn)))
+    Ok((
+        Dual::new(sn, d_sn),
+        Dual::new(cn, d_cn),
+        Dual::new(dn, d_dn),
+    ))
 }
 
 /// `δ` solving (master12) `sn/(cn dn) = (hν/2)/(1 − α sn²)` for a given `α`
