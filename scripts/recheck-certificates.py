@@ -283,6 +283,9 @@ class Cert:
         self.images = {}  # indeterminate -> (num, den) in the parameters
         self.posroots = {}  # root name -> None (declared), True/False (radicand checked)
         self.real_declared = set()  # opaque symbols declared real (`field x param real`)
+        self.alt_lines = []  # the `alt param` / `alt image` lines: a second parametrization
+        self.alt = None  # its state once built (see `swap_parametrization`)
+        self.pnames = None
         self.realmemo = {}  # symbol -> None (being checked), True/False
         self.checked = 0
         self.points = []
@@ -646,6 +649,34 @@ class Cert:
             acc += t
         s = self.definite(acc)
         return None if s is None else s * factor
+
+    # ---- the second parametrization (`alt` lines) --------------------------------------
+    PARAM_STATE = ("params", "pring", "pnames", "images", "posroots", "realmemo")
+
+    def swap_parametrization(self):
+        """Exchanges the parametrization in use (with what its sign tests remember) and
+        the second one, which is built from the `alt` lines on first use: both contain
+        the domain, so a sign either proves holds on it."""
+        if self.alt is None:
+            first = {k: getattr(self, k) for k in self.PARAM_STATE}
+            self.params, self.pring, self.pnames, self.images = [], None, None, {}
+            self.posroots = {r: None for r in first["posroots"]}
+            self.realmemo = {}
+            for sub, more in self.alt_lines:
+                self.statement(sub, more)
+            self.alt = first
+            return
+        mine = {k: getattr(self, k) for k in self.PARAM_STATE}
+        for k, v in self.alt.items():
+            setattr(self, k, v)
+        self.alt = mine
+
+    def alt_sign(self, f):
+        self.swap_parametrization()
+        try:
+            return self.frac_sign(f)
+        finally:
+            self.swap_parametrization()
 
     # ---- real values: sn² of a real argument as a parameter in (0, 1) -----------------
     def frac_sign(self, f):
@@ -1090,6 +1121,10 @@ class Cert:
         elif word == "image":
             name, val = rest.split("=", 1)
             self.images[name.strip()] = self.param_frac(val)
+        elif word == "alt":
+            sub, _, more = rest.partition(" ")
+            self.need(sub in ("param", "image"), f"bad alt line {rest[:40]}")
+            self.alt_lines.append((sub, more))
         elif word == "posroot":
             self.need(self.kinds.get(rest.strip()) == "root", f"posroot of a non-root {rest[:40]}")
             self.posroots[rest.strip()] = None
@@ -1097,9 +1132,9 @@ class Cert:
             t, rel, zero = rest.split()
             self.need(rel in "<>" and zero == "0", f"bad sign line {rest[:40]}")
             f = self.vals[t]
-            a, b = self.tower_sign(f.num), self.tower_sign(f.den)
-            self.need(a is not None and b is not None and a * b == (1 if rel == ">" else -1),
-                      f"sign {t} {rel} 0 is not proved by the parametrization")
+            want = 1 if rel == ">" else -1
+            ok = self.frac_sign(f) == want or (self.alt_lines and self.alt_sign(f) == want)
+            self.need(ok, f"sign {t} {rel} 0 is not proved by the parametrization")
             self.checked += 1
             self.proved_signs.append((f, 1 if rel == ">" else -1))
             if rel == ">":
@@ -1176,8 +1211,7 @@ class Cert:
                 self.need(r >= 0, f"{tid}: the square root is stated as {r} < 0")
                 continue
             if self.pring is not None:
-                a, b = self.tower_sign(val.num), self.tower_sign(val.den)
-                if a is not None and b is not None and a * b == 1:
+                if self.frac_sign(val) == 1 or (self.alt_lines and self.alt_sign(val) == 1):
                     continue
             one = self.single_root(val)
             self.need(one is not None, f"{tid}: the square-root branch has no evidence: its stated value "

@@ -140,6 +140,11 @@ class Cases:
             self.expect(f"sn² as a parameter is refused {why}",
                         recheck([os.path.join(DATA, f"sn-square-{name}.cert")], "--unbound"), False,
                         "is not proved by the parametrization")
+        self.expect("a sign proved with the second parametrization (the box x in (1/5, 1/2)): 1 - x² > 0",
+                    recheck([os.path.join(DATA, "alt-box.cert")], "--unbound"), True, "1 of 1")
+        self.expect("a second parametrization that does not prove the sign (x in (1/2, 2)) is refused",
+                    recheck([os.path.join(DATA, "alt-box-wide.cert")], "--unbound"), False,
+                    "is not proved by the parametrization")
         self.expect("a chart parameter with a false derivative is rejected",
                     recheck([os.path.join(DATA, "param-derivative.cert")], "--unbound"), False,
                     "chart parameter y")

@@ -11,6 +11,11 @@
 //! named k = (expression)           # a named quantity's definition (for derivatives)
 //! base b_1 k=(…) s=sn_1 c=(…) d=(…) arg=(…)   # an elliptic base argument
 //! period K k=(…) kp=(…) halfK=(s, c, d) halfiKp=(s, c, d) # quarter-period data
+//! param t1_A positive              # a parameter of the domain's parametrization
+//! image A = (t1_A)/(1)             # an indeterminate's image in the parameters
+//! alt param t2_A positive          # the same for a second parametrization of the domain
+//! posroot r_1                      # a root whose radicand the checker proves positive
+//! sign t7 > 0                      # a sign the checker proves with a parametrization
 //! node t3 = t1 * t2 -> (N)/(D)     # an operation and, where it reduces, its normal form
 //! node t9 = sqrt t8 -> +1 (N)/(D)  # a square root: nf² = t8; the sign is an assumption
 //! node t12 = sn b_1:2,b_2:-1 K:1 iKp:0 k=(…) -> …  # sn(2b₁ − b₂ + K/2) by DLMF 22.8, 22.4, 22.5

@@ -262,8 +262,22 @@ impl Parametrization {
 
     /// The certificate lines of the parametrization: `param t positive|nonzero` for each
     /// parameter, then `image x = (N)/(D)` for each of `vars` (the indeterminates of a
-    /// ring) that has an image.
+    /// ring) that has an image; then the same lines of the alternative, each prefixed
+    /// `alt `.
     pub(crate) fn certificate_lines(&self, vars: &[String]) -> String {
+        let mut out = self.own_certificate_lines(vars);
+        if let Some(alt) = &self.alternative {
+            // the alternative's lines, each prefixed `alt ` (a second parametrization of
+            // the same domain, tried where the first proves no sign)
+            for line in alt.own_certificate_lines(vars).lines() {
+                out.push_str(&format!("alt {line}\n"));
+            }
+        }
+        out
+    }
+
+    /// [`Parametrization::certificate_lines`] without the alternative's.
+    fn own_certificate_lines(&self, vars: &[String]) -> String {
         let mut names: Vec<String> = self.params.iter().map(|(n, _)| n.clone()).collect();
         names.extend((0..ROOT_SLOTS).map(|i| format!("unused_{i}")));
         let mut out = String::new();
