@@ -61,7 +61,15 @@ This script:
     must itself be proved positive; `sign tN > 0` is checked by substituting the images
     into the numerator and the denominator of tN (p(x) * prod d_i**deg_i expanded term by
     term, roots as further positive parameters): every coefficient must have the stated
-    sign, and a parameter t != 0 may occur to even powers only;
+    sign, and a parameter t != 0 may occur to even powers only.  The parametrization
+    must be the catalogue's (certcheck.domain rebuilds it from the definitions of the
+    sampled variables: a set that contains the domain).  Where it proves no sign, the
+    `alt param` / `alt image` lines (the box of the domain's intervals, also rebuilt
+    from the catalogue) are tried.  sn of a base whose argument is real by construction
+    (indeterminates, opaque symbols declared `real`, roots of radicands proved positive,
+    ...) at a real modulus proved in 0 < k**2 < 1 enters through its square, as the
+    parameter sn**2 = u/(1 + u), u > 0 (DLMF 22.2.4, 22.4.1), where it occurs to even
+    powers only;
   * finally every claim lhs = rhs.
 The arithmetic is SymPy's sparse polynomial arithmetic (sympy.polys.rings over ZZ, on
 SymPy's own integers or gmpy2, never python-flint): a value is a quotient of two
@@ -111,7 +119,7 @@ from sympy.polys.rings import ring  # noqa: E402
 assert GROUND_TYPES != "flint", "the recheck must not run on FLINT"
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from certcheck import binding, formula  # noqa: E402
+from certcheck import binding, domain, formula  # noqa: E402
 
 
 class CheckError(Exception):
@@ -281,6 +289,7 @@ class Cert:
         self.params = []  # (name, kind) of the domain's parametrization
         self.pring = None
         self.images = {}  # indeterminate -> (num, den) in the parameters
+        self.image_texts = {}  # indeterminate -> its image as written
         self.posroots = {}  # root name -> None (declared), True/False (radicand checked)
         self.real_declared = set()  # opaque symbols declared real (`field x param real`)
         self.alt_lines = []  # the `alt param` / `alt image` lines: a second parametrization
@@ -651,7 +660,7 @@ class Cert:
         return None if s is None else s * factor
 
     # ---- the second parametrization (`alt` lines) --------------------------------------
-    PARAM_STATE = ("params", "pring", "pnames", "images", "posroots", "realmemo")
+    PARAM_STATE = ("params", "pring", "pnames", "images", "image_texts", "posroots", "realmemo")
 
     def swap_parametrization(self):
         """Exchanges the parametrization in use (with what its sign tests remember) and
@@ -659,7 +668,7 @@ class Cert:
         the domain, so a sign either proves holds on it."""
         if self.alt is None:
             first = {k: getattr(self, k) for k in self.PARAM_STATE}
-            self.params, self.pring, self.pnames, self.images = [], None, None, {}
+            self.params, self.pring, self.pnames, self.images, self.image_texts = [], None, None, {}, {}
             self.posroots = {r: None for r in first["posroots"]}
             self.realmemo = {}
             for sub, more in self.alt_lines:
@@ -1121,6 +1130,7 @@ class Cert:
         elif word == "image":
             name, val = rest.split("=", 1)
             self.images[name.strip()] = self.param_frac(val)
+            self.image_texts[name.strip()] = val.strip()
         elif word == "alt":
             sub, _, more = rest.partition(" ")
             self.need(sub in ("param", "image"), f"bad alt line {rest[:40]}")
@@ -1417,14 +1427,16 @@ def check_text(name, text, catalogue=None):
             assumes += cert.assumes
             res.cases.append(" and ".join(cert.conditions))
             if catalogue is not None:
+                domain.check(cert, src)
                 modes.add(formula.check(cert, src, catalogue))
                 charts = [a + b for a, b in zip(charts, cert.chart_counts)]
         res.premises = check_premises(text, claim, catalogue, assumes)
         res.lemmas = [s for k, s, _ in res.premises if k == "lemma"]
         res.binding = "unbound" if catalogue is None else (
             "evaluated" if modes == {"evaluated"} else sorted(m for m in modes if m != "evaluated")[0])
-    except (CheckError, binding.BindError, formula.FormulaMismatch, KeyError, ValueError, IndexError) as e:
-        known = (CheckError, binding.BindError, formula.FormulaMismatch)
+    except (CheckError, binding.BindError, formula.FormulaMismatch, domain.DomainMismatch, KeyError, ValueError,
+            IndexError) as e:
+        known = (CheckError, binding.BindError, formula.FormulaMismatch, domain.DomainMismatch)
         res.why = f"{type(e).__name__ + ' ' if not isinstance(e, known) else ''}{e}"
         return res
     res.charts = charts if catalogue is not None else [0, 0]

@@ -169,6 +169,13 @@ class Cases:
         self.expect("the premises are printed",
                     recheck([write(t, "m.cert", master)]), True,
                     "premise [branch: hypothesis.branch-delta1]")
+        narrowed = re.sub(r"^image C = \(t1_C\)/\(1\)$", "image C = (t1_C + 1)/(1)", master, flags=re.M)
+        self.expect("a parametrization narrower than the catalogue's domain (C > 1) is rejected",
+                    recheck([write(t, "m-domain.cert", narrowed)]), False,
+                    "is not the catalogue's t1_C (the domain's parametrization)")
+        box = re.sub(r"^(alt image dl = \(20\*t1_dl \+ )1\)", r"\g<1>2)", master, flags=re.M)
+        self.expect("a box that is not the catalogue's interval is rejected",
+                    recheck([write(t, "m-box.cert", box)]), False, "(the box of the intervals)")
         self.expect("a deleted hypothesis is rejected",
                     recheck([write(t, "m-premise.cert", without(master, r"premise branch"))]), False,
                     "which is no premise of the theorem")
