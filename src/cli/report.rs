@@ -212,7 +212,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     let places = cat
         .claims
         .iter()
-        .filter_map(|c| crate::claims::structure::place(c).map(|p| (c.id.clone(), p)))
+        .filter_map(|c| crate::claims::structure::place(&cat, c).map(|p| (c.id.clone(), p)))
         .collect();
     let opts = Options {
         bits: bits.clone(),
@@ -236,6 +236,8 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             .map(|(f, c)| (f.to_string(), c.to_string()))
             .collect(),
         places,
+        paper_environments: cat.all_environments(),
+        paper: cat.paper.clone(),
         environments,
     };
     // every page is written beside --out first, then moved in (the pages of an
