@@ -3,7 +3,7 @@
 
 use super::CliError;
 use crate::claims::catalogue::lookup::{self, NotFound, Scope};
-use crate::claims::catalogue::{Catalogue, latex_labels, load_dir};
+use crate::claims::catalogue::{Catalogue, latex_labels};
 use crate::claims::verdict::{ClaimResult, Options, Rung, Verdict, coverage_table, verify};
 use clap::Parser;
 use serde::Serialize;
@@ -31,9 +31,10 @@ pub struct Args {
     /// Number of worker threads, 1..=1024 (default: all cores).
     #[arg(long)]
     pub jobs: Option<usize>,
-    /// Catalogue directory.
-    #[arg(long, default_value = "identities")]
-    pub catalogue: String,
+    /// Catalogue directory or file (default: the paper's catalogue, built into the
+    /// binary).
+    #[arg(long)]
+    pub catalogue: Option<String>,
     /// Print the coverage table (paper label → claim ids → verdicts).
     #[arg(long)]
     pub coverage: bool,
@@ -46,10 +47,9 @@ pub struct Args {
     pub budget: super::ProofBudgetArgs,
 }
 
-/// Loads the catalogue with the model's functions; load errors become [`CliError`].
-pub fn load(dir: &str) -> Result<Catalogue, CliError> {
-    let reg = crate::bindings::euler_top::registry().map_err(CliError::new)?;
-    load_dir(Path::new(dir), reg).map_err(|e| CliError(e.to_string()))
+/// Loads the catalogue `--catalogue` names (the built-in one without it).
+pub fn load(catalogue: Option<&str>) -> Result<Catalogue, CliError> {
+    super::catalogue_arg::CatalogueSource::new(catalogue).load()
 }
 
 /// The ids of the claims `--only QUERY` selects: every claim of the environment QUERY
@@ -290,7 +290,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             args.format
         )));
     }
-    let mut cat = load(&args.catalogue)?;
+    let mut cat = load(args.catalogue.as_deref())?;
     cat.reseed(args.seed);
     let opts = Options {
         bits: bits.clone(),
