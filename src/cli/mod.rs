@@ -127,6 +127,7 @@ pub mod audit;
 pub mod catalogue_arg;
 pub mod cert_source;
 pub mod eval;
+pub mod init;
 pub mod prove;
 pub mod report;
 mod report_install;
