@@ -105,6 +105,16 @@ pub fn read(
                 format!("environment '{}' is listed twice in [paper]", spec.name),
             ));
         }
+        let page = stem(&spec.name, '-');
+        if let Some(x) = envs.iter().find(|x| stem(&x.name, '-') == page) {
+            return Err(at(
+                e,
+                format!(
+                    "environments '{}' and '{}' would share the report page '{page}': rename one",
+                    x.name, spec.name
+                ),
+            ));
+        }
         envs.push(spec);
     }
     if envs.is_empty() {
@@ -178,6 +188,34 @@ fn entry(v: &toml::Value) -> Result<EnvironmentSpec, String> {
         return Err("an environment of [paper] has an empty name".into());
     }
     Ok(spec)
+}
+
+/// An environment name as a file stem or identifier: lower case, every run of characters
+/// other than letters and digits one `sep`, none at the ends (`environment` if nothing is
+/// left).
+///
+/// ```
+/// use eulertop::claims::catalogue::paper::stem;
+/// assert_eq!(stem("Proposition 6", '-'), "proposition-6");
+/// assert_eq!(stem("§22.6", '_'), "22_6");
+/// assert_eq!(stem("§", '-'), "environment");
+/// ```
+pub fn stem(name: &str, sep: char) -> String {
+    let mut out = String::new();
+    for w in name
+        .to_lowercase()
+        .split(|c: char| !c.is_alphanumeric())
+        .filter(|w| !w.is_empty())
+    {
+        if !out.is_empty() {
+            out.push(sep);
+        }
+        out.push_str(w);
+    }
+    if out.is_empty() {
+        out.push_str("environment");
+    }
+    out
 }
 
 /// The environments of a catalogue without a `[paper]` table: the names its claims use,

@@ -59,24 +59,16 @@ impl Environment {
         self.name.clone()
     }
 
-    /// The name as an identifier: `proposition_6`, `section_2` (test-name prefix); any
-    /// character but a letter or digit becomes `_`.
+    /// The name as an identifier: `proposition_6`, `section_2` (test-name prefix); see
+    /// [`super::paper::stem`].
     pub fn slug(&self) -> String {
-        self.mapped('_')
+        super::paper::stem(&self.name, '_')
     }
 
-    /// The name as a file stem: `proposition-6`, `corollary`; any character but a letter
-    /// or digit becomes `-`.
+    /// The name as a file stem: `proposition-6`, `corollary`, `22-6` for "§22.6"; see
+    /// [`super::paper::stem`].
     pub fn page(&self) -> String {
-        self.mapped('-')
-    }
-
-    fn mapped(&self, sep: char) -> String {
-        self.name
-            .to_lowercase()
-            .chars()
-            .map(|c| if c.is_alphanumeric() { c } else { sep })
-            .collect()
+        super::paper::stem(&self.name, '-')
     }
 }
 
@@ -636,12 +628,23 @@ mod tests {
     #[test]
     fn the_paper_table_is_checked() {
         let src = claim("a", "environment = \"Lemma 1\"\nrole = \"statement\"");
-        let twice = format!("{src}{PAPER}{PAPER}");
-        let e = load_plain(&twice).unwrap_err();
-        assert!(e.message.contains("a second [paper] table"), "{e}");
+        let files = [
+            ("a.toml".to_string(), format!("{src}{PAPER}")),
+            ("b.toml".to_string(), PAPER.to_string()),
+        ];
+        let e = load_sources(&files, Registry::new()).unwrap_err();
+        assert!(
+            e.message
+                .contains("a second [paper] table (the first is at a.toml:"),
+            "{e}"
+        );
         for (bad, says) in [
             ("environments = []", "at least one name"),
             ("environments = [\"Lemma 1\", \"Lemma 1\"]", "listed twice"),
+            (
+                "environments = [\"Lemma 1\", \"lemma-1\"]",
+                "share the report page 'lemma-1'",
+            ),
             (
                 "environments = [{ name = \"L\", sections = true }]",
                 "unknown field 'sections'",
