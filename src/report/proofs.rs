@@ -698,10 +698,12 @@ mod tests {
         }
     }
 
+    /// The environment of rank 5 (Lemma 1) or 6 (Theorem 1) of the fixture.
     fn env_at(rank: usize) -> Environment {
+        let name = if rank == 5 { "Lemma 1" } else { "Theorem 1" };
         Environment {
             rank,
-            name: format!("Environment {rank}"),
+            name: name.to_string(),
             section: false,
         }
     }

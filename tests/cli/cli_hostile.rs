@@ -458,8 +458,10 @@ fn row10_jobs_bounded() {
 
 #[test]
 fn row11_report_outside_the_repository() {
+    // without --readme, a directory without README.md: the pages are written, the README
+    // skipped without an error
     let dir = temp_dir("report-outside");
-    let cat = Path::new(env!("CARGO_MANIFEST_DIR")).join("identities");
+    let cat = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/dlmf-jacobi");
     let args = [
         "report",
         "--catalogue",
@@ -468,6 +470,14 @@ fn row11_report_outside_the_repository() {
         "out",
     ];
     let o = run_in(Some(&dir), &args, b"", Stdio::piped());
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    assert!(dir.join("out/README.md").exists());
+    assert!(!dir.join("README.md").exists());
+    // a README named by --readme must exist: checked before anything is written
+    let _ = std::fs::remove_dir_all(dir.join("out"));
+    let mut named = args.to_vec();
+    named.extend(["--readme", "README.md"]);
+    let o = run_in(Some(&dir), &named, b"", Stdio::piped());
     assert_one_line_error(&o, &["--readme", "README.md"], "report without README");
     assert!(
         !dir.join("out").exists(),
