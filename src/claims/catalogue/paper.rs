@@ -220,6 +220,14 @@ pub fn stem(name: &str, sep: char) -> String {
 
 /// The environments of a catalogue without a `[paper]` table: the names its claims use,
 /// in order of first use.
+///
+/// ```
+/// use eulertop::claims::catalogue::paper::implicit;
+/// let envs = implicit(["Lemma 2", "Section 1", "Lemma 2"]);
+/// let names: Vec<&str> = envs.iter().map(|e| e.name.as_str()).collect();
+/// assert_eq!(names, ["Lemma 2", "Section 1"]);
+/// assert!(envs.iter().all(|e| !e.section && e.no_statement.is_none()));
+/// ```
 pub fn implicit<'a>(names: impl IntoIterator<Item = &'a str>) -> Vec<EnvironmentSpec> {
     let mut out: Vec<EnvironmentSpec> = Vec::new();
     for n in names {

@@ -80,6 +80,16 @@ impl Catalogue {
     }
 
     /// Every environment of the catalogue, in the paper's order, sections included.
+    ///
+    /// ```
+    /// use eulertop::claims::catalogue::load_sources;
+    /// use eulertop::claims::registry::Registry;
+    /// let toml = "[paper]\ntitle = 'T'\nauthors = []\nyear = 1\nenvironments = ['Lemma 1', { name = 'Section 2', section = true }]\n";
+    /// let cat = load_sources(&[("t.toml".into(), toml.into())], Registry::new()).unwrap();
+    /// let envs = cat.all_environments();
+    /// assert_eq!((envs[0].rank, envs[0].name.as_str(), envs[0].section), (0, "Lemma 1", false));
+    /// assert_eq!((envs[1].rank, envs[1].page().as_str(), envs[1].section), (1, "section-2", true));
+    /// ```
     pub fn all_environments(&self) -> Vec<Environment> {
         (0..self.environments.len())
             .map(|j| self.environment_at(j))
