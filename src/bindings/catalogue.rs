@@ -48,6 +48,37 @@ pub fn text(name: &str) -> Option<&'static str> {
         .map(|(_, t)| *t)
 }
 
+/// Whether `paper` (a catalogue's `[paper]` table) is the paper of the built-in catalogue,
+/// the one the model illustrates: the same title, authors and year.  The report draws the
+/// model's figures only for it.
+///
+/// ```
+/// use eulertop::bindings::catalogue::{is_this_paper, sources};
+/// use eulertop::claims::catalogue::load_sources;
+/// use eulertop::claims::registry::Registry;
+/// let cat = load_sources(&sources(), eulertop::bindings::euler_top::registry().unwrap()).unwrap();
+/// assert!(is_this_paper(cat.paper.as_ref()));
+/// let mut other = cat.paper.clone().unwrap();
+/// other.title = "Another paper".into();
+/// assert!(!is_this_paper(Some(&other)));
+/// assert!(!is_this_paper(None));
+/// ```
+pub fn is_this_paper(paper: Option<&crate::claims::catalogue::paper::Paper>) -> bool {
+    let Some(p) = paper else {
+        return false;
+    };
+    let Some(table) = text("paper.toml").and_then(|t| t.parse::<toml::Table>().ok()) else {
+        return false;
+    };
+    let ours = &table["paper"];
+    let authors: Vec<&str> = (ours.get("authors").and_then(|a| a.as_array()))
+        .map(|a| a.iter().filter_map(|x| x.as_str()).collect())
+        .unwrap_or_default();
+    ours.get("title").and_then(|t| t.as_str()) == Some(p.title.as_str())
+        && ours.get("year").and_then(|y| y.as_integer()) == Some(p.year)
+        && authors == p.authors
+}
+
 /// The built-in `*.toml` files, `(name, text)`, for the loader.
 pub fn sources() -> Vec<(String, String)> {
     FILES

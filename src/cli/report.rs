@@ -190,7 +190,33 @@ fn sections(cat: &crate::claims::catalogue::Catalogue) -> Vec<Section> {
         .collect()
 }
 
-/// Runs `eulertop report`: every argument is checked before anything is written.
+/// Writes every page beside `out` first, then moves them in (the pages of an earlier
+/// report that this one does not write are removed); with `model_figures`, the figures of
+/// the model too.  Returns the files written.
+fn stage_and_install(
+    input: &ReportInput,
+    out: &Path,
+    model_figures: bool,
+) -> Result<Vec<std::path::PathBuf>, CliError> {
+    let staging = super::report_install::staging_dir(out)?;
+    let staged = write_reports(input, &staging)
+        .map_err(|e| CliError(format!("cannot write the report: {e}")))
+        .and_then(|_| {
+            if !model_figures {
+                return Ok(());
+            }
+            crate::report::figures::model::write_all(&staging.join("figures"))
+                .map_err(|e| CliError(format!("cannot write figures: {e}")))
+        });
+    if let Err(e) = staged {
+        let _ = std::fs::remove_dir_all(&staging);
+        return Err(e);
+    }
+    super::report_install::install(&staging, out)
+}
+
+/// Runs `eulertop report`: every argument is checked before anything is written.  The
+/// model's figures are drawn for the paper of the built-in catalogue only.
 pub fn run(args: Args) -> Result<i32, CliError> {
     args.budget.apply()?;
     let bits = parse_bits(&args.bits)?;
@@ -219,6 +245,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         exact: true,
     };
     let results = run_with_progress(&cat, &opts, &|_| true, cat.claims.len(), args.jobs)?;
+    let model_figures = crate::bindings::catalogue::is_this_paper(cat.paper.as_ref());
     let command = if args.bits == "53,128,256,512,1024" {
         "eulertop report".to_string()
     } else {
@@ -231,29 +258,20 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         macros,
         bits,
         command,
-        extra_figures: crate::report::figures::model::FIGURES
-            .iter()
-            .map(|(f, c)| (f.to_string(), c.to_string()))
-            .collect(),
+        extra_figures: if model_figures {
+            crate::report::figures::model::FIGURES
+                .iter()
+                .map(|(f, c)| (f.to_string(), c.to_string()))
+                .collect()
+        } else {
+            Vec::new()
+        },
         places,
         paper_environments: cat.all_environments(),
         paper: cat.paper.clone(),
         environments,
     };
-    // every page is written beside --out first, then moved in (the pages of an
-    // earlier report that this one does not write are removed)
-    let staging = super::report_install::staging_dir(out)?;
-    let staged = write_reports(&input, &staging)
-        .map_err(|e| CliError(format!("cannot write the report: {e}")))
-        .and_then(|_| {
-            crate::report::figures::model::write_all(&staging.join("figures"))
-                .map_err(|e| CliError(format!("cannot write figures: {e}")))
-        });
-    if let Err(e) = staged {
-        let _ = std::fs::remove_dir_all(&staging);
-        return Err(e);
-    }
-    let written = super::report_install::install(&staging, out)?;
+    let written = stage_and_install(&input, out, model_figures)?;
     if let Some(r) = &readme {
         r.update(&results)?;
     }

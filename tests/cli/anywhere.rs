@@ -86,6 +86,13 @@ fn report_outside_the_repository_skips_the_readme() {
             .starts_with("# Verification report: Reinhardt, Walker, *Jacobian Elliptic Functions*")
     );
     assert!(dir.join("reports/proofs/22-6.md").exists());
+    // the figures of the Euler-top model belong to its paper's report only
+    assert!(
+        dir.join("reports/figures/residuals-22.6-double-argument.svg")
+            .exists()
+    );
+    assert!(!dir.join("reports/figures/orbits.svg").exists());
+    assert!(!index.contains("orbits.svg"));
     assert!(!dir.join("README.md").exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
