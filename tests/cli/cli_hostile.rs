@@ -1018,12 +1018,14 @@ fn m20_report_names_the_file_in_the_way_and_changes_nothing() {
         std::fs::read_to_string(out.join("errata.md")).unwrap(),
         "old"
     );
+    // a dangling link where a page goes (the catalogue's one environment has a page
+    // in proofs/; without a [paper] table of the model's paper, figures/ gets none)
     let out = temp_dir("report-dangling");
-    std::os::unix::fs::symlink("/nonexistent/figures", out.join("figures")).unwrap();
+    std::os::unix::fs::symlink("/nonexistent/proofs", out.join("proofs")).unwrap();
     let mut a = args.to_vec();
     a[6] = out.to_str().unwrap();
     let o = run(&a);
-    assert_one_line_error(&o, &["figures", "symbolic link"], "dangling figures");
+    assert_one_line_error(&o, &["proofs", "symbolic link"], "dangling proofs");
     assert!(!out.join("README.md").exists(), "partial report written");
 }
 
