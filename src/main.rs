@@ -37,6 +37,8 @@ enum Command {
     Orbit(eulertop::cli::orbit::Args),
     /// Verify the catalogue and write the Markdown reports into reports/.
     Report(eulertop::cli::report::Args),
+    /// Start the catalogue of a new paper in DIR (a [paper] table and two claims).
+    Init(eulertop::cli::init::Args),
 }
 
 fn main() -> ExitCode {
@@ -89,6 +91,7 @@ fn main() -> ExitCode {
         Command::Step(a) => eulertop::cli::step::run(a),
         Command::Orbit(a) => eulertop::cli::orbit::run(a),
         Command::Report(a) => eulertop::cli::report::run(a),
+        Command::Init(a) => eulertop::cli::init::run(a),
     };
     match result {
         Ok(code) => ExitCode::from(u8::try_from(code).unwrap_or(2)),

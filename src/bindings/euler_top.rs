@@ -371,10 +371,15 @@ mod tests {
 
     #[test]
     fn labels_are_labels_of_the_paper() {
-        let paper: Vec<&str> = include_str!("../../tests/data/paper_labels.txt")
-            .lines()
-            .filter(|l| !l.starts_with('#'))
+        let table: toml::Table = toml::from_str(include_str!("../../identities/paper.toml"))
+            .expect("identities/paper.toml parses");
+        let paper: Vec<&str> = table["paper"]["labels"]
+            .as_array()
+            .expect("the paper's labels")
+            .iter()
+            .filter_map(|l| l.as_str())
             .collect();
+        assert_eq!(paper.len(), 96);
         for f in ModelFn::ALL {
             for l in f.spec().labels.split(", ") {
                 assert!(

@@ -22,9 +22,10 @@ pub struct Args {
         allow_hyphen_values = true
     )]
     pub bits: String,
-    /// Catalogue directory.
-    #[arg(long, default_value = "identities")]
-    pub catalogue: String,
+    /// Catalogue directory or file (default: the paper's catalogue, built into the
+    /// binary).
+    #[arg(long)]
+    pub catalogue: Option<String>,
 }
 
 /// Writes one row per rung: the residual of the claim run at that precision alone, flushed as
@@ -100,7 +101,7 @@ fn slope_line(slopes: bool, bits: &[u32], xs: &[f64], ys: &[f64]) -> String {
 /// exit status 0 iff every verdict is as expected.
 pub fn run(args: Args) -> Result<i32, CliError> {
     let bits = parse_bits(&args.bits)?;
-    let cat = load(&args.catalogue)?;
+    let cat = load(args.catalogue.as_deref())?;
     let sel = find(&cat, &args.id, Scope::Statement).map_err(CliError::new)?;
     let mut out = stdout();
     if sel.claims.len() > 1 || sel.claims[0].id != args.id {

@@ -100,15 +100,31 @@ impl RawCatalogue {
         files.sort();
         let mut cat = RawCatalogue::default();
         for path in files {
-            cat.add_file(&path)?;
+            let text = std::fs::read_to_string(&path)
+                .map_err(|e| CliError(format!("cannot read {}: {e}", path.display())))?;
+            cat.add_text(&path, &text)?;
         }
         Ok(cat)
     }
 
-    fn add_file(&mut self, path: &Path) -> Result<(), CliError> {
+    /// Reads the `(file name, text)` pairs of a catalogue, as [`RawCatalogue::read`]
+    /// reads its files.
+    ///
+    /// ```
+    /// use eulertop::cli::cert_source::RawCatalogue;
+    /// let cat = RawCatalogue::from_sources(&eulertop::bindings::catalogue::sources()).unwrap();
+    /// assert!(cat.source_lines("sec2.def.M2").is_ok());
+    /// ```
+    pub fn from_sources(sources: &[(String, String)]) -> Result<Self, CliError> {
+        let mut cat = RawCatalogue::default();
+        for (name, text) in sources {
+            cat.add_text(Path::new(name), text)?;
+        }
+        Ok(cat)
+    }
+
+    fn add_text(&mut self, path: &Path, text: &str) -> Result<(), CliError> {
         let shown = path.display();
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| CliError(format!("cannot read {shown}: {e}")))?;
         let table: toml::Table = text
             .parse()
             .map_err(|e| CliError(format!("{shown}: {e}")))?;

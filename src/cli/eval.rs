@@ -25,7 +25,7 @@ pub struct Args {
 
 fn go<T: Backend>(args: &Args, like: T) -> Result<String, CliError> {
     let reg = match &args.catalogue {
-        Some(dir) => super::verify::load(dir)?.registry,
+        Some(dir) => super::verify::load(Some(dir))?.registry,
         None => crate::bindings::euler_top::registry().map_err(CliError::new)?,
     };
     let mut ev = Evaluator::new(&reg, like);

@@ -124,8 +124,10 @@ pub fn parse_list<T: std::str::FromStr>(s: &str, what: &str) -> Result<Vec<T>, C
 }
 
 pub mod audit;
+pub mod catalogue_arg;
 pub mod cert_source;
 pub mod eval;
+pub mod init;
 pub mod prove;
 pub mod report;
 mod report_install;

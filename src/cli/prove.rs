@@ -5,7 +5,7 @@
 //! form — with `--certificate FILE` a script of polynomial equalities that SymPy rechecks
 //! (`scripts/recheck-certificates.py`).
 
-use super::cert_source::{RawCatalogue, bind, premise_lines};
+use super::cert_source::{bind, premise_lines};
 use super::{CliError, stdout, write_error};
 use crate::claims::catalogue::lookup::{Scope, find};
 use crate::claims::catalogue::{Body, Catalogue, Claim, PExpr};
@@ -21,9 +21,10 @@ pub struct Args {
     /// The claim id (an identity, or an independence claim: d(expr, wrt) = 0), an
     /// environment name (its statement claims) or a paper label (the claims carrying it).
     pub id: String,
-    /// Catalogue directory.
-    #[arg(long, default_value = "identities")]
-    pub catalogue: String,
+    /// Catalogue directory or file (default: the paper's catalogue, built into the
+    /// binary).
+    #[arg(long)]
+    pub catalogue: Option<String>,
     /// Write the certificate (a SymPy-recheckable script) to this file.
     #[arg(long)]
     pub certificate: Option<String>,
@@ -75,7 +76,7 @@ pub fn derivation(id: &str, printed: &str, p: &ProofInfo) -> String {
 /// status is 0 iff every one is proved.
 pub fn run(args: Args) -> Result<i32, CliError> {
     args.budget.apply()?;
-    let cat = super::verify::load(&args.catalogue)?;
+    let cat = super::verify::load(args.catalogue.as_deref())?;
     let sel = find(&cat, &args.id, Scope::Statement).map_err(CliError::new)?;
     if let [claim] = sel.claims[..] {
         if claim.id != args.id {
@@ -149,7 +150,9 @@ fn prove_one(args: &Args, cat: &Catalogue, claim: &Claim) -> Result<i32, CliErro
     }
     let p = prove(Ctx { cat, claim }, &lhs, &rhs, args.certificate.is_some());
     if let (Some(path), Some(cert)) = (&args.certificate, &p.certificate) {
-        let source = RawCatalogue::read(&args.catalogue)?.source_lines(&claim.id)?;
+        let source = super::catalogue_arg::CatalogueSource::new(args.catalogue.as_deref())
+            .raw()?
+            .source_lines(&claim.id)?;
         let cert = bind(cert, &source, &premise_lines(&p.hypotheses));
         std::fs::write(path, cert).map_err(|e| CliError(format!("cannot write {path}: {e}")))?;
     }

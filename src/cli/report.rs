@@ -3,7 +3,8 @@
 //! (deterministic output).
 
 use super::CliError;
-use super::verify::{load, parse_bits, run_with_progress};
+use super::catalogue_arg::CatalogueSource;
+use super::verify::{parse_bits, run_with_progress};
 use crate::claims::catalogue::source::read_text;
 use crate::claims::verdict::{ClaimResult, Options};
 use crate::report::{Convention, ReportInput, Section, write_reports};
@@ -25,16 +26,18 @@ pub struct Args {
         allow_hyphen_values = true
     )]
     pub bits: String,
-    /// Catalogue directory.
-    #[arg(long, default_value = "identities")]
-    pub catalogue: String,
+    /// Catalogue directory or file (default: the paper's catalogue, built into the
+    /// binary).
+    #[arg(long)]
+    pub catalogue: Option<String>,
     /// Number of worker threads, 1..=1024 (default: all cores).
     #[arg(long)]
     pub jobs: Option<usize>,
     /// A README whose verdict-count block (between `<!-- verdicts -->` and
-    /// `<!-- /verdicts -->`) is rewritten; empty to skip.
-    #[arg(long, default_value = "README.md")]
-    pub readme: String,
+    /// `<!-- /verdicts -->`) is rewritten; empty to skip.  Without it, `README.md` of the
+    /// current directory is updated when it has such a block, and skipped otherwise.
+    #[arg(long)]
+    pub readme: Option<String>,
     /// The budget of every proof attempt.
     #[command(flatten)]
     pub budget: super::ProofBudgetArgs,
@@ -60,24 +63,13 @@ pub fn parse_newcommands(tex: &str) -> BTreeMap<String, String> {
     m
 }
 
-/// [`read_text`] of a file the catalogue may leave out: `None` when it does not exist.
-fn optional_text(path: &Path) -> Result<Option<String>, CliError> {
-    if !path.exists() && path.symlink_metadata().is_err() {
-        return Ok(None);
-    }
-    read_text(path)
-        .map(Some)
-        .map_err(|e| CliError(format!("{}: {e}", path.display())))
-}
-
-fn read_conventions(dir: &Path) -> Result<Vec<Convention>, CliError> {
-    let p = dir.join("conventions.toml");
-    if !p.exists() {
+/// The `[[convention]]` tables of the catalogue's `conventions.toml` (none without it).
+fn read_conventions(source: &CatalogueSource) -> Result<Vec<Convention>, CliError> {
+    let Some(text) = source.text("conventions.toml")? else {
         return Ok(Vec::new());
-    }
-    let text = read_text(&p).map_err(|e| CliError(format!("{}: {e}", p.display())))?;
-    let v: toml::Value =
-        toml::from_str(&text).map_err(|e| CliError(format!("{}: {}", p.display(), e.message())))?;
+    };
+    let v: toml::Value = toml::from_str(&text)
+        .map_err(|e| CliError(format!("{source}: conventions.toml: {}", e.message())))?;
     let list = v
         .get("convention")
         .and_then(|c| c.as_array())
@@ -93,6 +85,17 @@ fn read_conventions(dir: &Path) -> Result<Vec<Convention>, CliError> {
             why: field(c, "why"),
         })
         .collect())
+}
+
+/// The README `--readme` names (none for `--readme ''`); without `--readme`,
+/// `README.md` when it exists and has a verdict block, so that a report written outside
+/// the repository skips it.
+fn readme_of(arg: Option<&str>) -> Result<Option<ReadmeBlock>, CliError> {
+    match arg {
+        Some("") => Ok(None),
+        Some(r) => read_readme(Path::new(r)).map(Some),
+        None => Ok(read_readme(Path::new("README.md")).ok()),
+    }
 }
 
 /// The verdict block of a README: its text and the byte range of the block (from the
@@ -187,38 +190,62 @@ fn sections(cat: &crate::claims::catalogue::Catalogue) -> Vec<Section> {
         .collect()
 }
 
-/// Runs `eulertop report`: every argument is checked before anything is written.
+/// Writes every page beside `out` first, then moves them in (the pages of an earlier
+/// report that this one does not write are removed); with `model_figures`, the figures of
+/// the model too.  Returns the files written.
+fn stage_and_install(
+    input: &ReportInput,
+    out: &Path,
+    model_figures: bool,
+) -> Result<Vec<std::path::PathBuf>, CliError> {
+    let staging = super::report_install::staging_dir(out)?;
+    let staged = write_reports(input, &staging)
+        .map_err(|e| CliError(format!("cannot write the report: {e}")))
+        .and_then(|_| {
+            if !model_figures {
+                return Ok(());
+            }
+            crate::report::figures::model::write_all(&staging.join("figures"))
+                .map_err(|e| CliError(format!("cannot write figures: {e}")))
+        });
+    if let Err(e) = staged {
+        let _ = std::fs::remove_dir_all(&staging);
+        return Err(e);
+    }
+    super::report_install::install(&staging, out)
+}
+
+/// Runs `eulertop report`: every argument is checked before anything is written.  The
+/// model's figures are drawn for the paper of the built-in catalogue only.
 pub fn run(args: Args) -> Result<i32, CliError> {
     args.budget.apply()?;
     let bits = parse_bits(&args.bits)?;
     super::check_jobs(args.jobs)?;
-    let readme = match args.readme.as_str() {
-        "" => None,
-        r => Some(read_readme(Path::new(r))?),
-    };
+    let readme = readme_of(args.readme.as_deref())?;
     let out = Path::new(&args.out);
     check_out(out, readme.as_ref())?;
-    let cat = load(&args.catalogue)?;
-    let dir = Path::new(&args.catalogue);
-    let macros = match optional_text(&dir.join("paper-macros.tex"))? {
+    let source = CatalogueSource::new(args.catalogue.as_deref());
+    let cat = source.load()?;
+    let macros = match source.text("paper-macros.tex")? {
         Some(t) => parse_newcommands(&t),
         None => BTreeMap::new(),
     };
-    let conventions = read_conventions(dir)?;
-    let environments = match optional_text(&dir.join("environments.tex"))? {
+    let conventions = read_conventions(&source)?;
+    let environments = match source.text("environments.tex")? {
         Some(t) => crate::report::paper_text::parse(&t),
         None => BTreeMap::new(),
     };
     let places = cat
         .claims
         .iter()
-        .filter_map(|c| crate::claims::structure::place(c).map(|p| (c.id.clone(), p)))
+        .filter_map(|c| crate::claims::structure::place(&cat, c).map(|p| (c.id.clone(), p)))
         .collect();
     let opts = Options {
         bits: bits.clone(),
         exact: true,
     };
     let results = run_with_progress(&cat, &opts, &|_| true, cat.claims.len(), args.jobs)?;
+    let model_figures = crate::bindings::catalogue::is_this_paper(cat.paper.as_ref());
     let command = if args.bits == "53,128,256,512,1024" {
         "eulertop report".to_string()
     } else {
@@ -231,27 +258,20 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         macros,
         bits,
         command,
-        extra_figures: crate::report::figures::model::FIGURES
-            .iter()
-            .map(|(f, c)| (f.to_string(), c.to_string()))
-            .collect(),
+        extra_figures: if model_figures {
+            crate::report::figures::model::FIGURES
+                .iter()
+                .map(|(f, c)| (f.to_string(), c.to_string()))
+                .collect()
+        } else {
+            Vec::new()
+        },
         places,
+        paper_environments: cat.all_environments(),
+        paper: cat.paper.clone(),
         environments,
     };
-    // every page is written beside --out first, then moved in (the pages of an
-    // earlier report that this one does not write are removed)
-    let staging = super::report_install::staging_dir(out)?;
-    let staged = write_reports(&input, &staging)
-        .map_err(|e| CliError(format!("cannot write the report: {e}")))
-        .and_then(|_| {
-            crate::report::figures::model::write_all(&staging.join("figures"))
-                .map_err(|e| CliError(format!("cannot write figures: {e}")))
-        });
-    if let Err(e) = staged {
-        let _ = std::fs::remove_dir_all(&staging);
-        return Err(e);
-    }
-    let written = super::report_install::install(&staging, out)?;
+    let written = stage_and_install(&input, out, model_figures)?;
     if let Some(r) = &readme {
         r.update(&results)?;
     }

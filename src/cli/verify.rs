@@ -3,7 +3,7 @@
 
 use super::CliError;
 use crate::claims::catalogue::lookup::{self, NotFound, Scope};
-use crate::claims::catalogue::{Catalogue, latex_labels, load_dir};
+use crate::claims::catalogue::{Catalogue, latex_labels};
 use crate::claims::verdict::{ClaimResult, Options, Rung, Verdict, coverage_table, verify};
 use clap::Parser;
 use serde::Serialize;
@@ -31,9 +31,10 @@ pub struct Args {
     /// Number of worker threads, 1..=1024 (default: all cores).
     #[arg(long)]
     pub jobs: Option<usize>,
-    /// Catalogue directory.
-    #[arg(long, default_value = "identities")]
-    pub catalogue: String,
+    /// Catalogue directory or file (default: the paper's catalogue, built into the
+    /// binary).
+    #[arg(long)]
+    pub catalogue: Option<String>,
     /// Print the coverage table (paper label → claim ids → verdicts).
     #[arg(long)]
     pub coverage: bool,
@@ -46,10 +47,9 @@ pub struct Args {
     pub budget: super::ProofBudgetArgs,
 }
 
-/// Loads the catalogue with the model's functions; load errors become [`CliError`].
-pub fn load(dir: &str) -> Result<Catalogue, CliError> {
-    let reg = crate::bindings::euler_top::registry().map_err(CliError::new)?;
-    load_dir(Path::new(dir), reg).map_err(|e| CliError(e.to_string()))
+/// Loads the catalogue `--catalogue` names (the built-in one without it).
+pub fn load(catalogue: Option<&str>) -> Result<Catalogue, CliError> {
+    super::catalogue_arg::CatalogueSource::new(catalogue).load()
 }
 
 /// The ids of the claims `--only QUERY` selects: every claim of the environment QUERY
@@ -215,10 +215,11 @@ pub fn check_domains_reachable(
     Ok(())
 }
 
-/// Paper labels: from the LaTeX source named by the environment variable
-/// `EULERTOP_PAPER` when it is set, else the checked-in list.  A source that cannot be
-/// read or has no `\label` is an error naming the variable.
-pub fn paper_labels() -> Result<Vec<String>, CliError> {
+/// Paper labels, the rows of the coverage table: from the LaTeX source named by the
+/// environment variable `EULERTOP_PAPER` when it is set, else the `labels` of the
+/// catalogue's `[paper]` table, else the labels its claims carry (in catalogue order).  A
+/// source that cannot be read or has no `\label` is an error naming the variable.
+pub fn paper_labels(cat: &Catalogue) -> Result<Vec<String>, CliError> {
     if let Some(p) = std::env::var_os("EULERTOP_PAPER") {
         let shown = Path::new(&p).display().to_string();
         let t = crate::claims::catalogue::source::read_text(Path::new(&p))
@@ -231,11 +232,16 @@ pub fn paper_labels() -> Result<Vec<String>, CliError> {
         }
         return Ok(l);
     }
-    Ok(include_str!("../../tests/data/paper_labels.txt")
-        .lines()
-        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
-        .map(|l| l.to_string())
-        .collect())
+    if let Some(p) = cat.paper.as_ref().filter(|p| !p.labels.is_empty()) {
+        return Ok(p.labels.clone());
+    }
+    let mut out: Vec<String> = Vec::new();
+    for l in cat.claims.iter().flat_map(|c| &c.labels) {
+        if !out.contains(l) {
+            out.push(l.clone());
+        }
+    }
+    Ok(out)
 }
 
 /// Verifies the selected claims on `jobs` worker threads (default: all cores), with a
@@ -284,7 +290,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             args.format
         )));
     }
-    let mut cat = load(&args.catalogue)?;
+    let mut cat = load(args.catalogue.as_deref())?;
     cat.reseed(args.seed);
     let opts = Options {
         bits: bits.clone(),
@@ -304,7 +310,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     check_domains_reachable(&cat, &select)?;
     // the labels are read before the run, so a bad EULERTOP_PAPER costs nothing
     let labels = if args.coverage {
-        paper_labels()?
+        paper_labels(&cat)?
     } else {
         Vec::new()
     };

@@ -17,7 +17,7 @@ pub mod proof_evidence;
 pub mod proofs;
 pub mod tex;
 
-use crate::claims::structure::Place;
+use crate::claims::structure::{Environment, Place};
 use crate::claims::verdict::ClaimResult;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -62,6 +62,11 @@ pub struct ReportInput<'a> {
     pub extra_figures: Vec<(String, String)>,
     /// Each claim's place in the paper (environment, role, uses), by id.
     pub places: BTreeMap<String, Place>,
+    /// The catalogue's environments in the paper's order, sections included (those that
+    /// are not sections get a page in `proofs/`).
+    pub paper_environments: Vec<Environment>,
+    /// The source, from the catalogue's `[paper]` table (for the title of the index).
+    pub paper: Option<crate::claims::catalogue::paper::Paper>,
     /// The printed statements and proofs of the environments, by environment name.
     pub environments: BTreeMap<String, paper_text::EnvironmentText>,
 }
@@ -105,7 +110,7 @@ pub fn write_reports(input: &ReportInput, out: &Path) -> std::io::Result<Vec<Pat
         put(&format!("figures/residuals-{}.svg", sec.stem), svg)?;
     }
     let structure = proofs::Structure::new(input.results, &input.places);
-    for env in proofs::environments() {
+    for env in proofs::environments(input) {
         put(
             &format!("proofs/{}.md", env.page()),
             proofs::page(input, &structure, &env),

@@ -20,7 +20,7 @@ use super::decimal::round_numbers;
 use super::paper_text::to_markdown;
 use super::{ReportInput, stem_of};
 use crate::claims::kind::Form;
-use crate::claims::structure::{ENVIRONMENTS, Environment, Place, Role};
+use crate::claims::structure::{Environment, Place, Role};
 use crate::claims::verdict::{ClaimResult, Counterexample, Verdict};
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write;
@@ -269,20 +269,20 @@ pub fn rollup(s: &Structure, env: &Environment) -> Rollup {
     }
 }
 
-/// The thirteen environments in the paper's order.
-pub fn environments() -> Vec<Environment> {
-    (0..ENVIRONMENTS.len()).map(Environment::Named).collect()
+/// The environments that get a proof page (those that are not sections), in the paper's
+/// order.
+pub fn environments(input: &ReportInput) -> Vec<Environment> {
+    let all = input.paper_environments.iter();
+    all.filter(|e| !e.section).cloned().collect()
 }
 
 /// Link to a claim on its environment page (`prefix` leads to `reports/`), or to its section
 /// page when its environment has no page.
 pub fn claim_link(s: &Structure, id: &str, prefix: &str) -> String {
     match s.places.get(id).map(|p| &p.environment) {
-        Some(Environment::Named(j)) => format!(
-            "{prefix}proofs/{}.md#{}",
-            Environment::Named(*j).page(),
-            anchor(id)
-        ),
+        Some(env) if !env.section => {
+            format!("{prefix}proofs/{}.md#{}", env.page(), anchor(id))
+        }
         _ => s
             .get(id)
             .map(|r| format!("{prefix}{}.md#{}", stem_of(r), anchor(id)))
@@ -334,10 +334,10 @@ pub fn proof_text(p: &ProofStatus, s: &Structure, prefix: &str) -> String {
     }
 }
 
-/// The table of the thirteen environments that opens `reports/README.md`.
-pub fn index_table(s: &Structure) -> String {
+/// The table of the paper's environments that opens `reports/README.md`.
+pub fn index_table(input: &ReportInput, s: &Structure) -> String {
     let mut t = String::from("| environment | statement | proof | claims |\n|---|---|---|---|\n");
-    for env in environments() {
+    for env in environments(input) {
         let r = rollup(s, &env);
         let n = s.claims(&env, None).len();
         let _ = writeln!(
@@ -698,9 +698,19 @@ mod tests {
         }
     }
 
+    /// The environment of rank 5 (Lemma 1) or 6 (Theorem 1) of the fixture.
+    fn env_at(rank: usize) -> Environment {
+        let name = if rank == 5 { "Lemma 1" } else { "Theorem 1" };
+        Environment {
+            rank,
+            name: name.to_string(),
+            section: false,
+        }
+    }
+
     fn place(env: usize, role: Role, uses: &[&str]) -> Place {
         Place {
-            environment: Environment::Named(env),
+            environment: env_at(env),
             role,
             uses: uses.iter().map(|u| u.to_string()).collect(),
         }
@@ -735,7 +745,7 @@ mod tests {
     fn roll(vs: [Verdict; 4], fix: Option<Verdict>) -> Rollup {
         let (rs, pl) = fixture(vs, fix);
         let s = Structure::new(&rs, &pl);
-        rollup(&s, &Environment::Named(5))
+        rollup(&s, &env_at(5))
     }
 
     use Verdict::{Holds as H, Inconclusive as I, Proved as P, Refuted as R};
@@ -785,17 +795,14 @@ mod tests {
         pl.get_mut("p1").unwrap().role = Role::Consequence;
         pl.get_mut("p2").unwrap().role = Role::Consequence;
         let s = Structure::new(&rs, &pl);
-        assert_eq!(
-            proof_status(&s, &Environment::Named(5)),
-            ProofStatus::NoProof
-        );
+        assert_eq!(proof_status(&s, &env_at(5)), ProofStatus::NoProof);
     }
 
     #[test]
     fn diagram_draws_uses_and_other_environments() {
         let (rs, pl) = fixture([H, H, H, R], Some(H));
         let s = Structure::new(&rs, &pl);
-        let m = mermaid(&s, &Environment::Named(5));
+        let m = mermaid(&s, &env_at(5));
         assert!(m.starts_with("```mermaid\nflowchart TD\n"), "{m}");
         assert!(m.contains("n0([\"s<br/>✓ holds\"]):::holds"), "{m}");
         assert!(
@@ -805,7 +812,7 @@ mod tests {
         for e in ["n2 --> n0", "n1 --> n2", "n3 --> n2"] {
             assert!(m.contains(e), "{e} in {m}");
         }
-        assert_eq!(m, mermaid(&s, &Environment::Named(5)));
+        assert_eq!(m, mermaid(&s, &env_at(5)));
     }
 
     #[test]

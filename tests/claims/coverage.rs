@@ -1,8 +1,8 @@
-//! Coverage: every `\label` of the paper, every numbered environment and the Corollary
-//! has at least one claim in the catalogue.  Labels are read from the paper's LaTeX
-//! source when the environment variable `EULERTOP_PAPER` names it; the checked-in list
-//! `tests/data/paper_labels.txt` keeps the test meaningful without it (and is itself
-//! checked against the paper when it is given).
+//! Coverage: every `\label` of the paper and every environment of the catalogue's
+//! `[paper]` table that is not a section has at least one claim in the catalogue.  Labels are read from the paper's LaTeX
+//! source when the environment variable `EULERTOP_PAPER` names it; the `labels` of the
+//! catalogue's `[paper]` table (`identities/paper.toml`) keep the test meaningful without
+//! it (and are themselves checked against the paper when it is given).
 
 use eulertop::bindings::euler_top::registry;
 use eulertop::claims::catalogue::{coverage, latex_labels, load_dir};
@@ -13,33 +13,15 @@ fn paper() -> Option<String> {
     std::fs::read_to_string(std::env::var_os("EULERTOP_PAPER")?).ok()
 }
 
+/// The `labels` of the catalogue's `[paper]` table.
 fn checked_in_labels() -> Vec<String> {
-    include_str!(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/paper_labels.txt"
-    ))
-    .lines()
-    .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
-    .map(str::to_string)
-    .collect()
+    let cat = load_dir(
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join("identities"),
+        registry().unwrap(),
+    )
+    .unwrap_or_else(|e| panic!("catalogue does not load:\n{e}"));
+    cat.paper.expect("a [paper] table").labels
 }
-
-/// The numbered environments, in order, with the Corollary.
-const ENVIRONMENTS: [&str; 13] = [
-    "Definition 1",
-    "Proposition 1",
-    "Proposition 2",
-    "Proposition 3",
-    "Proposition 4",
-    "Proposition 5",
-    "Proposition 6",
-    "Lemma 1",
-    "Lemma 2",
-    "Theorem 1",
-    "Theorem 2",
-    "Theorem 3",
-    "Corollary",
-];
 
 #[test]
 fn checked_in_label_list_matches_the_paper() {
@@ -49,7 +31,7 @@ fn checked_in_label_list_matches_the_paper() {
         assert_eq!(
             latex_labels(&tex),
             list,
-            "tests/data/paper_labels.txt is stale"
+            "the labels of identities/paper.toml are stale"
         );
         // 12 numbered environments and one Corollary
         for (env, n) in [
@@ -90,7 +72,16 @@ fn every_label_and_environment_has_a_claim() {
         unknown.is_empty(),
         "claims name labels not in the paper: {unknown:?}"
     );
-    for env in ENVIRONMENTS {
+    let envs: Vec<String> = cat
+        .all_environments()
+        .into_iter()
+        .filter(|e| !e.section)
+        .map(|e| e.name)
+        .collect();
+    // 12 numbered environments and one Corollary
+    assert_eq!(envs.len(), 13, "{envs:?}");
+    for env in &envs {
+        let env = env.as_str();
         let found = cat.claims.iter().any(|c| {
             c.location.match_indices(env).any(|(j, _)| {
                 !c.location[j + env.len()..]

@@ -202,30 +202,40 @@ fn eval_and_audit() {
     assert_eq!(out.status.code(), Some(2));
 }
 
+/// `--coverage` lists the labels of the catalogue's `[paper]` table (the paper's 96),
+/// and, for a catalogue without one, the labels its claims carry.
 #[test]
-fn coverage_lists_all_96_paper_labels() {
-    let dir = temp_catalogue("cov", TWO);
-    let out = bin()
-        .args([
-            "verify",
-            "--format",
-            "json",
-            "--coverage",
-            "--bits",
-            "53",
-            "--catalogue",
-        ])
-        .arg(&dir)
-        .output()
-        .unwrap();
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let rows = v["coverage"].as_array().unwrap();
-    assert_eq!(rows.len(), 96);
-    assert_eq!(rows[0]["label"], "ET");
-    assert!(
-        rows.iter()
-            .all(|r| r["claims"].as_array().unwrap().is_empty())
+fn coverage_lists_the_labels_of_the_catalogue() {
+    let rows = |args: &[&str], dir: Option<&PathBuf>| -> Vec<serde_json::Value> {
+        let mut cmd = bin();
+        cmd.args(["verify", "--format", "json", "--coverage", "--bits", "53"])
+            .args(args)
+            .env_remove("EULERTOP_PAPER");
+        if let Some(d) = dir {
+            cmd.arg("--catalogue").arg(d);
+        }
+        let out = cmd.output().unwrap();
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        v["coverage"].as_array().unwrap().clone()
+    };
+    let paper = rows(&["--only", "sec2.def.M2"], None);
+    assert_eq!(paper.len(), 96);
+    assert_eq!(paper[0]["label"], "ET");
+    let with_claims: Vec<&serde_json::Value> = paper
+        .iter()
+        .filter(|r| !r["claims"].as_array().unwrap().is_empty())
+        .collect();
+    assert_eq!(with_claims.len(), 1);
+    assert_eq!(with_claims[0]["label"], "M2");
+    let labelled = TWO.replace(
+        "environment = \"Section 2\"",
+        "labels = [\"x\"]\nenvironment = \"Section 2\"",
     );
+    let dir = temp_catalogue("cov", &labelled);
+    let own = rows(&[], Some(&dir));
+    assert_eq!(own.len(), 1);
+    assert_eq!(own[0]["label"], "x");
+    assert_eq!(own[0]["claims"].as_array().unwrap().len(), 2);
 }
 
 #[test]

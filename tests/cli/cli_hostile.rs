@@ -458,8 +458,10 @@ fn row10_jobs_bounded() {
 
 #[test]
 fn row11_report_outside_the_repository() {
+    // without --readme, a directory without README.md: the pages are written, the README
+    // skipped without an error
     let dir = temp_dir("report-outside");
-    let cat = Path::new(env!("CARGO_MANIFEST_DIR")).join("identities");
+    let cat = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/dlmf-jacobi");
     let args = [
         "report",
         "--catalogue",
@@ -468,6 +470,14 @@ fn row11_report_outside_the_repository() {
         "out",
     ];
     let o = run_in(Some(&dir), &args, b"", Stdio::piped());
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    assert!(dir.join("out/README.md").exists());
+    assert!(!dir.join("README.md").exists());
+    // a README named by --readme must exist: checked before anything is written
+    let _ = std::fs::remove_dir_all(dir.join("out"));
+    let mut named = args.to_vec();
+    named.extend(["--readme", "README.md"]);
+    let o = run_in(Some(&dir), &named, b"", Stdio::piped());
     assert_one_line_error(&o, &["--readme", "README.md"], "report without README");
     assert!(
         !dir.join("out").exists(),
@@ -1008,12 +1018,14 @@ fn m20_report_names_the_file_in_the_way_and_changes_nothing() {
         std::fs::read_to_string(out.join("errata.md")).unwrap(),
         "old"
     );
+    // a dangling link where a page goes (the catalogue's one environment has a page
+    // in proofs/; without a [paper] table of the model's paper, figures/ gets none)
     let out = temp_dir("report-dangling");
-    std::os::unix::fs::symlink("/nonexistent/figures", out.join("figures")).unwrap();
+    std::os::unix::fs::symlink("/nonexistent/proofs", out.join("proofs")).unwrap();
     let mut a = args.to_vec();
     a[6] = out.to_str().unwrap();
     let o = run(&a);
-    assert_one_line_error(&o, &["figures", "symbolic link"], "dangling figures");
+    assert_one_line_error(&o, &["proofs", "symbolic link"], "dangling proofs");
     assert!(!out.join("README.md").exists(), "partial report written");
 }
 

@@ -1,6 +1,8 @@
 //! End-to-end tests of the `eulertop` binary: the claims commands, hostile input, the
-//! `jacobi`, `step` and `orbit` commands, and the report's figures.
+//! `jacobi`, `step` and `orbit` commands, the report's figures, and the commands run
+//! outside the repository.
 
+mod anywhere;
 mod cli_claims;
 mod cli_hostile;
 mod jacobi;

@@ -213,6 +213,11 @@ pub struct Catalogue {
     pub sections: Vec<(String, String, String)>,
     /// Whether the lemmas that proofs rest on are proved (filled as they are checked).
     pub lemma_memo: LemmaMemo,
+    /// The source, from the `[paper]` table (`None` when no file has one).
+    pub paper: Option<super::paper::Paper>,
+    /// The environments claims may name, in the paper's order: the `[paper]` table's
+    /// list, or, without one, the names the claims use.
+    pub environments: Vec<super::paper::EnvironmentSpec>,
     /// The hypotheses claims may state, by name.
     pub hypotheses: BTreeMap<String, Hypothesis>,
 }

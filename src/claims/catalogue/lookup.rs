@@ -187,6 +187,31 @@ pub fn suggestions(cat: &Catalogue, query: &str) -> Vec<String> {
     scored.into_iter().take(3).map(|(_, s)| s).collect()
 }
 
+/// At most `n` of `names` closest to `query` by edit distance (ignoring case), within a
+/// distance of a third of the name's length (at least 2), closest first.
+///
+/// ```
+/// use eulertop::claims::catalogue::lookup::closest;
+/// let names = ["Lemma 1", "Lemma 2", "Theorem 1"];
+/// assert_eq!(closest("Lemma 3", names, 3), ["Lemma 1", "Lemma 2"]);
+/// assert!(closest("Corollary", names, 3).is_empty());
+/// ```
+pub fn closest<'a>(query: &str, names: impl IntoIterator<Item = &'a str>, n: usize) -> Vec<String> {
+    let q = query.trim().to_lowercase();
+    let mut scored: Vec<(usize, &str)> = names
+        .into_iter()
+        .map(|name| (distance(&q, &name.to_lowercase()), name))
+        .filter(|(d, name)| *d <= (name.chars().count() / 3).max(2))
+        .collect();
+    scored.sort();
+    scored.dedup();
+    scored
+        .into_iter()
+        .take(n)
+        .map(|(_, s)| s.to_string())
+        .collect()
+}
+
 /// Lower case with runs of white space as one space, for comparing environment names.
 fn normalize(s: &str) -> String {
     s.split_whitespace()

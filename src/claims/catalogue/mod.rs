@@ -13,6 +13,7 @@ pub mod claim;
 pub mod defaults;
 mod fields;
 pub mod lookup;
+pub mod paper;
 mod raw;
 pub mod source;
 pub mod structure;
@@ -86,6 +87,8 @@ struct Assembly {
     /// The `definition` functions with where they are written.
     defs: Vec<(Binding, Origin)>,
     hypotheses: BTreeMap<String, claim::Hypothesis>,
+    /// The `[paper]` table, once read.
+    paper: Option<(paper::Paper, Vec<paper::EnvironmentSpec>)>,
 }
 
 /// Loads a catalogue from `(file name, text)` pairs, with the host functions of
@@ -137,6 +140,13 @@ pub fn load_sources(
             .define(b.clone())
             .map_err(|m| origin.error(Some(b.span), m.to_string()))?;
     }
+    let (paper, environments) = match a.paper {
+        Some((p, envs)) => (Some(p), envs),
+        None => {
+            let names = a.claims.iter().filter_map(|c| c.environment.as_ref());
+            (None, paper::implicit(names.map(|e| e.value.as_str())))
+        }
+    };
     let cat = Catalogue {
         claims: a.claims,
         domains: a.domains,
@@ -144,6 +154,8 @@ pub fn load_sources(
         sections: a.sections,
         lemma_memo: LemmaMemo::default(),
         hypotheses: a.hypotheses,
+        paper,
+        environments,
     };
     check::check(&cat, &a.defs)?;
     structure::check(&cat)?;
@@ -156,6 +168,17 @@ fn load_file(file: &Arc<SourceFile>, a: &mut Assembly) -> Result<(), LoadError> 
         let (s, t) = e.span().map_or((0, 0), |r| (r.start, r.end));
         file.error_at(s, t, e.message().trim().replace('\n', " "))
     })?;
+    if let Some(t) = &parsed.paper {
+        if let Some((p, _)) = &a.paper {
+            let at = t.span().start;
+            return Err(file.error_at(
+                at,
+                at + 1,
+                format!("a second [paper] table (the first is at {})", p.position),
+            ));
+        }
+        a.paper = Some(paper::read(file, t)?);
+    }
     if let Some(s) = &parsed.section {
         a.sections
             .push((file.name.clone(), s.number.clone(), s.title.clone()));

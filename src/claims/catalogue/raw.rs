@@ -11,6 +11,8 @@ use toml::Spanned;
 #[derive(Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 pub struct FileToml {
+    /// `[paper]`: the source and its environments (one file of the catalogue has it).
+    pub paper: Option<Spanned<super::paper::PaperToml>>,
     /// `[section]`.
     pub section: Option<SectionToml>,
     /// `[[claim]]` tables.

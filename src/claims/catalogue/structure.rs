@@ -1,16 +1,38 @@
 //! The paper's structure in the catalogue: each claim names the environment of the paper
-//! it belongs to (`environment`), its role there (`role`) and the claims it rests on
-//! (`uses`).  [`check`] validates these fields after loading (the format is in
+//! it belongs to (`environment`, one of the names the catalogue's `[paper]` table lists,
+//! see [`super::paper`]), its role there (`role`) and the claims it rests on (`uses`).
+//! [`check`] validates these fields after loading (the format is in
 //! `identities/README.md`); the report writer and the per-claim tests read them through
 //! [`place`].
 //!
 //! ```
-//! use eulertop::claims::structure::{Environment, Role};
-//! let e = Environment::parse("Proposition 6").unwrap();
-//! assert_eq!(e.slug(), "proposition_6");
-//! assert_eq!(e.page(), "proposition-6");
-//! assert_eq!(Environment::parse("Section 5").unwrap().name(), "Section 5");
-//! assert!(Environment::parse("Proposition 7").is_none());
+//! use eulertop::claims::catalogue::load_sources;
+//! use eulertop::claims::registry::Registry;
+//! use eulertop::claims::structure::{place, Role};
+//! let toml = r#"
+//! [paper]
+//! title = "T"
+//! authors = []
+//! year = 2000
+//! environments = [{ name = "Section 2", section = true }, "Proposition 6"]
+//!
+//! [[claim]]
+//! id = "one"
+//! location = "l"
+//! printed = 'p'
+//! environment = "Proposition 6"
+//! role = "statement"
+//! kind = "identity"
+//! expect = "holds"
+//! lhs = "1"
+//! rhs = "1"
+//! "#;
+//! let cat = load_sources(&[("t.toml".into(), toml.into())], Registry::new()).unwrap();
+//! let e = cat.environment("Proposition 6").unwrap();
+//! assert_eq!((e.rank, e.slug(), e.page()), (1, "proposition_6".to_string(), "proposition-6".to_string()));
+//! assert!(cat.environment("Section 2").unwrap().section);
+//! assert!(cat.environment("Proposition 7").is_none());
+//! assert_eq!(place(&cat, &cat.claims[0]).unwrap().environment, e);
 //! assert_eq!(Role::parse("proof-step"), Some(Role::ProofStep));
 //! ```
 
@@ -20,64 +42,67 @@ use crate::claims::ast::{Expr, ExprKind, Span};
 use crate::claims::kind::{Form, Kind};
 use std::collections::{BTreeMap, BTreeSet};
 
-/// The theorem-like environments of the paper, in the order in which they are printed.
-pub const ENVIRONMENTS: [&str; 13] = [
-    "Definition 1",
-    "Proposition 1",
-    "Proposition 2",
-    "Proposition 3",
-    "Proposition 4",
-    "Lemma 1",
-    "Theorem 1",
-    "Corollary",
-    "Proposition 5",
-    "Proposition 6",
-    "Theorem 2",
-    "Lemma 2",
-    "Theorem 3",
-];
-
-/// The paper's sections ("A" is the appendix).
-const SECTIONS: [&str; 10] = ["1", "2", "3", "4", "5", "6", "7", "8", "9", "A"];
-
-/// Where in the paper a claim belongs.
+/// Where in the paper a claim belongs: one of the catalogue's environments.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub enum Environment {
-    /// One of [`ENVIRONMENTS`] (the index, i.e. its rank in the paper).
-    Named(usize),
-    /// The text of a section outside any environment ("Section 5"; "A" is the appendix).
-    Section(String),
+pub struct Environment {
+    /// Its rank in the catalogue's list (the paper's order).
+    pub rank: usize,
+    /// The name as written in the catalogue ("Proposition 6", "Section 2").
+    pub name: String,
+    /// Text of a section outside the theorem-like environments (no proof page of its own).
+    pub section: bool,
 }
 
 impl Environment {
-    /// Parses "Proposition 6", "Corollary", "Section 2", …; `None` if not an environment of
-    /// the paper.
-    pub fn parse(s: &str) -> Option<Environment> {
-        if let Some(j) = ENVIRONMENTS.iter().position(|e| *e == s) {
-            return Some(Environment::Named(j));
-        }
-        let n = s.strip_prefix("Section ")?;
-        SECTIONS
-            .contains(&n)
-            .then(|| Environment::Section(n.to_string()))
-    }
-
     /// The name as written in the catalogue.
     pub fn name(&self) -> String {
-        match self {
-            Environment::Named(j) => ENVIRONMENTS[*j].to_string(),
-            Environment::Section(n) => format!("Section {n}"),
-        }
+        self.name.clone()
     }
 
-    /// The name as an identifier: `proposition_6`, `section_2` (test-name prefix).
+    /// The name as an identifier: `proposition_6`, `section_2` (test-name prefix); see
+    /// [`super::paper::stem`].
     pub fn slug(&self) -> String {
-        self.name().to_ascii_lowercase().replace(' ', "_")
+        super::paper::stem(&self.name, '_')
     }
 
-    /// The name as a file stem: `proposition-6`, `corollary`.
+    /// The name as a file stem: `proposition-6`, `corollary`, `22-6` for "§22.6"; see
+    /// [`super::paper::stem`].
     pub fn page(&self) -> String {
-        self.name().to_ascii_lowercase().replace(' ', "-")
+        super::paper::stem(&self.name, '-')
+    }
+}
+
+impl Catalogue {
+    /// The environment named `name` exactly as the catalogue lists it, if any.
+    pub fn environment(&self, name: &str) -> Option<Environment> {
+        let rank = self.environments.iter().position(|e| e.name == name)?;
+        Some(self.environment_at(rank))
+    }
+
+    /// Every environment of the catalogue, in the paper's order, sections included.
+    ///
+    /// ```
+    /// use eulertop::claims::catalogue::load_sources;
+    /// use eulertop::claims::registry::Registry;
+    /// let toml = "[paper]\ntitle = 'T'\nauthors = []\nyear = 1\nenvironments = ['Lemma 1', { name = 'Section 2', section = true }]\n";
+    /// let cat = load_sources(&[("t.toml".into(), toml.into())], Registry::new()).unwrap();
+    /// let envs = cat.all_environments();
+    /// assert_eq!((envs[0].rank, envs[0].name.as_str(), envs[0].section), (0, "Lemma 1", false));
+    /// assert_eq!((envs[1].rank, envs[1].page().as_str(), envs[1].section), (1, "section-2", true));
+    /// ```
+    pub fn all_environments(&self) -> Vec<Environment> {
+        (0..self.environments.len())
+            .map(|j| self.environment_at(j))
+            .collect()
+    }
+
+    fn environment_at(&self, rank: usize) -> Environment {
+        let e = &self.environments[rank];
+        Environment {
+            rank,
+            name: e.name.clone(),
+            section: e.section,
+        }
     }
 }
 
@@ -138,26 +163,45 @@ pub struct Place {
     pub uses: Vec<String>,
 }
 
-/// The place of a claim (`None` when `environment` or `role` is absent or invalid; a loaded
-/// catalogue has passed [`check`]).
-pub fn place(c: &Claim) -> Option<Place> {
+/// The place of a claim of `cat` (`None` when `environment` or `role` is absent or
+/// invalid; a loaded catalogue has passed [`check`]).
+pub fn place(cat: &Catalogue, c: &Claim) -> Option<Place> {
     Some(Place {
-        environment: Environment::parse(&c.environment.as_ref()?.value)?,
+        environment: cat.environment(&c.environment.as_ref()?.value)?,
         role: Role::parse(&c.role.as_ref()?.value)?,
         uses: c.uses.iter().map(|u| u.value.clone()).collect(),
     })
 }
 
-fn parse_fields(c: &Claim) -> Result<(Option<Environment>, Option<Role>), LoadError> {
+/// The error for an environment name the `[paper]` table does not list.
+fn unknown_environment(cat: &Catalogue, e: &super::source::Located) -> LoadError {
+    let names: Vec<&str> = cat.environments.iter().map(|x| x.name.as_str()).collect();
+    let at = cat
+        .paper
+        .as_ref()
+        .map_or(String::new(), |p| format!(" ({})", p.position));
+    let mut m = format!(
+        "unknown environment '{}': the [paper] table{at} lists {}",
+        e.value,
+        names.join(", ")
+    );
+    let near = super::lookup::closest(&e.value, names.iter().copied(), 3);
+    if !near.is_empty() {
+        m.push_str(&format!("; did you mean {}?", near.join(", ")));
+    }
+    e.error(m)
+}
+
+fn parse_fields(
+    cat: &Catalogue,
+    c: &Claim,
+) -> Result<(Option<Environment>, Option<Role>), LoadError> {
     let env = match &c.environment {
         None => None,
-        Some(e) => Some(Environment::parse(&e.value).ok_or_else(|| {
-            e.error(format!(
-                "unknown environment '{}' (one of {}, or \"Section N\" with N in 1..9 or A)",
-                e.value,
-                ENVIRONMENTS.join(", ")
-            ))
-        })?),
+        Some(e) => Some(
+            cat.environment(&e.value)
+                .ok_or_else(|| unknown_environment(cat, e))?,
+        ),
     };
     let role = match &c.role {
         None => None,
@@ -264,52 +308,52 @@ fn check_cycles(cat: &Catalogue, index: &BTreeMap<&str, usize>) -> Result<(), Lo
     Ok(())
 }
 
-/// Every environment has a statement claim, and the statements of the paper's
-/// environments come in the order in which the paper prints them.
+/// Every environment with claims has a statement claim (unless the `[paper]` table says
+/// why not, `no_statement`), and the first statements of the environments that are not
+/// sections come in the order of the catalogue's list.
 fn check_statements(
     cat: &Catalogue,
     fields: &[(Option<Environment>, Option<Role>)],
 ) -> Result<(), LoadError> {
     let mut first: BTreeMap<&Environment, usize> = BTreeMap::new();
     let mut stated: BTreeSet<&Environment> = BTreeSet::new();
-    let mut last_named: Option<(usize, usize)> = None;
+    let mut last: Option<&Environment> = None;
     for (j, (env, role)) in fields.iter().enumerate() {
         let Some(env) = env else { continue };
         first.entry(env).or_insert(j);
-        if *role != Some(Role::Statement) || !stated.insert(env) {
+        if *role != Some(Role::Statement) || !stated.insert(env) || env.section {
             continue;
         }
-        if let Environment::Named(rank) = env {
-            if let Some((prev_rank, _)) = last_named.filter(|(r, _)| r > rank) {
-                let at = cat.claims[j].environment.as_ref().expect("parsed");
-                return Err(at.error(format!(
-                    "the first statement of {} comes after that of {} in the catalogue, but the paper prints {} first (claims keep the paper's order)",
-                    ENVIRONMENTS[*rank], ENVIRONMENTS[prev_rank], ENVIRONMENTS[*rank]
-                )));
-            }
-            last_named = Some((*rank, j));
-        }
-    }
-    for (env, j) in first {
-        if !stated.contains(env) {
+        if let Some(prev) = last.filter(|p| p.rank > env.rank) {
             let at = cat.claims[j].environment.as_ref().expect("parsed");
             return Err(at.error(format!(
-                "{} has no claim with role = \"statement\"",
-                env.name()
+                "the first statement of {} comes after that of {} in the catalogue, but the paper prints {} first (claims keep the order of the [paper] table's environments)",
+                env.name, prev.name, env.name
+            )));
+        }
+        last = Some(env);
+    }
+    for (env, j) in first {
+        let excused = cat.environments[env.rank].no_statement.is_some();
+        if !stated.contains(env) && !excused {
+            let at = cat.claims[j].environment.as_ref().expect("parsed");
+            return Err(at.error(format!(
+                "{} has no claim with role = \"statement\" (or give the reason in the [paper] table: {{ name = \"{}\", no_statement = \"why\" }})",
+                env.name, env.name
             )));
         }
     }
     Ok(())
 }
 
-/// Validates `environment`, `role` and `uses` of every claim: known names, known ids in
-/// `uses`, no cycle, a statement claim in every environment, statements in the paper's
-/// order.  Errors point at the offending value (`file:line:col`).
+/// Validates `environment`, `role` and `uses` of every claim: environments the catalogue
+/// lists, known roles and ids in `uses`, no cycle, a statement claim in every environment
+/// (or the reason why not), statements in the paper's order.  Errors point at the offending value (`file:line:col`).
 pub fn check(cat: &Catalogue) -> Result<(), LoadError> {
     let fields: Vec<(Option<Environment>, Option<Role>)> = cat
         .claims
         .iter()
-        .map(parse_fields)
+        .map(|c| parse_fields(cat, c))
         .collect::<Result<_, _>>()?;
     let index: BTreeMap<&str, usize> = cat
         .claims
@@ -454,7 +498,15 @@ mod tests {
         )
     }
 
+    /// The `[paper]` table of the tests, after the claims (their lines stay put).
+    const PAPER: &str = "[paper]\ntitle = \"T\"\nauthors = [\"A\"]\nyear = 2000\nenvironments = [{ name = \"Section 2\", section = true }, { name = \"Section 4\", section = true }, \"Lemma 1\", \"Theorem 1\", { name = \"Remark\", no_statement = \"a remark states nothing\" }]\n";
+
     fn load(src: &str) -> Result<Catalogue, LoadError> {
+        load_plain(&format!("{src}{PAPER}"))
+    }
+
+    /// Without a `[paper]` table.
+    fn load_plain(src: &str) -> Result<Catalogue, LoadError> {
         load_sources(&[("t.toml".to_string(), src.to_string())], Registry::new())
     }
 
@@ -474,11 +526,13 @@ mod tests {
             )
             + &claim("c", "environment = \"Section 4\"\nrole = \"statement\"");
         let cat = load(&src).unwrap();
-        let p: Vec<Place> = cat.claims.iter().map(|c| place(c).unwrap()).collect();
-        assert_eq!(p[0].environment, Environment::Named(5));
+        let p: Vec<Place> = cat.claims.iter().map(|c| place(&cat, c).unwrap()).collect();
+        assert_eq!(p[0].environment, cat.environment("Lemma 1").unwrap());
+        assert_eq!(p[0].environment.rank, 2);
         assert_eq!(p[1].role, Role::ProofStep);
         assert_eq!(p[1].uses, vec!["a".to_string()]);
-        assert_eq!(p[2].environment, Environment::Section("4".into()));
+        assert_eq!(p[2].environment.name, "Section 4");
+        assert!(p[2].environment.section);
     }
 
     #[test]
@@ -488,7 +542,20 @@ mod tests {
             "environment = \"Proposition 7\"\nrole = \"statement\"",
         ));
         assert_eq!((e.file.as_str(), e.line, e.col), ("t.toml", 9, 15));
-        assert!(e.message.contains("unknown environment"), "{e}");
+        assert!(
+            e.message.contains("unknown environment 'Proposition 7'"),
+            "{e}"
+        );
+        assert!(e.message.contains("the [paper] table (t.toml:"), "{e}");
+        assert!(
+            e.message.contains("lists Section 2, Section 4, Lemma 1"),
+            "{e}"
+        );
+        let e = err(&claim(
+            "a",
+            "environment = \"Lemma 2\"\nrole = \"statement\"",
+        ));
+        assert!(e.message.ends_with("; did you mean Lemma 1?"), "{e}");
         let e = err(&claim("a", "environment = \"Section 2\"\nrole = \"lemma\""));
         assert_eq!((e.line, e.col), (10, 8));
         assert!(e.message.contains("unknown role 'lemma'"), "{e}");
@@ -535,6 +602,75 @@ mod tests {
             e.message.contains("Theorem 1 has no claim with role"),
             "{e}"
         );
+    }
+
+    #[test]
+    fn a_reason_stands_for_the_statement() {
+        // "Remark" says why it has no statement claim; "Theorem 1" does not
+        assert!(
+            load(&claim(
+                "a",
+                "environment = \"Remark\"\nrole = \"proof-step\""
+            ))
+            .is_ok()
+        );
+        let e = err(&claim(
+            "a",
+            "environment = \"Theorem 1\"\nrole = \"consequence\"",
+        ));
+        assert!(e.message.contains("no_statement = \"why\""), "{e}");
+    }
+
+    #[test]
+    fn without_a_paper_table_any_name_goes() {
+        let src = claim("a", "environment = \"Théorème B\"\nrole = \"statement\"")
+            + &claim("b", "environment = \"Lemma 9\"\nrole = \"statement\"");
+        let cat = load_plain(&src).unwrap();
+        assert!(cat.paper.is_none());
+        let names: Vec<String> = cat.all_environments().iter().map(|e| e.name()).collect();
+        assert_eq!(names, ["Théorème B", "Lemma 9"]);
+        assert_eq!(cat.environment("Théorème B").unwrap().slug(), "théorème_b");
+        // still, every environment needs a statement
+        let e = load_plain(&claim("a", "environment = \"X\"\nrole = \"proof-step\"")).unwrap_err();
+        assert!(e.message.contains("X has no claim with role"), "{e}");
+    }
+
+    #[test]
+    fn the_paper_table_is_checked() {
+        let src = claim("a", "environment = \"Lemma 1\"\nrole = \"statement\"");
+        let files = [
+            ("a.toml".to_string(), format!("{src}{PAPER}")),
+            ("b.toml".to_string(), PAPER.to_string()),
+        ];
+        let e = load_sources(&files, Registry::new()).unwrap_err();
+        assert!(
+            e.message
+                .contains("a second [paper] table (the first is at a.toml:"),
+            "{e}"
+        );
+        for (bad, says) in [
+            ("environments = []", "at least one name"),
+            ("environments = [\"Lemma 1\", \"Lemma 1\"]", "listed twice"),
+            (
+                "environments = [\"Lemma 1\", \"lemma-1\"]",
+                "share the report page 'lemma-1'",
+            ),
+            (
+                "environments = [{ name = \"L\", sections = true }]",
+                "unknown field 'sections'",
+            ),
+            ("environments = [3]", "is a name or a table"),
+            ("environments = [\" \"]", "empty name"),
+        ] {
+            let paper = format!("[paper]\ntitle = \"T\"\nauthors = []\nyear = 1\n{bad}\n");
+            let e = load_plain(&format!("{src}{paper}")).unwrap_err();
+            assert!(e.message.contains(says), "{bad}: {e}");
+        }
+        let e = load_plain(&format!(
+            "{src}[paper]\ntitle = \"T\"\nyear = 1\nenvironments = [\"Lemma 1\"]\n"
+        ))
+        .unwrap_err();
+        assert!(e.message.contains("authors"), "{e}");
     }
 
     #[test]
