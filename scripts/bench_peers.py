@@ -3,6 +3,9 @@
 process, and writes the section `## Jacobi elliptic functions` of reports/performance.md.
 
 Usage:  python3 scripts/bench_peers.py [--quick]
+        python3 scripts/bench_peers.py --f64 [--quick]   (sn, cn, dn in f64 against GSL
+        only, three separate interleaved runs with their medians and ratios; writes the
+        section `## f64 against GSL, a new modulus per call`)
         python3 scripts/bench_peers.py --toolkit [--quick]   (the elliptic integrals:
         E(k), E(phi, k), Pi(n, phi, k) against GSL, theta_3 and E at 256 bits against
         mpmath; writes the section `## Elliptic integrals and theta functions`)
@@ -221,9 +224,67 @@ def replace_section(head, section):
     print(section)
 
 
+F64_JOBS = [("eulertop", "fresh", ("fresh",)), ("GSL", "fresh", ("fresh",)),
+            ("eulertop", "fixed", ()), ("GSL", "fixed", ("fixed",)),
+            ("eulertop", "fixed 0.95", ("k=0.95",)), ("GSL", "fixed 0.95", ("fixed", "0.95"))]
+
+
+def f64_vs_gsl():
+    """sn+cn+dn in f64, eulertop against GSL on the same batch: RUNS separate runs, each
+    ROUNDS rounds of the six jobs interleaved (eulertop and GSL alternating); per run the
+    median over its batches of each job and the ratios eulertop / GSL; writes the section
+    `## f64 against GSL, a new modulus per call`."""
+    subprocess.run(["cargo", "build", "--release", "--quiet", "--example", "bench_batch"],
+                   cwd=ROOT, check=True)
+    exe = gsl_harness()
+    if not exe:
+        raise SystemExit("GSL harness did not build")
+    runs = []
+    for _ in range(3):
+        samples = {}
+        for _ in range(ROUNDS):
+            for tool, mode, flags in F64_JOBS:
+                if tool == "GSL":
+                    ts = gsl(exe, *flags)
+                else:
+                    ts = rust(53, N_F64, *flags)
+                samples.setdefault((tool, mode), []).extend(ts)
+        runs.append({key: statistics.median(ts) for key, ts in samples.items()})
+    load = os.getloadavg()[0]
+    lines = [
+        "## f64 against GSL, a new modulus per call",
+        "",
+        "sn + cn + dn, the batch of the section above (n = %d): *fresh* a new modulus" % N_F64,
+        "k_i = 0.05 + 0.94·frac(i·φ) for every call, *fixed* k = 0.8 (or 0.95) for the batch.",
+        "Three runs; in each, %d rounds of the six jobs, eulertop and GSL alternating, %d" % (ROUNDS, REPEATS),
+        "batches per job and round; per run the median time per evaluation and the ratio",
+        "eulertop / GSL.  GSL %s `gsl_sf_elljac_e` (scripts/bench_gsl.c).  Load average at the" % gsl_version(),
+        "end: %.2f on 2 cores.  Reproduce: `python3 scripts/bench_peers.py --f64`" % load,
+        "(writes this section).",
+        "",
+        "| run | fresh: eulertop / GSL | ratio | fixed k = 0.8: eulertop / GSL | ratio | fixed k = 0.95: eulertop / GSL | ratio |",
+        "|---|---|---|---|---|---|---|",
+    ]
+    for i, r in enumerate(runs + [None]):
+        if r is None:
+            r = {key: statistics.median(run[key] for run in runs) for key in runs[0]}
+            label = "median of the runs"
+        else:
+            label = str(i + 1)
+        cells = []
+        for mode in ("fresh", "fixed", "fixed 0.95"):
+            e, g = r[("eulertop", mode)], r[("GSL", mode)]
+            cells += ["%s / %s" % (fmt(e), fmt(g)), "%.2f" % (e / g)]
+        lines.append("| %s | %s |" % (label, " | ".join(cells)))
+    lines.append("")
+    replace_section("## f64 against GSL, a new modulus per call", "\n".join(lines))
+
+
 def main():
     if "--toolkit" in sys.argv:
         return toolkit()
+    if "--f64" in sys.argv:
+        return f64_vs_gsl()
     subprocess.run(["cargo", "build", "--release", "--quiet", "--example", "bench_batch"],
                    cwd=ROOT, check=True)
     exe = gsl_harness()
