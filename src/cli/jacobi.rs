@@ -242,7 +242,7 @@ fn line_values<R: Real>(
     lno: usize,
     digits: usize,
     opts: &Options,
-) -> Result<(String, Option<(f64, JacobiFn)>), CliError> {
+) -> Result<(String, Option<Worst>), CliError> {
     let fields: Vec<&str> = t.split_whitespace().take(4).collect();
     let mut ill = None;
     let (want, shape) = match (opts.complex, opts.parameter) {
@@ -308,6 +308,9 @@ fn line_values<R: Real>(
     Ok((values.join(" "), ill))
 }
 
+/// The largest relative condition number `κ_u` of a line's quotients, with its function.
+type Worst = (f64, JacobiFn);
+
 /// The requested functions of a real argument (sn, cn, dn computed once, the others
 /// from them) and, when a quotient with a denominator is among them, the largest of
 /// their relative condition numbers `κ_u` ([`JacobiFn::condition`]) with its function.
@@ -315,7 +318,7 @@ fn real_values<R: Real>(
     u: &R,
     k: &R,
     opts: &Options,
-) -> Result<(Vec<R>, Option<(f64, JacobiFn)>), SpecialError> {
+) -> Result<(Vec<R>, Option<Worst>), SpecialError> {
     let fs = &opts.functions;
     let quotients: Vec<JacobiFn> = fs
         .iter()
@@ -362,7 +365,7 @@ struct IllConditioned {
 
 impl IllConditioned {
     /// Counts line `lno` if its worst `κ_u` reaches `bound`.
-    fn note(&mut self, lno: usize, worst: Option<(f64, JacobiFn)>, bound: f64) {
+    fn note(&mut self, lno: usize, worst: Option<Worst>, bound: f64) {
         if let Some((kappa, f)) = worst.filter(|w| w.0 >= bound) {
             self.lines += 1;
             self.first.get_or_insert((lno, f, kappa));
