@@ -192,11 +192,12 @@ fn main() {
     println!("  R_F, R_D, R_J, arranged so that no two terms cancel (DLMF 19.25.1, 19.25.10;");
     println!("  for n < 0 the transformation A&S 17.7.15).  The duplication terms of R_D and");
     println!("  R_J are summed with their rounding errors collected (two-sums) and added to");
-    println!("  the series part error-free, and k'² = 1 − k² is rounded once, so E and E(φ)");
-    println!("  stay below 2 ε.  Π, Z and Λ₀ still reach 2.2–3.4 ε: each is a product of");
-    println!("  several rounded factors with R_F, R_J (for n < 0 three such terms, each of");
-    println!("  four or five roundings) and their R_F keeps its plain f64 series; the means");
-    println!("  stay below 1 ε.  Near the singularities (k → 1 with φ → π/2, n sin²φ → 1) the");
+    println!("  the series part error-free, the last step of R_F, (1 + s)/√a, is rounded");
+    println!("  about once, and k'² = 1 − k² is rounded once, so E and E(φ) stay below 2 ε.");
+    println!("  Π, Z and Λ₀ still reach 2.2–3.4 ε: each is a product of several rounded");
+    println!("  factors with R_F, R_J (for n < 0 three such terms, each of four or five");
+    println!("  roundings; Z and Λ₀ by their own routes); the means stay below 1 ε.  Near the");
+    println!("  singularities (k → 1 with φ → π/2, n sin²φ → 1) the");
     println!("  tables include k = 1 − 2^-40 and n sin²φ up to 0.994 without a larger error.");
     println!("* θ_j in f64 for q > 1/4 is summed after Jacobi's imaginary transformation as");
     println!("  Gaussian sums exp(−x²/(πt)), t = ln(1/q)/π; the rounding of exponents of size");

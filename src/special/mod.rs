@@ -86,9 +86,10 @@
 //!   as a sum of terms of one sign (DLMF 19.25.1, 19.25.10, 19.25.14; for `n < 0`
 //!   Abramowitz–Stegun 17.7.15).  In fixed precision (no guard bits) the duplication
 //!   terms of `R_D` and `R_J` are summed with their rounding errors collected
-//!   (two-sums) and added to the series part error-free, and `k'² = 1 − k²` is rounded
-//!   once; that took the worst `f64` errors of `E` and `E(φ)` from 2.3–2.8 ε to 1.4–1.7 ε
-//!   (`reports/accuracy.md`).  [`ToolkitFn`] names them for callers that choose at
+//!   (two-sums) and added to the series part error-free, the last step of `R_F`,
+//!   `(1 + s)/√a`, is rounded about once, and `k'² = 1 − k²` is rounded once; that took
+//!   the worst `f64` errors of `E` and `E(φ)` from 2.3–2.8 ε to 1.4–1.8 ε and those of
+//!   `Π` from 2.7–3.1 ε to 2.2–2.9 ε (`reports/accuracy.md`).  [`ToolkitFn`] names them for callers that choose at
 //!   run time (the expression language).
 //! * **Nome and θ_j** (module `jtheta`): Jacobi's series for `q` after Landen steps;
 //!   the theta series for `q ≤ 1/4`, Gaussian sums after Jacobi's imaginary
