@@ -43,6 +43,12 @@ REPEATS = 11 if QUICK else 21
 N_F64 = 20000
 N_MP = {1024: 200, 4096: 40}
 N_MPMATH = 10
+# --f64 and --toolkit (f64): short batches (0.2 ms), many of them.  On a loaded shared machine the
+# scheduler takes the CPU away for 4 ms at a time: in one run with N_F64 it hit about
+# half of eulertop's 2 ms fresh-modulus batches (batch times 100, 300, 500, 700 ns per
+# evaluation), which moved their median to 221-284 ns.  With short batches an
+# interrupted batch is an outlier that the median drops.
+N_SHORT, REPEATS_SHORT = 2000, 201
 
 PY_SCIPY = """
 import time, numpy as np
@@ -174,9 +180,12 @@ def toolkit():
     import mpmath
     jobs = []
     for label, name, g in TOOLKIT:
-        jobs.append((("eulertop", label, "f64"), lambda n=name: rust(53, N_F64, "fresh", "fn=" + n)))
+        # short batches, as for --f64 (a batch the scheduler interrupts is an outlier)
+        jobs.append((("eulertop", label, "f64"),
+                     lambda n=name: rust(53, N_SHORT, "fresh", "fn=" + n, reps=REPEATS_SHORT)))
         if exe and g:
-            jobs.append((("GSL", label, "f64"), lambda g=g: gsl(exe, "fresh", "0.8", g)))
+            jobs.append((("GSL", label, "f64"),
+                         lambda g=g: gsl(exe, "fresh", "0.8", g, n=N_SHORT, reps=REPEATS_SHORT)))
     for label, name in [("E(φ, k)", "ellipeinc"), ("θ₃(z, q)", "jtheta")]:
         jobs.append((("eulertop", label, "256 bits"), lambda n=name: rust(256, 200, "fresh", "fn=" + n)))
         jobs.append((("mpmath", label, "256 bits"),
@@ -189,7 +198,10 @@ def toolkit():
     lines = [
         "## Elliptic integrals and theta functions",
         "",
-        "A new modulus for every call: u_i = -10 + 20(i+1/2)/n, k_i = 0.05 + 0.94·frac(i·φ);",
+        "A new modulus for every call: u_i = -10 + 20(i+1/2)/n, k_i = 0.05 + 0.94·frac(i·φ),",
+        "n = %d in f64 (%d batches per round: short, so that a batch the scheduler" % (N_SHORT, REPEATS_SHORT),
+        "interrupts is an outlier the median drops; with n = %d under load every batch" % N_F64,
+        "lost 4 ms ticks and GSL's E(k) read 445 ns instead of 237 ns);",
         "E(k_i), E(u_i/4, k_i), Π(0.3, u_i/8, k_i) (GSL: `gsl_sf_ellint_Ecomp`, `_E`, `_P`",
         "with its characteristic −0.3) and θ₃(u_i, k_i/2).  Wall-clock time per evaluation,",
         "median over %d interleaved rounds; ratio: eulertop's time / the peer's.  GSL %s," % (ROUNDS, gsl_version()),
@@ -225,12 +237,6 @@ def replace_section(head, section):
     print(section)
 
 
-# --f64: short batches (0.2 ms), many of them.  On a loaded shared machine the
-# scheduler takes the CPU away for 4 ms at a time: in one run with N_F64 it hit about
-# half of eulertop's 2 ms fresh-modulus batches (batch times 100, 300, 500, 700 ns per
-# evaluation), which moved their median to 221-284 ns.  With short batches an
-# interrupted batch is an outlier that the median drops.
-N_SHORT, REPEATS_SHORT = 2000, 201
 F64_JOBS = [("eulertop", "fresh", ("fresh",)), ("GSL", "fresh", ("fresh",)),
             ("eulertop", "fixed", ()), ("GSL", "fixed", ("fixed",)),
             ("eulertop", "fixed 0.95", ("k=0.95",)), ("GSL", "fixed 0.95", ("fixed", "0.95"))]
