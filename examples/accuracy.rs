@@ -168,6 +168,7 @@ fn main() {
         &by_f,
     );
     twelve();
+    near_poles();
     dense_sweep();
     huge_sweep();
     toolkit_mpmath();
@@ -188,11 +189,16 @@ fn main() {
     println!("  k' = 1 − 5·10^-21, evaluated by the imaginary-argument theta series, whose");
     println!("  nome (about 10^-21) makes the tiny cn, dn exact to rounding.");
     println!("* Elliptic toolkit, f64: E, E(φ), Π, Z, Λ₀ are sums and products of Carlson's");
-    println!("  R_F, R_D, R_J (each a few roundings), arranged so that no two terms cancel");
-    println!("  (DLMF 19.25.1, 19.25.10; for n < 0 the transformation A&S 17.7.15), so the");
-    println!("  worst errors are 2–4.2 ε rather than the 1–2 ε of K and F; the means stay below");
-    println!("  1 ε.  Near the singularities (k → 1 with φ → π/2, n sin²φ → 1) the tables");
-    println!("  include k = 1 − 2^-40 and n sin²φ up to 0.994 without a larger error.");
+    println!("  R_F, R_D, R_J, arranged so that no two terms cancel (DLMF 19.25.1, 19.25.10;");
+    println!("  for n < 0 the transformation A&S 17.7.15).  The duplication terms of R_D and");
+    println!("  R_J are summed with their rounding errors collected (two-sums) and added to");
+    println!("  the series part error-free, the last step of R_F, (1 + s)/√a, is rounded");
+    println!("  about once, and k'² = 1 − k² is rounded once, so E and E(φ) stay below 2 ε.");
+    println!("  Π, Z and Λ₀ still reach 2.2–3.4 ε: each is a product of several rounded");
+    println!("  factors with R_F, R_J (for n < 0 three such terms, each of four or five");
+    println!("  roundings; Z and Λ₀ by their own routes); the means stay below 1 ε.  Near the");
+    println!("  singularities (k → 1 with φ → π/2, n sin²φ → 1) the");
+    println!("  tables include k = 1 − 2^-40 and n sin²φ up to 0.994 without a larger error.");
     println!("* θ_j in f64 for q > 1/4 is summed after Jacobi's imaginary transformation as");
     println!("  Gaussian sums exp(−x²/(πt)), t = ln(1/q)/π; the rounding of exponents of size");
     println!("  x²/(πt) (about 20 at q = 0.9, where θ_j(z) falls to 10^-8) gives the 15 ε");
@@ -240,6 +246,79 @@ fn twelve() {
         &precs,
         &t,
     );
+}
+
+/// The quotients with a tiny denominator against tests/data/jacobi_ref_pole.csv (40
+/// digits, with the relative condition number `κ_u` from mpmath): per point, the
+/// functions whose denominator is the smallest of sn, cn, dn, their largest `κ_u` and
+/// their worst relative error in f64 and at 64 bits.
+fn near_poles() {
+    let rows = table("jacobi_ref_pole.csv");
+    println!(
+        "## Next to the poles: quotients with a tiny denominator (relative error / ε_N)
+"
+    );
+    println!("tests/data/jacobi_ref_pole.csv (scripts/gen_jacobi_pole_ref.py): u the double");
+    println!("nearest a zero of sn, cn or dn (or a little away from it); the functions listed");
+    println!("have that denominator.  κ_u = |u f'(u)/f(u)| is their largest relative condition");
+    println!("number with respect to u (`JacobiFn::condition`): a change of u in its last bit");
+    println!("moves the exact value by about κ_u ε.  `eulertop jacobi` warns on standard error");
+    println!("where κ_u ≥ 2^⌈N/2⌉ (2^27 in f64).\n");
+    println!("| point | u | denominator | functions | κ_u | f64 | 64 bits |");
+    println!("|---|---|---|---|---|---|---|");
+    for r in &rows {
+        let (v, u): (f64, f64) = (r[1].parse().expect("value"), r[2].parse().expect("u"));
+        let value = |f: JacobiFn| r[4 + 2 * f as usize].clone();
+        let small = [JacobiFn::Sn, JacobiFn::Cn, JacobiFn::Dn]
+            .into_iter()
+            .min_by(|a, b| {
+                let x = |f: JacobiFn| mp(&value(f), 64).abs().to_f64();
+                x(*a).total_cmp(&x(*b))
+            })
+            .expect("three");
+        let which = small.parts().0;
+        let fs: Vec<JacobiFn> = JacobiFn::ALL
+            .into_iter()
+            .filter(|f| f.parts().1 == which)
+            .collect();
+        let kappa = fs
+            .iter()
+            .map(|f| r[5 + 2 * *f as usize].parse::<f64>().expect("kappa"))
+            .fold(0.0, f64::max);
+        let mut worst = [0f64; 2];
+        for f in &fs {
+            for (j, n) in [53u32, 64].into_iter().enumerate() {
+                let got = if n == 53 {
+                    let x = if r[0] == "k" {
+                        jacobi(*f, &u, &v)
+                    } else {
+                        jacobi_m(*f, &u, &v)
+                    };
+                    Float::with_val(53, x.expect("in domain"))
+                } else {
+                    let (v, u) = (mp(&r[1], n), mp(&r[2], n));
+                    let x = if r[0] == "k" {
+                        jacobi(*f, &u, &v)
+                    } else {
+                        jacobi_m(*f, &u, &v)
+                    };
+                    x.expect("in domain")
+                };
+                worst[j] = worst[j].max(err(&got, &value(*f), n, true));
+            }
+        }
+        let names: Vec<&str> = fs.iter().map(|f| f.name()).collect();
+        println!(
+            "| {} = {v} | {u} | {} = {:.2e} | {} | {kappa:.2e} | {:.2} | {:.2} |",
+            r[0],
+            small.name(),
+            mp(&value(small), 64).to_f64(),
+            names.join(" "),
+            worst[0],
+            worst[1]
+        );
+    }
+    println!();
 }
 
 /// Huge arguments: 600 points u = ±K·2^e·(1+f)/2, e from 8 to 49.9, f64 against the

@@ -3,6 +3,9 @@
 process, and writes the section `## Jacobi elliptic functions` of reports/performance.md.
 
 Usage:  python3 scripts/bench_peers.py [--quick]
+        python3 scripts/bench_peers.py --f64 [--quick]   (sn, cn, dn in f64 against GSL
+        only, three separate interleaved runs with their medians and ratios; writes the
+        section `## f64 against GSL, a new modulus per call`)
         python3 scripts/bench_peers.py --toolkit [--quick]   (the elliptic integrals:
         E(k), E(phi, k), Pi(n, phi, k) against GSL, theta_3 and E at 256 bits against
         mpmath; writes the section `## Elliptic integrals and theta functions`)
@@ -40,6 +43,12 @@ REPEATS = 11 if QUICK else 21
 N_F64 = 20000
 N_MP = {1024: 200, 4096: 40}
 N_MPMATH = 10
+# --f64 and --toolkit (f64): short batches (0.2 ms), many of them.  On a loaded shared machine the
+# scheduler takes the CPU away for 4 ms at a time: in one run with N_F64 it hit about
+# half of eulertop's 2 ms fresh-modulus batches (batch times 100, 300, 500, 700 ns per
+# evaluation), which moved their median to 221-284 ns.  With short batches an
+# interrupted batch is an outlier that the median drops.
+N_SHORT, REPEATS_SHORT = 2000, 201
 
 PY_SCIPY = """
 import time, numpy as np
@@ -110,9 +119,10 @@ def py(code):
     return tuple(float(x) for x in out.split())
 
 
-def rust(bits, n, *flags):
+def rust(bits, n, *flags, reps=None):
     exe = os.path.join(ROOT, "target", "release", "examples", "bench_batch")
-    out = subprocess.run([exe, str(bits), str(n), str(REPEATS), "all", *flags], check=True,
+    reps = reps or REPEATS
+    out = subprocess.run([exe, str(bits), str(n), str(reps), "all", *flags], check=True,
                          capture_output=True, text=True).stdout
     return tuple(float(x) for x in out.split())
 
@@ -128,8 +138,8 @@ def gsl_harness():
     return exe if r.returncode == 0 else None
 
 
-def gsl(exe, mode, *k):
-    out = subprocess.run([exe, str(N_F64), str(REPEATS), mode, *k], check=True,
+def gsl(exe, mode, *k, n=N_F64, reps=None):
+    out = subprocess.run([exe, str(n), str(reps or REPEATS), mode, *k], check=True,
                          capture_output=True, text=True).stdout
     return tuple(float(x) for x in out.split())
 
@@ -170,9 +180,12 @@ def toolkit():
     import mpmath
     jobs = []
     for label, name, g in TOOLKIT:
-        jobs.append((("eulertop", label, "f64"), lambda n=name: rust(53, N_F64, "fresh", "fn=" + n)))
+        # short batches, as for --f64 (a batch the scheduler interrupts is an outlier)
+        jobs.append((("eulertop", label, "f64"),
+                     lambda n=name: rust(53, N_SHORT, "fresh", "fn=" + n, reps=REPEATS_SHORT)))
         if exe and g:
-            jobs.append((("GSL", label, "f64"), lambda g=g: gsl(exe, "fresh", "0.8", g)))
+            jobs.append((("GSL", label, "f64"),
+                         lambda g=g: gsl(exe, "fresh", "0.8", g, n=N_SHORT, reps=REPEATS_SHORT)))
     for label, name in [("E(φ, k)", "ellipeinc"), ("θ₃(z, q)", "jtheta")]:
         jobs.append((("eulertop", label, "256 bits"), lambda n=name: rust(256, 200, "fresh", "fn=" + n)))
         jobs.append((("mpmath", label, "256 bits"),
@@ -185,7 +198,10 @@ def toolkit():
     lines = [
         "## Elliptic integrals and theta functions",
         "",
-        "A new modulus for every call: u_i = -10 + 20(i+1/2)/n, k_i = 0.05 + 0.94·frac(i·φ);",
+        "A new modulus for every call: u_i = -10 + 20(i+1/2)/n, k_i = 0.05 + 0.94·frac(i·φ),",
+        "n = %d in f64 (%d batches per round: short, so that a batch the scheduler" % (N_SHORT, REPEATS_SHORT),
+        "interrupts is an outlier the median drops; with n = %d GSL's E(k) read 445 ns" % N_F64,
+        "on this loaded machine, with short batches 237 ns);",
         "E(k_i), E(u_i/4, k_i), Π(0.3, u_i/8, k_i) (GSL: `gsl_sf_ellint_Ecomp`, `_E`, `_P`",
         "with its characteristic −0.3) and θ₃(u_i, k_i/2).  Wall-clock time per evaluation,",
         "median over %d interleaved rounds; ratio: eulertop's time / the peer's.  GSL %s," % (ROUNDS, gsl_version()),
@@ -221,9 +237,68 @@ def replace_section(head, section):
     print(section)
 
 
+F64_JOBS = [("eulertop", "fresh", ("fresh",)), ("GSL", "fresh", ("fresh",)),
+            ("eulertop", "fixed", ()), ("GSL", "fixed", ("fixed",)),
+            ("eulertop", "fixed 0.95", ("k=0.95",)), ("GSL", "fixed 0.95", ("fixed", "0.95"))]
+
+
+def f64_vs_gsl():
+    """sn+cn+dn in f64, eulertop against GSL on the same batch: RUNS separate runs, each
+    ROUNDS rounds of the six jobs interleaved (eulertop and GSL alternating); per run the
+    median over its batches of each job and the ratios eulertop / GSL; writes the section
+    `## f64 against GSL, a new modulus per call`."""
+    subprocess.run(["cargo", "build", "--release", "--quiet", "--example", "bench_batch"],
+                   cwd=ROOT, check=True)
+    exe = gsl_harness()
+    if not exe:
+        raise SystemExit("GSL harness did not build")
+    runs = []
+    for _ in range(3):
+        samples = {}
+        for _ in range(ROUNDS):
+            for tool, mode, flags in F64_JOBS:
+                if tool == "GSL":
+                    ts = gsl(exe, *flags, n=N_SHORT, reps=REPEATS_SHORT)
+                else:
+                    ts = rust(53, N_SHORT, *flags, reps=REPEATS_SHORT)
+                samples.setdefault((tool, mode), []).extend(ts)
+        runs.append({key: statistics.median(ts) for key, ts in samples.items()})
+    load = os.getloadavg()[0]
+    lines = [
+        "## f64 against GSL, a new modulus per call",
+        "",
+        "sn + cn + dn, the batch of the section above with n = %d (short batches of" % N_SHORT,
+        "about 0.2 ms, so that a batch the scheduler interrupts is an outlier the median",
+        "drops): *fresh* a new modulus k_i = 0.05 + 0.94·frac(i·φ) for every call, *fixed*",
+        "k = 0.8 (or 0.95) for the batch.  Three runs; in each, %d rounds of the six jobs," % ROUNDS,
+        "eulertop and GSL alternating, %d batches per job and round; per run the median" % REPEATS_SHORT,
+        "time per evaluation and the ratio eulertop / GSL.  GSL %s `gsl_sf_elljac_e`" % gsl_version(),
+        "(scripts/bench_gsl.c).  Load average at the end: %.2f on 2 cores.  Reproduce:" % load,
+        "`python3 scripts/bench_peers.py --f64` (writes this section).",
+        "",
+        "| run | fresh: eulertop / GSL | ratio | fixed k = 0.8: eulertop / GSL | ratio | fixed k = 0.95: eulertop / GSL | ratio |",
+        "|---|---|---|---|---|---|---|",
+    ]
+    for i, r in enumerate(runs + [None]):
+        if r is None:
+            r = {key: statistics.median(run[key] for run in runs) for key in runs[0]}
+            label = "median of the runs"
+        else:
+            label = str(i + 1)
+        cells = []
+        for mode in ("fresh", "fixed", "fixed 0.95"):
+            e, g = r[("eulertop", mode)], r[("GSL", mode)]
+            cells += ["%s / %s" % (fmt(e), fmt(g)), "%.2f" % (e / g)]
+        lines.append("| %s | %s |" % (label, " | ".join(cells)))
+    lines.append("")
+    replace_section("## f64 against GSL, a new modulus per call", "\n".join(lines))
+
+
 def main():
     if "--toolkit" in sys.argv:
         return toolkit()
+    if "--f64" in sys.argv:
+        return f64_vs_gsl()
     subprocess.run(["cargo", "build", "--release", "--quiet", "--example", "bench_batch"],
                    cwd=ROOT, check=True)
     exe = gsl_harness()

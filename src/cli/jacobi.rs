@@ -14,6 +14,13 @@
 //! to 1 without being 1, an out-of-domain modulus or a pole stops with
 //! `eulertop: <stdin>:LINE:COL: …` (the offending text cut to 40 characters, control
 //! characters escaped) on standard error and exit status 2.
+//!
+//! Next to a pole of a quotient (real argument) the value depends on the last bits of
+//! `u`: where a requested quotient's relative condition number
+//! `κ_u = |u f'(u)/f(u)|` ([`JacobiFn::condition`]) reaches `2^⌈N/2⌉` at `N` bits (at
+//! least half of the result's bits then move with the rounding of `u`), the run ends
+//! with one warning line on standard error (how many lines, the first of them, its
+//! function and `κ_u`); the values are printed as always and the exit status is 0.
 
 use super::CliError;
 use crate::numbers::{Cplx, Real};
@@ -186,7 +193,8 @@ fn check_not_rounded_to_one<R: Real>(
 }
 
 /// Reads all lines from `input` and writes the results, generically over the real type
-/// whose precision `proto` carries.
+/// whose precision `proto` carries; at the end, the warning about ill-conditioned
+/// quotients (see the module documentation) on standard error, if any.
 pub fn process<R: Real>(
     mut input: impl BufRead,
     out: &mut impl Write,
@@ -195,6 +203,9 @@ pub fn process<R: Real>(
     opts: &Options,
 ) -> Result<i32, CliError> {
     let io = super::write_error("standard output");
+    let bits = proto.precision().unwrap_or(53);
+    let bound = 2f64.powi(bits.div_ceil(2).min(1023) as i32);
+    let mut ill = IllConditioned::default();
     let mut buf = Vec::new();
     let mut lno = 0usize;
     while {
@@ -213,10 +224,14 @@ pub fn process<R: Real>(
         if t.is_empty() || t.starts_with('#') {
             continue;
         }
-        let text = line_values(&proto, t, lno, digits, opts)?;
+        let (text, worst) = line_values(&proto, t, lno, digits, opts)?;
+        ill.note(lno, worst, bound);
         writeln!(out, "{text}").map_err(&io)?;
     }
     out.flush().map_err(&io)?;
+    if let Some(w) = ill.warning(bits) {
+        eprintln!("eulertop: {w}");
+    }
     Ok(0)
 }
 
@@ -227,8 +242,9 @@ fn line_values<R: Real>(
     lno: usize,
     digits: usize,
     opts: &Options,
-) -> Result<String, CliError> {
+) -> Result<(String, Option<Worst>), CliError> {
     let fields: Vec<&str> = t.split_whitespace().take(4).collect();
+    let mut ill = None;
     let (want, shape) = match (opts.complex, opts.parameter) {
         (true, true) => (3, "re(u) im(u) m"),
         (true, false) => (3, "re(u) im(u) k"),
@@ -285,14 +301,85 @@ fn line_values<R: Real>(
         };
         let k = number(proto, fields[1], second, &pos(1))?;
         check_not_rounded_to_one(&k, fields[1], second, &pos(1))?;
-        // sn, cn, dn once per line, the requested functions from them
-        let values = if opts.parameter {
-            jacobi_m_set(&opts.functions, &u, &k)
-        } else {
-            jacobi_set(&opts.functions, &u, &k)
-        };
-        let values = values.map_err(err)?;
+        let (values, worst) = real_values(&u, &k, opts).map_err(err)?;
+        ill = worst;
         values.iter().map(|x| x.to_decimal(digits)).collect()
     };
-    Ok(values.join(" "))
+    Ok((values.join(" "), ill))
+}
+
+/// The largest relative condition number `κ_u` of a line's quotients, with its function.
+type Worst = (f64, JacobiFn);
+
+/// The requested functions of a real argument (sn, cn, dn computed once, the others
+/// from them) and, when a quotient with a denominator is among them, the largest of
+/// their relative condition numbers `κ_u` ([`JacobiFn::condition`]) with its function.
+fn real_values<R: Real>(
+    u: &R,
+    k: &R,
+    opts: &Options,
+) -> Result<(Vec<R>, Option<Worst>), SpecialError> {
+    let fs = &opts.functions;
+    let quotients: Vec<JacobiFn> = fs
+        .iter()
+        .copied()
+        .filter(|f| f.parts().1.is_some())
+        .collect();
+    if quotients.is_empty() {
+        let values = if opts.parameter {
+            jacobi_m_set(fs, u, k)?
+        } else {
+            jacobi_set(fs, u, k)?
+        };
+        return Ok((values, None));
+    }
+    // sn, cn, dn along with the requested functions, from the same evaluation
+    let mut all = fs.clone();
+    all.extend([JacobiFn::Sn, JacobiFn::Cn, JacobiFn::Dn]);
+    let mut values = if opts.parameter {
+        jacobi_m_set(&all, u, k)?
+    } else {
+        jacobi_set(&all, u, k)?
+    };
+    let (s, c, d) = (
+        &values[fs.len()],
+        &values[fs.len() + 1],
+        &values[fs.len() + 2],
+    );
+    let m = if opts.parameter { k.clone() } else { k.sqr() };
+    let worst = quotients
+        .iter()
+        .map(|f| (f.condition(u, &m, (s, c, d)).to_f64(), *f))
+        .max_by(|a, b| a.0.total_cmp(&b.0));
+    values.truncate(fs.len());
+    Ok((values, worst))
+}
+
+/// Lines whose quotients are ill-conditioned (`κ_u ≥ 2^⌈N/2⌉`): how many, and the
+/// first of them (line, function, `κ_u`).
+#[derive(Default)]
+struct IllConditioned {
+    lines: usize,
+    first: Option<(usize, JacobiFn, f64)>,
+}
+
+impl IllConditioned {
+    /// Counts line `lno` if its worst `κ_u` reaches `bound`.
+    fn note(&mut self, lno: usize, worst: Option<Worst>, bound: f64) {
+        if let Some((kappa, f)) = worst.filter(|w| w.0 >= bound) {
+            self.lines += 1;
+            self.first.get_or_insert((lno, f, kappa));
+        }
+    }
+
+    /// The one-line warning (without the `eulertop: ` prefix), if any line was counted.
+    fn warning(&self, bits: u32) -> Option<String> {
+        let (lno, f, kappa) = self.first?;
+        let half = bits.div_ceil(2);
+        Some(format!(
+            "warning: {} line(s) evaluate a quotient next to its pole, where its relative condition number κ_u = |u f'(u)/f(u)| reaches 2^{half} or more (first: <stdin>:{lno}, {} with κ_u = {kappa:.3e}): there a change of u in its last bit moves the value by about κ_u units of its last bit",
+            self.lines,
+            f.name()
+        ))
+    }
 }

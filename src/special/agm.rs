@@ -1,5 +1,6 @@
 //! Complete elliptic integrals of the first kind by the arithmetic–geometric mean.
 
+use super::dd::{Dd, two_sum, with_value};
 use super::{GUARD, SpecialError, check_modulus_below_one};
 use crate::numbers::Real;
 
@@ -31,6 +32,19 @@ pub(crate) fn agm<R: Real>(a: &R, b: &R) -> Result<R, SpecialError> {
 pub(crate) fn complementary<R: Real>(k: &R) -> R {
     let one = k.one();
     ((one.clone() - k.clone()) * (one + k.clone())).sqrt()
+}
+
+/// `k'² = 1 − k²`: for the fixed-precision types (`Real::FIXED`, no guard bits) from
+/// `k²` as a double-double, so that the result is rounded once; otherwise
+/// `(1 − k)(1 + k)` (two roundings at the working precision, which has guard bits).
+pub(crate) fn complementary_sqr<R: Real>(k: &R) -> R {
+    let one = k.one();
+    if !R::FIXED {
+        return (one.clone() - k.clone()) * (one + k.clone());
+    }
+    let k2 = Dd::from(k.clone()).sqr();
+    let (s, e) = two_sum(1.0, -k2.v());
+    with_value(&(one - k2.hi.clone()), s) + k.from_f64(e - k2.lo)
 }
 
 /// The complete elliptic integral of the first kind `K(k)`, modulus `k` (not `m = k²`).

@@ -20,7 +20,10 @@ use crate::numbers::Real;
 ///    (DLMF 22.2.4), [`Bottom::Imaginary`] above (DLMF Table 22.6.1), with per-modulus
 ///    data in double-double (module `theta`);
 /// 5. multi-precision: the descending Landen chain down to `κ_N⁴ < ε` and
-///    [`Bottom::Sine`] (DLMF 22.7.1–3, 22.10.4–6) with guard bits.
+///    [`Bottom::Sine`] (DLMF 22.7.1–3, 22.10.4–6) with guard bits; when the modulus
+///    had to be transformed (a parameter, `k > 1`) and the result lies next to a zero
+///    of sn, cn or dn, again with the bits that the rounded `κ` and `f·u` cost there
+///    ([`lost_bits`]).
 pub(crate) fn sncndn_imp<R: Real>(
     u: &R,
     spec: Spec<'_, R>,
@@ -29,7 +32,41 @@ pub(crate) fn sncndn_imp<R: Real>(
     if R::FIXED {
         return sncndn_fixed(u, spec);
     }
-    let w = n + GUARD;
+    let out = sncndn_mp(u, spec, n, n + GUARD)?;
+    // the modulus exactly as given: nothing was rounded before the reduction, which
+    // measures `u` from the nearest multiple of `K` adaptively
+    if matches!(spec, Spec::Modulus(k, _) if *k <= k.one()) {
+        return Ok(out);
+    }
+    // a transformed modulus `κ` (and argument `f·u`) were rounded to `n + GUARD` bits:
+    // next to a zero of sn, cn or dn that rounding moves the result by its condition
+    // number, so the evaluation is repeated with that many more bits
+    match lost_bits(u, &out) {
+        0 => Ok(out),
+        extra => sncndn_mp(u, spec, n, n + GUARD + extra),
+    }
+}
+
+/// An estimate of the bits that the rounding of a transformed modulus and argument to
+/// the working precision may have cost `(s, c, d) = (sn, cn, dn)(u)`: with `b` the
+/// `log2` of the largest of `|u·cn·dn/sn|`, `|u·sn·dn/cn|`, `|u·sn·cn/dn|` (the relative
+/// condition numbers with respect to `u`, DLMF 22.13.1–3, with the parameter taken as
+/// 1), `2b + 16` (the rounded modulus moves the zeros as well, by up to a factor `1/κ'²`
+/// more where `κ → 1`); `0` when `b < 16`.
+fn lost_bits<R: Real>(u: &R, (s, c, d): &(R, R, R)) -> u32 {
+    let (sf, cf, df, uf) = (s.to_f64(), c.to_f64(), d.to_f64(), u.to_f64().abs());
+    let kappa = [uf * cf * df / sf, uf * sf * df / cf, uf * sf * cf / df]
+        .into_iter()
+        .map(f64::abs)
+        .filter(|x| x.is_finite())
+        .fold(1.0, f64::max);
+    let bits = kappa.log2().ceil() as u32;
+    if bits < 16 { 0 } else { 2 * bits + 16 }
+}
+
+/// The multi-precision evaluation of [`sncndn_imp`] with the transformed modulus and
+/// argument (DLMF §22.17) formed at `w` bits.
+fn sncndn_mp<R: Real>(u: &R, spec: Spec<'_, R>, n: u32, w: u32) -> Result<(R, R, R), SpecialError> {
     let (kappa, modulus, f, form) = mp_modulus(spec, w);
     let direct = form == Form::Direct;
     let (v, n) = if direct {

@@ -1,7 +1,7 @@
 //! The elliptic integrals of the second kind: the complete `E(k)` and the incomplete
 //! `E(φ, k)` for any real `φ`, through Carlson's `R_F` and `R_D`.
 
-use super::agm::complementary;
+use super::agm::complementary_sqr;
 use super::carlson::{rd, rf, sqrt0};
 use super::phase::{fold, quadrant, residual};
 use super::{GUARD, SpecialError, check_finite, modulus_error, refuse_by_rule};
@@ -20,7 +20,7 @@ pub(crate) fn check_modulus_closed<R: Real>(k: &R) -> Result<(), SpecialError> {
 /// `E = (k'²/3)(R_D(0, k'², 1) + R_D(0, 1, k'²))` (DLMF 19.25.1), a sum of positive
 /// terms.
 pub(crate) fn complete_e<R: Real>(k: &R) -> Result<R, SpecialError> {
-    let kp2 = complementary(k).sqr();
+    let kp2 = complementary_sqr(k);
     let (z, one) = (k.zero(), k.one());
     let sum = rd(&z, &kp2, &one)? + rd(&z, &one, &kp2)?;
     Ok(kp2 * sum / k.from_i64(3))
@@ -64,7 +64,7 @@ pub(crate) fn reduced_e<R: Real>(s: &R, c2: &R, k: &R) -> Result<R, SpecialError
     }
     let one = s.one();
     let k2 = k.sqr();
-    let kp2 = complementary(k).sqr();
+    let kp2 = complementary_sqr(k);
     let d2 = c2.clone() + kp2.clone() * s.sqr();
     let f = rf(c2, &d2, &one)?;
     let d = rd(c2, &one, &d2)?;

@@ -1,7 +1,7 @@
 //! The incomplete elliptic integral of the third kind `Π(n, φ, k)` through Carlson's
 //! `R_F` and `R_J`.
 
-use super::agm::complementary;
+use super::agm::complementary_sqr;
 use super::carlson::{rf, rj, sqrt0};
 use super::phase::{fold, quadrant, residual};
 use super::{GUARD, SpecialError, check_finite, check_modulus_below_one, refuse_by_rule, show};
@@ -35,7 +35,7 @@ fn positive<R: Real>(nn: &R, nc: &R, s: &R, c2: &R, d2: &R, f: &R) -> Result<R, 
 pub(crate) fn reduced_pi<R: Real>(n: &R, s: &R, c2: &R, k: &R) -> Result<R, SpecialError> {
     let one = s.one();
     let k2 = k.sqr();
-    let kp2 = complementary(k).sqr();
+    let kp2 = complementary_sqr(k);
     let d2 = c2.clone() + kp2.clone() * s.sqr();
     let f = rf(c2, &d2, &one)?;
     if *n >= n.zero() {

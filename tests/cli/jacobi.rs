@@ -167,3 +167,33 @@ fn errors_are_one_line_with_the_line_number() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("unknown function 'xy'"), "{err}");
 }
+
+/// Next to a pole a quotient is ill-conditioned: one warning line on standard error at
+/// the end of the run (how many lines, the first one, its function and `κ_u`), the
+/// values printed as always, exit status 0; nothing on standard error elsewhere, nor
+/// for sn, cn, dn alone.  The point: k = 1 − 2⁻⁵³ and u = 19.408121051678471, 4·10⁻⁹
+/// below K (tests/data/jacobi_ref_pole.csv: cn ≈ 6·10⁻¹⁷, κ_u(nc) = κ_u(dc) = 4.852·10⁹).
+#[test]
+fn warns_once_next_to_a_pole() {
+    let near = "19.40812105167847079201237647794187068939208984375 0.99999999999999988897769753748434595763683319091796875\n";
+    let input = format!("0.75 0.5\n{near}{near}");
+    let (code, out, err) = run(&["--functions", "sn,nc,dc"], input.as_bytes());
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out.lines().count(), 3);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.starts_with("eulertop: warning: 2 line(s)"), "{err}");
+    // nc and dc have the same κ_u there to 16 digits (dn ≫ cn)
+    assert!(
+        err.contains("<stdin>:2, nc with κ_u = 4.85")
+            || err.contains("<stdin>:2, dc with κ_u = 4.85"),
+        "{err}"
+    );
+    // sn, cn, dn only, or away from the pole: no warning
+    let (code, _, err) = run(&[], input.as_bytes());
+    assert_eq!((code, err.as_str()), (0, ""));
+    let (code, _, err) = run(&["--functions", "nc"], b"0.75 0.5\n");
+    assert_eq!((code, err.as_str()), (0, ""));
+    // at 256 bits the bound is 2^128: no warning
+    let (code, _, err) = run(&["--bits", "256", "--functions", "nc"], near.as_bytes());
+    assert_eq!((code, err.as_str()), (0, ""));
+}

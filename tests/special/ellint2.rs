@@ -79,8 +79,19 @@ pub fn errors_by_fn(rows: &[Row], bits: u32) -> Vec<(String, f64, f64, usize)> {
     out
 }
 
-/// f64 against mpmath: relative error ≤ 4 ε (E, Π, Z, Λ₀, the nome); the theta
-/// functions ≤ 16 ε (up to q = 0.9, where the values fall to 10⁻⁹ of their terms).
+/// The `f64` bound per function: 2 ε for `E`, `E(φ)` (whose `R_D` sums its
+/// duplication terms with their rounding errors), 16 ε for the theta functions (up to
+/// q = 0.9, where the values fall to 10⁻⁹ of their terms), 3.5 ε for the others (Π, Z,
+/// Λ₀: products of several rounded factors with `R_F`, `R_J`; K, F, the nome).
+fn f64_bound(f: &str) -> f64 {
+    match f {
+        "E" | "Einc" => 2.0,
+        "jtheta" => 16.0,
+        _ => 3.5,
+    }
+}
+
+/// f64 against mpmath: relative error within [`f64_bound`].
 #[test]
 fn f64_against_mpmath() {
     let rows = read_table("ellint2_ref.csv");
@@ -88,7 +99,7 @@ fn f64_against_mpmath() {
     let seen = errors_by_fn(&rows, 53);
     assert_eq!(seen.len(), 7);
     for (f, worst, _, n) in seen {
-        let bound = if f == "jtheta" { 16.0 } else { 4.0 };
+        let bound = f64_bound(&f);
         assert!(worst <= bound, "{f}: worst {worst:.2} ε over {n} rows");
     }
 }
@@ -109,7 +120,7 @@ fn mpfr_against_mpmath() {
 }
 
 /// f64 against Boost.Math's published test data (K, E, F, E(φ), Π, Z, Λ₀): worst
-/// ≤ 5 ε, mean ≤ 1 ε per function; no row is refused.
+/// within [`f64_bound`], mean ≤ 1 ε per function; no row is refused.
 #[test]
 fn f64_against_boost_data() {
     let rows = read_table("boost_ellint.csv");
@@ -118,7 +129,7 @@ fn f64_against_boost_data() {
     assert_eq!(seen.len(), 7);
     for (f, worst, mean, n) in seen {
         assert!(
-            worst <= 5.0 && mean <= 1.0,
+            worst <= f64_bound(&f) && mean <= 1.0,
             "{f}: worst {worst:.2}, mean {mean:.2} ε over {n}"
         );
     }

@@ -15,6 +15,7 @@ mod jacobi_builtins;
 mod jacobi_complex;
 mod jacobi_dual;
 mod jacobi_inverse;
+mod jacobi_pole;
 mod jacobi_props;
 mod jacobi_real;
 mod jacobi_sweep;
