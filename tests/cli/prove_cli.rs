@@ -94,14 +94,15 @@ fn an_independence_claim_is_proved_by_its_derivative() {
     assert_eq!(err.trim_end().lines().count(), 1, "{err}");
     assert!(err.contains("Jacobi functions"), "{err}");
     // a claim that uses the phase of the elliptic coordinates without such a fact: its
-    // certificate has the `equiv` lines of the phase, and the phase step of the chart
+    // certificate has the `equiv` lines of the phase, and the phase step of the chart,
+    // a real parameter
     let (code, out, err) = run(&["prove", "sec6.discr-eq.corrected.up", "--certificate", p]);
     assert_eq!(code, 0, "{out}{err}");
     let cert = std::fs::read_to_string(&path).expect("certificate written");
     let _ = std::fs::remove_file(&path);
     assert!(
         cert.lines()
-            .any(|l| l == "field delta param  # opaque symbol")
+            .any(|l| l == "field delta param real  # opaque symbol")
     );
 }
 
