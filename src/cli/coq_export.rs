@@ -28,19 +28,43 @@ use std::collections::{BTreeMap, BTreeSet, HashMap};
 use std::fmt::Write;
 
 /// The lemmas and tactics every script starts with (all proved in the script).
-const PREAMBLE: &str = "Require Import Reals Lra.
+const PREAMBLE: &str = "From Coq Require Import Rbase Rfunctions R_sqrt Lra.
 Open Scope R_scope.
 
 Lemma eu_frac a b n e : b <> 0 -> e <> 0 -> a * e - n * b = 0 -> a / b = n / e.
 Proof. intros hb he h. field_simplify_eq; [lra | auto..]. Qed.
-Lemma eu_zero a b c d : b <> 0 -> d <> 0 -> a * d - c * b = 0 -> a / b - c / d = 0.
-Proof. intros hb hd h. field_simplify_eq; [lra | auto..]. Qed.
+Lemma eu_fracp a b n : b <> 0 -> a - n * b = 0 -> a / b = n.
+Proof. intros hb h. field_simplify_eq; [lra | auto]. Qed.
+Lemma eu_pfrac a n e : e <> 0 -> a * e - n = 0 -> a = n / e.
+Proof. intros he h. field_simplify_eq; [lra | auto]. Qed.
+Lemma eu_same a n e : a - n = 0 -> a / e = n / e.
+Proof. intros h. replace a with n by lra. reflexivity. Qed.
+Lemma eu_fracq a r n e : e <> 0 -> r <> 0 -> a - n * r = 0 -> a / (e * r) = n / e.
+Proof. intros he hr h. field_simplify_eq; [lra | auto..]. Qed.
+Lemma eu_nzq q e r : q <> 0 -> e * r = q -> r <> 0.
+Proof. intros hq h hr. apply hq. rewrite <- h, hr. ring. Qed.
 Lemma eu_num x p q : x = p / q -> x <> 0 -> p <> 0.
 Proof. intros h hx hp. apply hx. rewrite h, hp. unfold Rdiv. ring. Qed.
+Lemma eu_nump x p : x = p -> x <> 0 -> p <> 0.
+Proof. intros h hx. rewrite <- h. exact hx. Qed.
 Lemma eu_sqrt x y : 0 <= y -> y * y = x -> sqrt x = y.
 Proof. intros hy h. apply sqrt_lem_1; [rewrite <- h; nra | exact hy | exact h]. Qed.
-Ltac nzs := repeat split; first [assumption | lra].
-Ltac nzp := repeat apply Rmult_integral_contrapositive_currified; first [assumption | lra].
+Lemma eu_nzl x y : x * y <> 0 -> x <> 0.
+Proof. intros h e. apply h. rewrite e. ring. Qed.
+Lemma eu_nzr x y : x * y <> 0 -> y <> 0.
+Proof. intros h e. apply h. rewrite e. ring. Qed.
+Lemma eu_nzpow x n : x ^ S n <> 0 -> x <> 0.
+Proof. intros h e. apply h. rewrite e. simpl. ring. Qed.
+(* every factor of a nonzero product is nonzero *)
+Ltac nzsat := repeat match goal with
+  | H : ?x * ?y <> 0 |- _ =>
+      lazymatch goal with _ : x <> 0, _ : y <> 0 |- _ => fail | _ => idtac end;
+      pose proof (eu_nzl _ _ H); pose proof (eu_nzr _ _ H)
+  | H : ?x ^ S ?n <> 0 |- _ =>
+      lazymatch goal with _ : x <> 0 |- _ => fail | _ => pose proof (eu_nzpow _ _ H) end
+  end.
+Ltac nzs := nzsat; repeat split; first [assumption | lra].
+Ltac nzp := nzsat; repeat apply Rmult_integral_contrapositive_currified; first [assumption | lra].
 ";
 
 /// The prefixes of the names the script gives; a symbol may not start with one.
@@ -50,8 +74,8 @@ const RESERVED: [&str; 11] = [
 
 /// Coq keywords, which a symbol may not be.
 const KEYWORDS: [&str; 20] = [
-    "as", "at", "cofix", "else", "end", "exists", "fix", "for", "forall", "fun", "if", "in",
-    "let", "match", "mod", "Prop", "return", "Set", "then", "Type",
+    "as", "at", "cofix", "else", "end", "exists", "fix", "for", "forall", "fun", "if", "in", "let",
+    "match", "mod", "Prop", "return", "Set", "then", "Type",
 ];
 
 /// The Coq script of a certificate (the text `eulertop prove ID --certificate` writes),
@@ -294,13 +318,38 @@ impl Section {
     fn base(&mut self, line: &str) {
         let field = |key: &str| {
             line.split_once(&format!(" {key}="))
-                .map(|(_, r)| r.split(" ").next().unwrap_or("").to_string())
-                .unwrap_or_default()
+                .map_or(String::new(), |(_, r)| value_text(r).to_string())
         };
         let name = word(line, 0);
         let vals = [field("s"), field("c"), field("d"), field("arg")];
         self.bases.insert(name, vals);
     }
+}
+
+/// The value at the start of `text`: a fraction `(N)/(D)` (whose parts may hold
+/// spaces) or one word.
+fn value_text(text: &str) -> &str {
+    if !text.starts_with('(') {
+        return text.split(' ').next().unwrap_or("");
+    }
+    let mut depth = 0;
+    let mut groups = 0;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => {
+                depth -= 1;
+                if depth == 0 {
+                    groups += 1;
+                    if groups == 2 || !text[i + 1..].starts_with("/(") {
+                        return &text[..=i];
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    text
 }
 
 /// Word `i` of a line.
@@ -314,7 +363,9 @@ fn check_name(n: &str) -> Result<(), String> {
     let ident = n.chars().next().is_some_and(|c| c.is_ascii_alphabetic())
         && n.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
     if !ident || KEYWORDS.contains(&n) || RESERVED.iter().any(|p| n.starts_with(p)) {
-        return Err(format!("the symbol {n} cannot be declared in the Coq script"));
+        return Err(format!(
+            "the symbol {n} cannot be declared in the Coq script"
+        ));
     }
     Ok(())
 }

@@ -148,7 +148,9 @@ impl Symbols {
                 let rel = rel.sub(rad);
                 while f.degree(*v) >= 2 {
                     let e = f.degree(*v) as u64;
-                    let x = Poly::var(&self.ctx, *v).pow(e - 2).map_err(|e| e.to_string())?;
+                    let x = Poly::var(&self.ctx, *v)
+                        .pow(e - 2)
+                        .map_err(|e| e.to_string())?;
                     let q = f.coefficient_in(*v, e).mul(&x);
                     f = f.sub(&q.mul(&rel));
                     qs[j] = qs[j].add(&q);

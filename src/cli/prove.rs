@@ -215,7 +215,9 @@ fn write_coq(path: &str, cert: Option<&str>, p: &ProofInfo) -> Result<(), CliErr
         Ok(()) => format!("; the older {path} was removed"),
         Err(_) => String::new(),
     };
-    Err(CliError(format!("no Coq script written to {path}: {why}{removed}")))
+    Err(CliError(format!(
+        "no Coq script written to {path}: {why}{removed}"
+    )))
 }
 
 /// Checks `--certificate PATH` (or `--coq PATH`) before the proof runs: a file name in

@@ -3,6 +3,7 @@
 
 mod cli_claims;
 mod cli_hostile;
+mod coq_cli;
 mod jacobi;
 mod model_cli;
 mod prove_cli;
