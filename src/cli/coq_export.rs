@@ -246,10 +246,10 @@ fn reachable(nodes: &BTreeMap<usize, NodeLine>, claims: &[(usize, usize)]) -> BT
     let mut seen = BTreeSet::new();
     let mut stack: Vec<usize> = claims.iter().flat_map(|&(a, b)| [a, b]).collect();
     while let Some(id) = stack.pop() {
-        if seen.insert(id) {
-            if let Some(n) = nodes.get(&id) {
-                stack.extend(node_args(&n.body));
-            }
+        if seen.insert(id)
+            && let Some(n) = nodes.get(&id)
+        {
+            stack.extend(node_args(&n.body));
         }
     }
     seen
