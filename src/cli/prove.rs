@@ -88,8 +88,12 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         return prove_one(&args, &cat, claim);
     }
     if args.certificate.is_some() || args.coq.is_some() {
+        let flag = match args.certificate {
+            Some(_) => "--certificate",
+            None => "--coq",
+        };
         return Err(CliError(format!(
-            "--certificate and --coq need one claim, and '{}' names {} ({})",
+            "{flag} needs one claim, and '{}' names {} ({})",
             args.id,
             sel.claims.len(),
             sel.what

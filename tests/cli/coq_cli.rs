@@ -101,7 +101,7 @@ fn an_unwritable_coq_path_fails_before_the_proof() {
         err.contains("--coq '/no/such/dir/x.v': no directory"),
         "{err}"
     );
-    let (code, _, err) = run(&["prove", "bg", "--coq", "x.v"]);
+    let (code, _, err) = run(&["prove", "Lemma 2", "--coq", "x.v"]);
     assert_eq!(code, 2, "{err}");
-    assert!(err.contains("need one claim"), "{err}");
+    assert!(err.contains("--coq needs one claim"), "{err}");
 }
