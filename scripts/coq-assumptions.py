@@ -46,7 +46,8 @@ def main():
     bad = re.search(r"\b(Admitted|admit|Axiom|Parameter|Conjecture)\b", script)
     if bad:
         sys.exit(f"{sys.argv[1]}: the script uses {bad.group(1)}")
-    if "Section Variables:" not in output and "Closed under the global context" not in output:
+    heads = ("Section Variables:", "Axioms:", "Closed under the global context")
+    if not any(h in output for h in heads):
         sys.exit(f"{sys.argv[2]}: no output of Print Assumptions")
     variables, axioms = printed(output)
     undeclared = variables - declared(script)

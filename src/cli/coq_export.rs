@@ -179,14 +179,15 @@ fn section(lines: &[&str], name: &str, theorem: &str) -> Result<String, String> 
         }
     }
     let statement = s.claims(&claims, theorem)?;
-    let mut out = format!("\nSection {name}.\n");
+    // a module of its own per case: the definitions outlive the section
+    let mut out = format!("\nModule {name}.\nSection {name}.\n");
     for line in lines.iter().filter(|l| l.starts_with("assume ")) {
         let _ = writeln!(out, "(* rests on: {} *)", comment(&l_tail(line)));
     }
     out.push_str(&s.decls);
     out.push_str(&s.body);
     out.push_str(&statement);
-    let _ = writeln!(out, "Print Assumptions {theorem}.\nEnd {name}.");
+    let _ = writeln!(out, "Print Assumptions {theorem}.\nEnd {name}.\nEnd {name}.");
     Ok(out)
 }
 
