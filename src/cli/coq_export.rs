@@ -187,7 +187,10 @@ fn section(lines: &[&str], name: &str, theorem: &str) -> Result<String, String> 
     out.push_str(&s.decls);
     out.push_str(&s.body);
     out.push_str(&statement);
-    let _ = writeln!(out, "Print Assumptions {theorem}.\nEnd {name}.\nEnd {name}.");
+    let _ = writeln!(
+        out,
+        "Print Assumptions {theorem}.\nEnd {name}.\nEnd {name}."
+    );
     Ok(out)
 }
 
