@@ -42,6 +42,17 @@ elif ! command -v python3 >/dev/null 2>&1; then
     exit 2
   fi
 fi
+# The Coq proof assistant compiles the Coq scripts of the proofs (scripts/check-coq.sh,
+# `eulertop prove ID --coq FILE`); apt-get installs it when running as root.
+if ! command -v coqc >/dev/null 2>&1; then
+  if [ "$(id -u)" = "0" ] && command -v apt-get >/dev/null 2>&1; then
+    echo "eulertop: installing coq (for the Coq check of the proofs)" >&2
+    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq coq) >/dev/null
+  else
+    # not needed to build or test: only scripts/check-coq.sh stops without it
+    echo "eulertop: coq missing; install it (sudo apt-get install coq) to check the Coq scripts" >&2
+  fi
+fi
 # flint-sys keeps a built FLINT under $FLINT_SYS_CACHE or the user cache directory.
 cache="${FLINT_SYS_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/flint-sys}"
 if ! ls "$cache"/*/libflint.a >/dev/null 2>&1 && ! ls target/release/build/flint-sys-*/out/lib/libflint.a >/dev/null 2>&1; then

@@ -126,6 +126,8 @@ pub fn parse_list<T: std::str::FromStr>(s: &str, what: &str) -> Result<Vec<T>, C
 pub mod audit;
 pub mod catalogue_arg;
 pub mod cert_source;
+pub mod coq_export;
+mod coq_poly;
 pub mod eval;
 pub mod init;
 pub mod prove;

@@ -28,6 +28,9 @@ pub struct Args {
     /// Write the certificate (a SymPy-recheckable script) to this file.
     #[arg(long)]
     pub certificate: Option<String>,
+    /// Write the proof as a Coq script (checked by `coqc`) to this file.
+    #[arg(long)]
+    pub coq: Option<String>,
     /// The budget of every proof attempt.
     #[command(flatten)]
     pub budget: super::ProofBudgetArgs,
@@ -85,9 +88,13 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         }
         return prove_one(&args, &cat, claim);
     }
-    if args.certificate.is_some() {
+    if args.certificate.is_some() || args.coq.is_some() {
+        let flag = match args.certificate {
+            Some(_) => "--certificate",
+            None => "--coq",
+        };
         return Err(CliError(format!(
-            "--certificate needs one claim, and '{}' names {} ({})",
+            "{flag} needs one claim, and '{}' names {} ({})",
             args.id,
             sel.claims.len(),
             sel.what
@@ -145,16 +152,27 @@ fn sides(claim: &Claim) -> Result<(PExpr, PExpr), CliError> {
 /// Proves one claim, with the certificate if asked for.
 fn prove_one(args: &Args, cat: &Catalogue, claim: &Claim) -> Result<i32, CliError> {
     let (lhs, rhs) = sides(claim)?;
-    if let Some(path) = &args.certificate {
-        check_certificate_path(path)?;
+    for (flag, path) in [("--certificate", &args.certificate), ("--coq", &args.coq)] {
+        if let Some(path) = path {
+            check_certificate_path(flag, path)?;
+        }
     }
-    let p = prove(Ctx { cat, claim }, &lhs, &rhs, args.certificate.is_some());
-    if let (Some(path), Some(cert)) = (&args.certificate, &p.certificate) {
-        let source = super::catalogue_arg::CatalogueSource::new(args.catalogue.as_deref())
-            .raw()?
-            .source_lines(&claim.id)?;
-        let cert = bind(cert, &source, &premise_lines(&p.hypotheses));
+    let certify = args.certificate.is_some() || args.coq.is_some();
+    let p = prove(Ctx { cat, claim }, &lhs, &rhs, certify);
+    let bound = match &p.certificate {
+        Some(cert) if certify => {
+            let source = super::catalogue_arg::CatalogueSource::new(args.catalogue.as_deref())
+                .raw()?
+                .source_lines(&claim.id)?;
+            Some(bind(cert, &source, &premise_lines(&p.hypotheses)))
+        }
+        _ => None,
+    };
+    if let (Some(path), Some(cert)) = (&args.certificate, &bound) {
         std::fs::write(path, cert).map_err(|e| CliError(format!("cannot write {path}: {e}")))?;
+    }
+    if let Some(path) = &args.coq {
+        write_coq(path, bound.as_deref(), &p)?;
     }
     let mut out = stdout();
     out.write_all(derivation(&claim.id, &claim.printed, &p).as_bytes())
@@ -185,11 +203,35 @@ fn prove_one(args: &Args, cat: &Catalogue, claim: &Claim) -> Result<i32, CliErro
     Ok(i32::from(!p.is_proved()))
 }
 
-/// Checks `--certificate PATH` before the proof runs: a file name in an existing
-/// directory, not a directory itself.
-fn check_certificate_path(path: &str) -> Result<(), CliError> {
+/// Writes the Coq script of the proof's certificate to `path` (module
+/// [`super::coq_export`]); without one (the claim not proved, a step the certificate
+/// does not record, or one the export does not cover), removes an older file at `path`
+/// and fails.
+fn write_coq(path: &str, cert: Option<&str>, p: &ProofInfo) -> Result<(), CliError> {
+    let script = match cert {
+        Some(c) => super::coq_export::coq_script(c),
+        None if p.is_proved() => Err(format!(
+            "the certificate format does not record {}",
+            p.uncertified.join("; ")
+        )),
+        None => Err("the claim is not proved".to_string()),
+    };
+    let result = script.and_then(|s| std::fs::write(path, s).map_err(|e| e.to_string()));
+    let Err(why) = result else { return Ok(()) };
+    let removed = match std::fs::remove_file(path) {
+        Ok(()) => format!("; the older {path} was removed"),
+        Err(_) => String::new(),
+    };
+    Err(CliError(format!(
+        "no Coq script written to {path}: {why}{removed}"
+    )))
+}
+
+/// Checks `--certificate PATH` (or `--coq PATH`) before the proof runs: a file name in
+/// an existing directory, not a directory itself.
+fn check_certificate_path(flag: &str, path: &str) -> Result<(), CliError> {
     let p = std::path::Path::new(path);
-    let bad = |why: &str| Err(CliError(format!("--certificate '{path}': {why}")));
+    let bad = |why: &str| Err(CliError(format!("{flag} '{path}': {why}")));
     if path.is_empty() {
         return bad("an empty file name");
     }

@@ -5,6 +5,7 @@
 mod anywhere;
 mod cli_claims;
 mod cli_hostile;
+mod coq_cli;
 mod jacobi;
 mod model_cli;
 mod prove_cli;
