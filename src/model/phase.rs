@@ -87,14 +87,14 @@ where
     })
 }
 
+/// `(sn, cn, dn)` as dual numbers.
+type DualTriple<R> = (Dual<R>, Dual<R>, Dual<R>);
+
 /// `(sn, cn, dn)` at the phase `x` as [`Dual`] numbers with derivative along `x`
 /// (DLMF 22.13.1–3: `sn' = cn dn`, `cn' = −sn dn`, `dn' = −k² sn cn`; on the separatrix
 /// `k = 1` and these are the derivatives of tanh and sech): the functions are
 /// evaluated once, at the value, rather than through the dual numbers.
-fn sncndn_var<R: Real>(
-    x: &R,
-    p: &EllipticParams<R>,
-) -> Result<(Dual<R>, Dual<R>, Dual<R>), ModelError> {
+fn sncndn_var<R: Real>(x: &R, p: &EllipticParams<R>) -> Result<DualTriple<R>, ModelError> {
     let (sn, cn, dn) = sncndn_params(x, p)?;
     let k2 = match p.regime {
         super::Regime::Separatrix => x.one(),
