@@ -3,7 +3,7 @@
 //! `f64`, `log2|Q|` extra bits for MPFR), and the reduced sine and cosine.
 
 use super::reduce::reduce_dd;
-use super::{SpecialError, check_finite};
+use super::{GUARD, SpecialError, check_finite};
 use crate::numbers::Real;
 
 /// π as an unevaluated sum of three doubles.
@@ -51,6 +51,30 @@ pub(crate) fn residual<R: Real>(phi: &R, q: i64) -> R {
     let wide = phi.with_prec(phi.prec() + extra);
     let r = wide.clone() - wide.from_i64(q) * wide.pi().mul_2si(-1);
     r.with_prec(phi.prec())
+}
+
+/// An amplitude split as `φ = Qπ/2 + r` for an incomplete integral: the quadrant, the
+/// residual and the working precision `w` it was formed at.
+pub(crate) struct Amplitude<R> {
+    /// The quadrant `Q` ([`quadrant`]).
+    pub q: i64,
+    /// `r = φ − Qπ/2` at precision `w` ([`residual`]).
+    pub r: R,
+    /// The working precision: the result's precision, the guard bits and the bits the
+    /// reduction needs.
+    pub w: u32,
+}
+
+/// Splits `phi` for a result of precision `prec` (see [`Amplitude`]); the errors of
+/// [`quadrant`].
+pub(crate) fn amplitude<R: Real>(phi: &R, prec: u32) -> Result<Amplitude<R>, SpecialError> {
+    let (q, bits) = quadrant(phi)?;
+    let w = prec + GUARD + bits;
+    Ok(Amplitude {
+        q,
+        r: residual(&phi.with_prec(w), q),
+        w,
+    })
 }
 
 /// `(sin φ, cos φ)` for `φ = Qπ/2 + r`, from the sine and cosine of `r`.

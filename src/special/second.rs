@@ -3,7 +3,7 @@
 
 use super::agm::complementary_sqr;
 use super::carlson::{rd, rf, sqrt0};
-use super::phase::{fold, quadrant, residual};
+use super::phase::{Amplitude, amplitude, fold};
 use super::{GUARD, SpecialError, check_finite, modulus_error, refuse_by_rule};
 use crate::numbers::Real;
 
@@ -103,18 +103,16 @@ pub fn ellipeinc<R: Real>(phi: &R, k: &R) -> Result<R, SpecialError> {
     refuse_by_rule::<R>("E(phi, k)")?;
     check_modulus_closed(k)?;
     check_finite(phi, "phi")?;
-    let (q, bits) = quadrant(phi)?;
     let n = phi.prec().max(k.prec());
-    let w = n + GUARD + bits;
-    let (pw, kw) = (phi.with_prec(w), k.with_prec(w));
-    let r = residual(&pw, q);
+    let Amplitude { q, r, w } = amplitude(phi, n)?;
+    let kw = k.with_prec(w);
     let (c, sigma, s, c2) = fold(q, &r);
     let unit = kw == kw.one();
     let part = if unit { s } else { reduced_e(&s, &c2, &kw)? };
-    let mut e = pw.from_i64(sigma) * part;
+    let mut e = r.from_i64(sigma) * part;
     if c != 0 {
         let whole = if unit { kw.one() } else { complete_e(&kw)? };
-        e = e + pw.from_i64(c) * whole;
+        e = e + r.from_i64(c) * whole;
     }
     Ok(e.with_prec(n))
 }

@@ -3,8 +3,8 @@
 
 use super::agm::complementary_sqr;
 use super::carlson::{rf, rj, sqrt0};
-use super::phase::{fold, quadrant, residual};
-use super::{GUARD, SpecialError, check_finite, check_modulus_below_one, refuse_by_rule, show};
+use super::phase::{Amplitude, amplitude, fold};
+use super::{SpecialError, check_finite, check_modulus_below_one, refuse_by_rule, show};
 use crate::numbers::Real;
 
 /// `Π(N, θ, k)` for `0 ≤ N`, `N sin²θ < 1`, `θ ∈ [−π/4, π/2]` given by `s = sin θ`,
@@ -90,11 +90,9 @@ pub fn ellippi<R: Real>(n: &R, phi: &R, k: &R) -> Result<R, SpecialError> {
     check_modulus_below_one(k)?;
     check_finite(n, "n")?;
     check_finite(phi, "phi")?;
-    let (q, bits) = quadrant(phi)?;
     let prec = n.prec().max(phi.prec()).max(k.prec());
-    let w = prec + GUARD + bits;
-    let (nw, pw, kw) = (n.with_prec(w), phi.with_prec(w), k.with_prec(w));
-    let r = residual(&pw, q);
+    let Amplitude { q, r, w } = amplitude(phi, prec)?;
+    let (nw, kw) = (n.with_prec(w), k.with_prec(w));
     let (c, sigma, s, c2) = fold(q, &r);
     let one = kw.one();
     if c != 0 && nw >= one {
@@ -119,10 +117,10 @@ pub fn ellippi<R: Real>(n: &R, phi: &R, k: &R) -> Result<R, SpecialError> {
             ))
         });
     }
-    let mut p = pw.from_i64(sigma) * reduced_pi(&nw, &s, &c2, &kw)?;
+    let mut p = r.from_i64(sigma) * reduced_pi(&nw, &s, &c2, &kw)?;
     if c != 0 {
         let whole = reduced_pi(&nw, &one, &kw.zero(), &kw)?;
-        p = p + pw.from_i64(c) * whole;
+        p = p + r.from_i64(c) * whole;
     }
     Ok(p.with_prec(prec))
 }

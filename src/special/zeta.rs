@@ -4,8 +4,8 @@
 use super::agm::{agm, complementary};
 use super::carlson::rj;
 use super::ellint::f_agm;
-use super::phase::{fold, quadrant, residual, sin_cos_quadrant};
-use super::{GUARD, SpecialError, check_finite, check_modulus_below_one, refuse_by_rule};
+use super::phase::{Amplitude, amplitude, fold, sin_cos_quadrant};
+use super::{SpecialError, check_finite, check_modulus_below_one, refuse_by_rule};
 use crate::numbers::Real;
 
 /// `k² s c Δ R_J(0, k'², 1, Δ²)/3` with `Δ² = c² + k'² s² = 1 − k² s²` for the sine
@@ -49,11 +49,10 @@ pub fn jacobizeta<R: Real>(phi: &R, k: &R) -> Result<R, SpecialError> {
     refuse_by_rule::<R>("Z(phi, k)")?;
     check_modulus_below_one(k)?;
     check_finite(phi, "phi")?;
-    let (q, bits) = quadrant(phi)?;
     let n = phi.prec().max(k.prec());
-    let w = n + GUARD + bits;
-    let (pw, kw) = (phi.with_prec(w), k.with_prec(w));
-    let (s, c) = sin_cos_quadrant(q, &residual(&pw, q));
+    let a = amplitude(phi, n)?;
+    let kw = k.with_prec(a.w);
+    let (s, c) = sin_cos_quadrant(a.q, &a.r);
     let kp = complementary(&kw);
     let zk = zeta_times_k(&s, &c, &kw, &kp)?;
     let inv_k = agm(&kw.one(), &kp)?.mul_2si(1) / kw.pi();
@@ -89,16 +88,14 @@ pub fn heumanlambda<R: Real>(phi: &R, k: &R) -> Result<R, SpecialError> {
     refuse_by_rule::<R>("Lambda0(phi, k)")?;
     check_modulus_below_one(k)?;
     check_finite(phi, "phi")?;
-    let (q, bits) = quadrant(phi)?;
     let n = phi.prec().max(k.prec());
-    let w = n + GUARD + bits;
-    let (pw, kw) = (phi.with_prec(w), k.with_prec(w));
-    let r = residual(&pw, q);
+    let Amplitude { q, r, w } = amplitude(phi, n)?;
+    let kw = k.with_prec(w);
     let (s, c) = sin_cos_quadrant(q, &r);
     if kw.is_zero() {
         // Λ₀(·, 0) is odd, Λ₀(π/2, 0) = 1 and Λ₀(θ, 0) = sin θ on [−π/2, π/2]
         let (whole, sigma, st, _) = fold(q, &r);
-        let lam = pw.from_i64(whole) + pw.from_i64(sigma) * st;
+        let lam = r.from_i64(whole) + r.from_i64(sigma) * st;
         return Ok(lam.with_prec(n));
     }
     let one = kw.one();
