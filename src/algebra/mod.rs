@@ -127,6 +127,8 @@ mod proof;
 mod ring;
 pub mod roots;
 mod scalar;
+pub mod series;
+mod series_scalar;
 pub mod shadow;
 pub mod sign_state;
 pub mod split;

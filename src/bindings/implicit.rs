@@ -258,6 +258,13 @@ impl ModelFn {
 }
 
 impl Implicit for ModelFn {
+    fn series(
+        &self,
+        args: &[Value<crate::algebra::series::Series>],
+    ) -> Result<Value<crate::algebra::series::Series>, String> {
+        super::implicit_series::series(*self, args)
+    }
+
     fn eliminates(&self) -> &'static [usize] {
         match self {
             ModelFn::StepVm | ModelFn::VmOmega => &[0],

@@ -5,3 +5,4 @@
 pub mod catalogue;
 pub mod euler_top;
 mod implicit;
+mod implicit_series;

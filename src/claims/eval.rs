@@ -96,7 +96,7 @@ macro_rules! by_duals {
         }
     )*};
 }
-by_duals!(f64, Float);
+by_duals!(f64, Float, crate::algebra::series::Series);
 
 macro_rules! cannot_derive {
     ($($t:ty),*) => {$(
@@ -114,7 +114,13 @@ macro_rules! cannot_derive {
         }
     )*};
 }
-cannot_derive!(Dual<f64>, Dual<Float>, Dual<Sym>, Rational);
+cannot_derive!(
+    Dual<f64>,
+    Dual<Float>,
+    Dual<Sym>,
+    Rational,
+    Dual<crate::algebra::series::Series>
+);
 
 /// Exact derivatives: the derivation of the prover's tower with respect to the
 /// indeterminate bound to `var` (every value already depends on it through the

@@ -24,6 +24,7 @@
 //! it at the sampled points.
 
 use crate::algebra::Sym;
+use crate::algebra::series::Series;
 use crate::claims::value::Value;
 use crate::linalg::{Mat3, Vec3};
 
@@ -77,6 +78,12 @@ pub trait Implicit: Send + Sync {
     }
     /// Which solution the function selects.
     fn branch(&self) -> String;
+    /// The value as a power series in `h` at power-series arguments: the solution of
+    /// the defining equations continuous at `h = 0` (the branch of
+    /// [`Implicit::branch`]), coefficient by coefficient.  By default not available.
+    fn series(&self, _args: &[Value<Series>]) -> Result<Value<Series>, String> {
+        Err("no power-series solution of its equations".into())
+    }
 }
 
 /// The key under which the value of `name(args)` is remembered in the prover's ring.

@@ -13,6 +13,7 @@ use super::builtins::Builtin;
 use super::implicit::Implicit;
 use super::value::Value;
 use crate::algebra::Sym;
+use crate::algebra::series::Series;
 use crate::numbers::{Dual, Rational, Real};
 use rug::Float;
 use std::collections::BTreeMap;
@@ -36,6 +37,12 @@ pub trait ExtFunction: Send + Sync {
     /// On dual numbers over the prover's values (partial derivatives in a function
     /// parameter).
     fn call_dual_sym(&self, args: &[Value<Dual<Sym>>]) -> Result<Value<Dual<Sym>>, String>;
+    /// On power series in `h` over the prover's values (asymptotic claims).
+    fn call_series(&self, args: &[Value<Series>]) -> Result<Value<Series>, String>;
+    /// On dual numbers over power series (derivatives in a function parameter of an
+    /// asymptotic claim's functions).
+    fn call_dual_series(&self, args: &[Value<Dual<Series>>])
+    -> Result<Value<Dual<Series>>, String>;
     /// How the prover handles the function when its value is defined implicitly (by
     /// equations the numerical backends solve); `None` for explicit functions.
     fn implicit(&self) -> Option<&dyn Implicit> {
@@ -104,6 +111,26 @@ impl<G: GenericFunction> ExtFunction for G {
         }
         self.call(a)
     }
+    fn call_series(&self, a: &[Value<Series>]) -> Result<Value<Series>, String> {
+        match self.implicit() {
+            Some(imp) => imp.series(a),
+            None => self.call(a).map_err(|m| {
+                a.iter()
+                    .flat_map(|v| v.components())
+                    .find_map(|x| crate::numbers::Real::failure(&x))
+                    .unwrap_or(m)
+            }),
+        }
+    }
+    fn call_dual_series(&self, a: &[Value<Dual<Series>>]) -> Result<Value<Dual<Series>>, String> {
+        if self.implicit().is_some() {
+            return Err(format!(
+                "{}: the derivative of an implicit map in a function parameter is not supported",
+                self.name_for_proofs()
+            ));
+        }
+        self.call(a)
+    }
     fn implicit(&self) -> Option<&dyn Implicit> {
         GenericFunction::implicit(self)
     }
@@ -133,6 +160,8 @@ host_call!(
     Rational => call_exact,
     Sym => call_sym,
     Dual<Sym> => call_dual_sym,
+    Series => call_series,
+    Dual<Series> => call_dual_series,
 );
 
 /// A registered function.

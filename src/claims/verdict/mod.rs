@@ -245,7 +245,16 @@ fn judge(ctx: Ctx<'_>, opts: &Options) -> Result<Evidence, Failure> {
                 steps: *steps,
                 slope_tol: *slope_tol,
             };
-            asymptotic::run(ctx, spec, bits)
+            let mut ev = asymptotic::run(ctx, spec, bits)?;
+            if opts.exact {
+                let order = symbolic::Order {
+                    expr,
+                    var,
+                    order: *order,
+                };
+                symbolic::judge_order(ctx, order, &mut ev);
+            }
+            Ok(ev)
         }
         Body::Existence {
             unknowns,

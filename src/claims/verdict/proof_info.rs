@@ -11,6 +11,9 @@ pub enum ProofMethod {
     /// Refuted with a witness: a domain point at which lhs − rhs is certified nonzero
     /// (field `witness`).
     Witness,
+    /// An asymptotic claim proved by exact power series: every coefficient below the
+    /// claimed order has normal form 0.
+    Series,
     /// Not proved (the reason says why).
     None,
 }
@@ -99,7 +102,7 @@ impl ProofInfo {
 
     /// Was the claim proved?
     pub fn is_proved(&self) -> bool {
-        self.method == ProofMethod::Symbolic
+        matches!(self.method, ProofMethod::Symbolic | ProofMethod::Series)
     }
 
     /// What the proof rests on, in a few words: "12 symbols, 4 relations, 3 assumptions"

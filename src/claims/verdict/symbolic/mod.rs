@@ -48,6 +48,7 @@ mod case;
 mod cases;
 mod linear;
 mod scope;
+mod series;
 mod split;
 
 use super::context::Ctx;
@@ -61,6 +62,7 @@ use crate::claims::value::Value;
 use case::{Signs, prove_case};
 use cases::{Cases, Role, case_points, role_of};
 use scope::{evaluates_pi, iteration, not_analytic, states_condition};
+pub use series::{Order, judge_order, prove_order};
 use std::time::Instant;
 
 /// Attempts a symbolic proof of `lhs = rhs` on the claim's domain.

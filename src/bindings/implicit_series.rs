@@ -1,0 +1,208 @@
+//! The model's implicit maps as power series in `h` ([`crate::algebra::series`]): the
+//! solution of each map's own equations that is continuous at `h = 0`, coefficient by
+//! coefficient.
+//!
+//! Every map is `E(x, h) = 0` with a known solution `x₀` at `h = 0` and an invertible
+//! linearization `L = ∂E/∂x (x₀, 0)`: (impl spec 1–3) with `x = M̂`, `x₀ = M`, `L = I`;
+//! (M thru omega) with `ω = cayley(v)`, `x = v`, `x₀ = 0`; the master equations with
+//! `x = δ`, `x₀ = 0`.  The iteration `x ← x − L⁻¹E(x, h)` gains at least one order of
+//! `h` per step; it stops when `x` no longer changes at the working precision, so
+//! `E(x, h) = O(h^n)` there and `x` is the unique power-series solution with
+//! `x(0) = x₀` (implicit function theorem): the Taylor series of the map's branch.
+//! `E(x₀, 0) = 0` is checked exactly, and `L`'s determinant has a proved sign.
+
+use super::euler_top::{ModelFn, err, inertia, params, v3};
+use crate::algebra::series::Series;
+use crate::algebra::{AssumptionKind, Sym};
+use crate::claims::implicit::Implicit;
+use crate::claims::value::Value;
+use crate::linalg::{Mat3, Vec3};
+use crate::model::discretization::{Gamma, residual};
+use crate::model::elliptic_coords::sncndn_params;
+use crate::model::phase::{master12_equation, mv_master_equation};
+use crate::model::veselov_moser::{cayley, hat, j_diag, omega_residual, vm_conjugate};
+use crate::numbers::Scalar;
+
+/// The equations `E(x, h)` of a map, as components.
+type Equations<'a> = dyn Fn(&[Series], &Series) -> Result<Vec<Series>, String> + 'a;
+
+/// `f(args)` as a power series (see the module doc).
+pub(super) fn series(f: ModelFn, args: &[Value<Series>]) -> Result<Value<Series>, String> {
+    let at = match f {
+        ModelFn::Delta1 | ModelFn::Delta2 | ModelFn::DeltaVm => 5,
+        _ => 1,
+    };
+    let h = args.get(at).ok_or("too few arguments")?.as_real()?;
+    if h.valuation() < 1 {
+        return Err("the step size does not tend to 0 with h".into());
+    }
+    let constant = args
+        .iter()
+        .enumerate()
+        .filter(|(j, _)| *j != at && (at == 5 || *j != 0))
+        .flat_map(|(_, a)| a.components())
+        .all(|c| c.is_constant());
+    if !constant {
+        return Err("the map's parameters depend on h".into());
+    }
+    let ring = h.ring().clone();
+    ring.assume(
+        AssumptionKind::Branch(f.name().to_string()),
+        format!("{}: {}", f.name(), f.branch()),
+    );
+    ring.note(format!(
+        "{}: the power series in h of the solution of {} continuous at h = 0",
+        f.name(),
+        f.equations()
+    ));
+    match f {
+        ModelFn::StepVm | ModelFn::VmOmega => vm(f, args, &h),
+        ModelFn::Delta1 | ModelFn::Delta2 | ModelFn::DeltaVm => phase(f, args, &h),
+        ModelFn::StepGamma0 => midpoint(Gamma::G0, args, &h),
+        ModelFn::StepGamma1 => midpoint(Gamma::G1, args, &h),
+        ModelFn::StepGamma2 => midpoint(Gamma::G2, args, &h),
+        _ => Err("not an implicit map".into()),
+    }
+}
+
+/// (impl spec 1–3): `M̂ − M − ¼hγ f(M + M̂) = 0` from `M̂ = M`.
+fn midpoint(gamma: Gamma, args: &[Value<Series>], h: &Series) -> Result<Value<Series>, String> {
+    let i = inertia(args, 2)?;
+    let m = v3(&args[0])?;
+    let e = |x: &[Series], hh: &Series| -> Result<Vec<Series>, String> {
+        let mh = Vec3::new(x[0].clone(), x[1].clone(), x[2].clone());
+        Ok(residual(&i, gamma, &m, &mh, hh).map_err(err)?.0.to_vec())
+    };
+    let x = solve(m.0.to_vec(), &e, h)?;
+    Ok(Value::Vec3(Vec3::new(
+        x[0].clone(),
+        x[1].clone(),
+        x[2].clone(),
+    )))
+}
+
+/// (M thru omega): `vee(ωJ − Jωᵀ − hM̌) = 0` with `ω = cayley(v)`, from `v = 0`.
+fn vm(f: ModelFn, args: &[Value<Series>], h: &Series) -> Result<Value<Series>, String> {
+    let i = inertia(args, 2)?;
+    let m = v3(&args[0])?;
+    let j = Mat3::diag(&j_diag(&i));
+    let e = |x: &[Series], hh: &Series| -> Result<Vec<Series>, String> {
+        let v = Vec3::new(x[0].clone(), x[1].clone(), x[2].clone());
+        Ok(omega_residual(&v, &j, &hat(&m).scale(hh)).0.to_vec())
+    };
+    let zero = h.zero();
+    let x = solve(vec![zero.clone(), zero.clone(), zero], &e, h)?;
+    let w = cayley(&Vec3::new(x[0].clone(), x[1].clone(), x[2].clone()));
+    Ok(match f {
+        ModelFn::VmOmega => Value::Mat3(w),
+        _ => Value::Vec3(vm_conjugate(&w, &m)),
+    })
+}
+
+/// The master equation of a phase step in `δ`, from `δ = 0`.
+fn phase(f: ModelFn, args: &[Value<Series>], h: &Series) -> Result<Value<Series>, String> {
+    let (i, p) = params(args)?;
+    let (a, b) = match f {
+        ModelFn::Delta1 => (p.alpha1(), h.zero()),
+        ModelFn::Delta2 => (p.alpha2(&i), h.zero()),
+        _ => p
+            .alpha_beta_vm(&i)
+            .ok_or("(MV alphabeta) is not given on the separatrix")?,
+    };
+    let nu2 = p.nu() * h.from_ratio(1, 2);
+    let e = |x: &[Series], hh: &Series| -> Result<Vec<Series>, String> {
+        let (sn, cn, dn) = sncndn_params(&x[0], &p).map_err(err)?;
+        let hn = hh.clone() * nu2.clone();
+        Ok(vec![match f {
+            ModelFn::DeltaVm => mv_master_equation(&a, &b, &hn, &sn, &cn, &dn),
+            _ => master12_equation(&a, &hn, &sn, &cn, &dn),
+        }])
+    };
+    let x = solve(vec![h.zero()], &e, h)?;
+    Ok(Value::Real(x[0].clone()))
+}
+
+/// The power-series root of `e(x, h) = 0` with `x(0) = x0(0)` (see the module doc).
+fn solve(x0: Vec<Series>, e: &Equations<'_>, h: &Series) -> Result<Vec<Series>, String> {
+    let inv = linearization_inverse(&x0, e, h)?;
+    let mut x = x0;
+    let rounds = h.precision().max(1) + 2;
+    for _ in 0..rounds {
+        let r = e(&x, h)?;
+        let next: Vec<Series> = (0..x.len())
+            .map(|i| {
+                let step = (0..x.len()).fold(h.zero(), |acc, j| {
+                    acc + Series::constant(&inv[i][j]) * r[j].clone()
+                });
+                x[i].clone() - step
+            })
+            .collect();
+        failed(h)?;
+        if next == x {
+            return Ok(x);
+        }
+        x = next;
+    }
+    Err(format!(
+        "the power series of the map's root did not settle in {rounds} steps"
+    ))
+}
+
+/// `L⁻¹` for `L = ∂E/∂x (x₀(0), 0)`, after checking `E(x₀(0), 0) = 0` exactly and that
+/// `det L` has a proved sign.
+fn linearization_inverse(
+    x0: &[Series],
+    e: &Equations<'_>,
+    h: &Series,
+) -> Result<Vec<Vec<Sym>>, String> {
+    let n = x0.len();
+    let base: Vec<Series> = x0
+        .iter()
+        .map(|x| Series::constant(&x.coefficient(0).unwrap_or_else(|| x.ring().integer(0))))
+        .collect();
+    let t = Series::var(h.ring());
+    let zero = h.zero();
+    let mut cols = Vec::new();
+    for j in 0..n {
+        let mut xj = base.clone();
+        xj[j] = xj[j].clone() + t.clone();
+        let r = e(&xj, &zero)?;
+        failed(h)?;
+        if r.iter().any(|c| c.valuation() < 1) {
+            return Err("the map's equations do not hold at h = 0 at the starting value".into());
+        }
+        cols.push(
+            r.iter()
+                .map(|c| c.coefficient(1).ok_or("no linear term"))
+                .collect::<Result<Vec<Sym>, _>>()?,
+        );
+    }
+    let l = |i: usize, j: usize| cols[j][i].clone();
+    if n == 1 {
+        nonzero(&l(0, 0))?;
+        return Ok(vec![vec![l(0, 0).one() / l(0, 0)]]);
+    }
+    let m = Mat3::from_fn(l);
+    nonzero(&m.det())?;
+    let inv = m
+        .inverse()
+        .ok_or("the linearization at h = 0 is singular")?;
+    Ok(inv.0.iter().map(|row| row.to_vec()).collect())
+}
+
+/// A proved nonzero sign on the whole domain.
+fn nonzero(d: &Sym) -> Result<(), String> {
+    match d.sign() {
+        Ok(0) => Err("the linearization at h = 0 is singular".into()),
+        Ok(_) => Ok(()),
+        Err(e) => Err(format!("the linearization at h = 0: {e}")),
+    }
+}
+
+/// The ring's first error, if any.
+fn failed(h: &Series) -> Result<(), String> {
+    match h.ring().error() {
+        Some(e) => Err(e.to_string()),
+        None => Ok(()),
+    }
+}

@@ -1,0 +1,228 @@
+//! Asymptotic claims `f = O(hᵖ)` as `h → 0⁺` proved by exact power series in `h`
+//! ([`crate::algebra::series`]).
+//!
+//! The claim's variables are bound as in an identity's proof (indeterminates, cases,
+//! sign symbols); the small variable is the series variable, the claim's `let`s and
+//! `expr` are evaluated on power series with coefficients in the prover's tower, and the
+//! implicit maps are solved as series ([`crate::claims::implicit::Implicit::series`]).
+//! The claim is **proved** when every coefficient of an exponent below `p` has normal
+//! form 0; it is **refuted** when one of them is certified nonzero at a domain point
+//! (there `f ~ c·hᵉ` with `e < p`).  For `expr = norm(X)` the components of `X` are
+//! examined (also for `vnorm_inf` and `abs`): `‖X‖ = O(hᵖ)` exactly when every
+//! component is.
+
+use super::binding::bind_one;
+use super::case::Signs;
+use super::cases::{Role, case_points, role_of};
+use super::{ProofInfo, ProofMethod, merge};
+use crate::algebra::series::{Series, with_precision};
+use crate::algebra::{AlgResult, AlgebraError, Proof, Ring, RingOptions, Sym, prove_components};
+use crate::claims::ast::ExprKind;
+use crate::claims::catalogue::PExpr;
+use crate::claims::eval::Evaluator;
+use crate::claims::kind::Verdict;
+use crate::claims::sampler::{Point, Stream};
+use crate::claims::value::Value;
+use crate::claims::verdict::context::{Ctx, eval};
+use crate::claims::verdict::result::Evidence;
+use crate::numbers::Scalar;
+use std::time::Instant;
+
+/// Outer functions whose argument's components are examined instead: each of `‖X‖₂`,
+/// `‖X‖∞` and `|x|` is `O(hᵖ)` exactly when every real component of its argument is.
+const PEELED: [&str; 3] = ["norm", "vnorm_inf", "abs"];
+
+/// The most orders of `h` beyond the claimed one that a proof computes.
+const EXTRA_ORDERS: i32 = 4;
+
+/// The asymptotic claim as the series proof reads it.
+#[derive(Clone, Copy)]
+pub struct Order<'a> {
+    /// The expression.
+    pub expr: &'a PExpr,
+    /// The small variable.
+    pub var: &'a str,
+    /// The claimed order `p`.
+    pub order: f64,
+}
+
+/// Attempts the series proof of `expr = O(var^order)` on the claim's domain (every case
+/// of it).
+pub fn prove_order(ctx: Ctx<'_>, claim: Order<'_>) -> ProofInfo {
+    let t0 = Instant::now();
+    let sampler = match ctx.sampler(Stream::Proof) {
+        Ok(s) => s,
+        Err(c) => return ProofInfo::none(c.to_string()),
+    };
+    if let Some(why) = super::scope::not_analytic(ctx, sampler.variables(), &[claim.expr]) {
+        return ProofInfo::none(why);
+    }
+    let signs = Signs {
+        positivity: crate::claims::verdict::positivity::parametrization(sampler.variables()),
+    };
+    let plain: Vec<(String, (Role, usize))> = (sampler.variables().iter())
+        .map(|(n, p)| (n.clone(), role_of(p)))
+        .collect();
+    let roles: Vec<(String, Role, &PExpr)> = (sampler.variables().iter())
+        .zip(&plain)
+        .map(|((n, p), (_, (r, _)))| (n.clone(), r.clone(), *p))
+        .collect();
+    let cases = match case_points(ctx, &plain) {
+        Ok(c) if !c.is_empty() => c,
+        Ok(_) => return ProofInfo::none("no case of the domain has enough points"),
+        Err(m) => return ProofInfo::none(m),
+    };
+    let mut info = ProofInfo::none("");
+    info.reason = None;
+    info.method = ProofMethod::Series;
+    for (key, points) in &cases {
+        let p = prove_case(ctx, &roles, points, claim, &signs);
+        let stop = !p.is_proved();
+        merge(ctx, &mut info, key, p);
+        if stop {
+            break;
+        }
+    }
+    if info.is_proved() {
+        info.notes.push(format!(
+            "the coefficients of {}^e for e < {} of the power series are 0",
+            claim.var, claim.order
+        ));
+    }
+    info.ms = t0.elapsed().as_secs_f64() * 1e3;
+    info
+}
+
+/// One case: the coefficients below the order, each tested for 0.
+fn prove_case(
+    ctx: Ctx<'_>,
+    roles: &[(String, Role, &PExpr)],
+    points: &[Point],
+    claim: Order<'_>,
+    signs: &Signs,
+) -> Proof {
+    let opts = RingOptions {
+        points: points.len(),
+        positivity: signs.positivity.clone(),
+        ..RingOptions::default()
+    };
+    prove_components(opts, &ctx.claim.id, |ring| {
+        let first = claim.order.ceil() as i32 + 1;
+        let mut last = Err(AlgebraError::Domain("no precision tried".into()));
+        for n in first..=first + EXTRA_ORDERS {
+            last = with_precision(n, || coefficients(ctx, ring, roles, points, claim));
+            match &last {
+                Err(AlgebraError::Capacity(_)) => continue,
+                _ => break,
+            }
+        }
+        last
+    })
+}
+
+/// The coefficients of the exponents below the order, against 0; a
+/// [`AlgebraError::Capacity`] error when the working precision does not reach them.
+fn coefficients(
+    ctx: Ctx<'_>,
+    ring: &Ring,
+    roles: &[(String, Role, &PExpr)],
+    points: &[Point],
+    claim: Order<'_>,
+) -> AlgResult<Vec<(Sym, Sym)>> {
+    let fail = AlgebraError::Domain;
+    let ev = bind(ctx, ring, roles, points, claim.var)?;
+    let value = match &claim.expr.expr.kind {
+        ExprKind::Call(name, args) if PEELED.contains(&name.as_str()) && args.len() == 1 => {
+            ev.eval(&args[0]).map_err(|e| fail(e.message))?
+        }
+        _ => eval(&ev, claim.expr).map_err(fail)?,
+    };
+    if let Some(e) = ring.error() {
+        return Err(e);
+    }
+    let zero = ring.integer(0);
+    let mut pairs = Vec::new();
+    for s in value.components() {
+        let mut e = s.valuation().min(0);
+        while f64::from(e) < claim.order {
+            let c = s.coefficient(e).ok_or_else(|| {
+                AlgebraError::Capacity(format!(
+                    "the power series is known to O({}^{}) only",
+                    claim.var,
+                    s.precision()
+                ))
+            })?;
+            pairs.push((c, zero.clone()));
+            e += 1;
+        }
+    }
+    Ok(pairs)
+}
+
+/// The claim's variables as constant series, the small variable as the series
+/// variable, and the claim's `let`s.
+fn bind<'c>(
+    ctx: Ctx<'c>,
+    ring: &Ring,
+    roles: &[(String, Role, &PExpr)],
+    points: &[Point],
+    var: &str,
+) -> AlgResult<Evaluator<'c, Series>> {
+    let fail = AlgebraError::Domain;
+    let syms = Evaluator::new(&ctx.cat.registry, ring.integer(0));
+    let h = Series::var(ring);
+    let mut ev = Evaluator::new(&ctx.cat.registry, h.zero());
+    for (name, role, def) in roles {
+        let value = match role {
+            Role::Computed => eval(&ev, def).map_err(fail)?,
+            _ => bind_one(&syms, ring, name, role, def, points)?
+                .map(&mut |s: &Sym| Series::constant(s)),
+        };
+        ev.bind(name, value);
+    }
+    ev.bind(var, Value::Real(h));
+    for b in &ctx.claim.lets {
+        ev.bind_let(b)
+            .map_err(|e| fail(format!("let {}: {}", b.name, e.message)))?;
+    }
+    Ok(ev)
+}
+
+/// Makes a sampled asymptotic verdict `proved` when the series proof succeeds, and
+/// `refuted` with a certificate when a coefficient below the order is certified nonzero
+/// at a domain point (whatever the slopes said).  A series proof against a refutation
+/// by slopes is reported as the conflict it is.
+pub fn judge_order(ctx: Ctx<'_>, claim: Order<'_>, ev: &mut Evidence) {
+    if !matches!(
+        ev.verdict,
+        Verdict::Holds | Verdict::Refuted | Verdict::Inconclusive
+    ) {
+        return;
+    }
+    let mut info = prove_order(ctx, claim);
+    if info.is_proved() {
+        if ev.verdict == Verdict::Refuted {
+            ev.reason = format!(
+                "{}; the power series proves the order against this refutation (a conflict to investigate)",
+                ev.reason
+            );
+            info.method = ProofMethod::None;
+        } else {
+            ev.verdict = Verdict::Proved;
+            ev.reason = format!(
+                "every coefficient of {}^e, e < {}, of its exact power series is 0 ({}); the slopes agree",
+                claim.var,
+                claim.order,
+                info.extent()
+            );
+        }
+    } else if let Some(w) = info.witness.clone() {
+        info.method = ProofMethod::Witness;
+        ev.reason = format!(
+            "certified: a coefficient of {}^e, e < {}, of its exact power series is nonzero {w} (numerically: {})",
+            claim.var, claim.order, ev.reason
+        );
+        ev.verdict = Verdict::Refuted;
+    }
+    ev.proof = Some(info);
+}
