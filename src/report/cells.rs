@@ -19,12 +19,17 @@ pub fn verdict_badge(v: Verdict) -> &'static str {
 
 /// A claim's verdict badge: as [`verdict_badge`], with a refutation certified at an
 /// exact point (proof method `witness`) marked `✗✗` apart from a sampled one, and a
-/// negation proved by such a point marked `proved (witness)`.
+/// negation proved by such a point marked `proved (witness)`, and an asymptotic claim
+/// proved by exact power series marked `proved (power series)`.
 pub fn result_badge(r: &ClaimResult) -> &'static str {
-    let witness = r.proof.method == crate::claims::verdict::ProofMethod::Witness;
+    use crate::claims::verdict::ProofMethod;
+    let witness = r.proof.method == ProofMethod::Witness;
     match r.verdict {
         Verdict::Refuted if witness => return "✗✗ refuted (witness)",
         Verdict::Proved if witness => return "✓✓ proved (witness)",
+        Verdict::Proved if r.proof.method == ProofMethod::Series => {
+            return "✓✓ proved (power series)";
+        }
         _ => {}
     }
     verdict_badge(r.verdict)

@@ -45,15 +45,16 @@ pub fn certified_line(results: &[ClaimResult]) -> String {
             .filter(|r| r.verdict.name() == v && r.proof.method == m)
             .count()
     };
-    let (symbolic, negations) = (
+    let (symbolic, series, negations) = (
         by("proved", ProofMethod::Symbolic),
+        by("proved", ProofMethod::Series),
         by("proved", ProofMethod::Witness),
     );
     let refuted = by("refuted", ProofMethod::Witness);
     let judged = results.len() - g("defined");
     format!(
-        "certified: {} of the {judged} verdicts that are not definitions ({symbolic} proved symbolically, {negations} negations proved and {refuted} identities refuted at a point where lhs − rhs is certified nonzero); the other verdicts rest on sampling or, for the {} by construction, on the model's definitions",
-        symbolic + negations + refuted,
+        "certified: {} of the {judged} verdicts that are not definitions ({symbolic} proved symbolically, {series} orders proved by exact power series, {negations} negations proved, and {refuted} claims refuted at a point where lhs − rhs or a power-series coefficient below the claimed order is certified nonzero); the other verdicts rest on sampling or, for the {} by construction, on the model's definitions",
+        symbolic + series + negations + refuted,
         g("construction"),
     )
 }

@@ -16,6 +16,7 @@ mod iterations;
 mod lemmas;
 mod partials;
 mod proof_hints;
+mod series_orders;
 mod sign_cases;
 mod sound_proofs;
 mod splits;

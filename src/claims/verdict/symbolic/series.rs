@@ -106,7 +106,8 @@ fn prove_case(
         positivity: signs.positivity.clone(),
         ..RingOptions::default()
     };
-    prove_components(opts, &ctx.claim.id, |ring| {
+    let labels = std::sync::Mutex::new(Vec::new());
+    let mut proof = prove_components(opts, &ctx.claim.id, |ring| {
         let first = claim.order.ceil() as i32 + 1;
         let mut last = Err(AlgebraError::Domain("no precision tried".into()));
         for n in first..=first + EXTRA_ORDERS {
@@ -116,11 +117,29 @@ fn prove_case(
                 _ => break,
             }
         }
-        last
-    })
+        let (pairs, names): (Vec<_>, Vec<_>) = last?.into_iter().unzip();
+        *labels.lock().unwrap_or_else(|e| e.into_inner()) = names;
+        Ok(pairs)
+    });
+    let names = labels.into_inner().unwrap_or_else(|e| e.into_inner());
+    let rename = |text: &mut String| {
+        let named = (names.iter().enumerate().rev())
+            .find_map(|(i, n)| Some((text.strip_prefix(&format!("component {}: ", i + 1))?, n)));
+        let single = (names.len() == 1).then(|| (text.as_str(), &names[0]));
+        if let Some((rest, n)) = named.or(single) {
+            *text = format!("{n}: {rest}");
+        }
+    };
+    if let Some(w) = proof.witness.as_mut() {
+        rename(w);
+    }
+    if let crate::algebra::Outcome::NotProved(why) = &mut proof.outcome {
+        rename(why);
+    }
+    proof
 }
 
-/// The coefficients of the exponents below the order, against 0; a
+/// The coefficients of the exponents below the order, against 0, each with its name; a
 /// [`AlgebraError::Capacity`] error when the working precision does not reach them.
 fn coefficients(
     ctx: Ctx<'_>,
@@ -128,7 +147,7 @@ fn coefficients(
     roles: &[(String, Role, &PExpr)],
     points: &[Point],
     claim: Order<'_>,
-) -> AlgResult<Vec<(Sym, Sym)>> {
+) -> AlgResult<Vec<((Sym, Sym), String)>> {
     let fail = AlgebraError::Domain;
     let ev = bind(ctx, ring, roles, points, claim.var)?;
     let value = match &claim.expr.expr.kind {
@@ -142,7 +161,9 @@ fn coefficients(
     }
     let zero = ring.integer(0);
     let mut pairs = Vec::new();
-    for s in value.components() {
+    let comps = value.components();
+    let several = comps.len() > 1;
+    for (j, s) in comps.into_iter().enumerate() {
         let mut e = s.valuation().min(0);
         while f64::from(e) < claim.order {
             let c = s.coefficient(e).ok_or_else(|| {
@@ -152,7 +173,15 @@ fn coefficients(
                     s.precision()
                 ))
             })?;
-            pairs.push((c, zero.clone()));
+            let of = if several {
+                format!(" of component {}", j + 1)
+            } else {
+                String::new()
+            };
+            pairs.push((
+                (c, zero.clone()),
+                format!("the coefficient of {}^{e}{of}", claim.var),
+            ));
             e += 1;
         }
     }
@@ -219,8 +248,8 @@ pub fn judge_order(ctx: Ctx<'_>, claim: Order<'_>, ev: &mut Evidence) {
     } else if let Some(w) = info.witness.clone() {
         info.method = ProofMethod::Witness;
         ev.reason = format!(
-            "certified: a coefficient of {}^e, e < {}, of its exact power series is nonzero {w} (numerically: {})",
-            claim.var, claim.order, ev.reason
+            "certified: in its exact power series, {w} (numerically: {})",
+            ev.reason
         );
         ev.verdict = Verdict::Refuted;
     }

@@ -1,0 +1,106 @@
+//! Asymptotic claims decided by exact power series in the small variable: an order is
+//! proved when every coefficient below it is 0, and an order stated too high is refuted
+//! with a coefficient certified nonzero at a domain point.
+
+use super::support::{controls_only, with_catalogue};
+use eulertop::claims::verdict::{Options, ProofMethod, Verdict, run_claim};
+
+/// An asymptotic control claim `expr = O(h^order)` over `vars`.
+fn order_claim(id: &str, vars: &str, expr: &str, order: &str) -> String {
+    format!(
+        r#"
+[[claim]]
+id = "{id}"
+environment = "Section 2"
+role = "statement"
+labels = []
+location = "control: an order in h"
+printed = "O(h^p)"
+kind = "asymptotic"
+expect = "holds"
+vars = [{vars}]
+expr = "{expr}"
+var = "h"
+order = {order}
+h0 = 0.05
+steps = 6
+"#
+    )
+}
+
+fn verdict(text: String, seed: u64) -> eulertop::claims::verdict::ClaimResult {
+    let cat = controls_only(text);
+    let mut claim = cat.claims[0].clone();
+    claim.seed ^= seed;
+    run_claim(&cat, &claim, &Options::default())
+}
+
+const SN_VARS: &str = r#"["u", "uniform(-1, 1)"], ["k", "uniform(0.1, 0.9)"]"#;
+
+#[test]
+fn a_second_order_remainder_is_proved_and_third_order_refuted() {
+    // cn(u + h) − cn u + h sn u dn u = −(h²/2)(cn u)(dn² u − k² sn² u) + O(h³)
+    let e = "cn(u + h, k) - cn(u, k) + h * sn(u, k) * dn(u, k)";
+    let r = verdict(order_claim("o2", SN_VARS, e, "2"), 0);
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+    assert_eq!(r.proof.method, ProofMethod::Series, "{}", r.reason);
+    let r = verdict(order_claim("o3", SN_VARS, e, "3"), 0);
+    assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
+    assert_eq!(r.proof.method, ProofMethod::Witness, "{}", r.reason);
+    assert!(r.reason.contains("coefficient of h^2"), "{}", r.reason);
+}
+
+#[test]
+fn a_third_order_remainder_is_proved_and_fourth_order_refuted() {
+    // sn h − h = −(1 + k²) h³/6 + O(h⁵) (DLMF 22.10.1)
+    let e = "sn(h, k) - h";
+    let r = verdict(order_claim("o3", SN_VARS, e, "3"), 0);
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+    let r = verdict(order_claim("o4", SN_VARS, e, "4"), 0);
+    assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
+    assert!(r.reason.contains("coefficient of h^3"), "{}", r.reason);
+    // with the printed coefficient the remainder is O(h⁵)
+    let exact = "sn(h, k) - h + (1 + k^2) * h^3 / 6";
+    let r = verdict(order_claim("o5", SN_VARS, exact, "5"), 0);
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+}
+
+#[test]
+fn an_implicit_step_is_expanded_as_a_series() {
+    // the midpoint rule γ₀ = 1: M̂ = M + h M×Ω(M) + O(h²) with the right-handed
+    // orientation of (impl spec) is wrong at first order, the left-handed one right
+    let vars = r#"["M", "vec(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1))"], ["A", "uniform(3, 4)"], ["B", "uniform(2, 2.5)"], ["C", "uniform(1, 1.5)"]"#;
+    let right = "norm(step_gamma0(M, h, A, B, C) - M - h * cross(OmP(M, A, B, C), M))";
+    let wrong = "norm(step_gamma0(M, h, A, B, C) - M - h * cross(M, OmP(M, A, B, C)))";
+    let with_branch = |t: String| t.replace("vars = ", "hypotheses = [\"branch-gamma0\"]\nvars = ");
+    let cat = with_catalogue(
+        with_branch(order_claim("zz.right", vars, right, "2"))
+            + &with_branch(order_claim("zz.wrong", vars, wrong, "2")),
+    );
+    let run = |id: &str| {
+        let c = cat.claims.iter().find(|c| c.id == id).expect("claim");
+        run_claim(&cat, c, &Options::default())
+    };
+    let r = run("zz.right");
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+    let r = run("zz.wrong");
+    assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
+    assert_eq!(r.proof.method, ProofMethod::Witness, "{}", r.reason);
+}
+
+#[test]
+fn a_claim_false_on_a_few_percent_of_its_domain_is_never_proved() {
+    // the first-order coefficient x − 0.97 vanishes nowhere but is negative on 3 % of
+    // [0, 1]; |·| of it is no O(h²), and no seed may prove it
+    let vars = r#"["x", "uniform(0, 1)"]"#;
+    for seed in 0..6 {
+        for e in [
+            "h * max(x - 0.97, 0)",
+            "h * abs(x - 0.97)",
+            "h * (x - 0.97)",
+        ] {
+            let r = verdict(order_claim("probe", vars, e, "2"), seed);
+            assert_ne!(r.verdict, Verdict::Proved, "seed {seed}, {e}: {}", r.reason);
+        }
+    }
+}
