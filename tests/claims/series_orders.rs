@@ -104,3 +104,80 @@ fn a_claim_false_on_a_few_percent_of_its_domain_is_never_proved() {
         }
     }
 }
+
+/// A control identity `|a| = a` in `h` resting on the sign hypothesis `when`.
+fn sign_claim(id: &str, name: &str, when: &str, a: &str) -> String {
+    format!(
+        r#"
+[hypothesis.{name}]
+when = "{when}"
+statement = "a control condition"
+paper = "none: a control"
+
+[[claim]]
+id = "{id}"
+environment = "Section 2"
+role = "statement"
+labels = []
+location = "control: a sign hypothesis in h"
+printed = "|a| = a"
+kind = "identity"
+expect = "holds"
+hypotheses = ["{name}"]
+vars = [["h", "uniform(0.01, 0.1)"], ["k", "uniform(0.1, 0.9)"]]
+lhs = "abs({a})"
+rhs = "{a}"
+"#
+    )
+}
+
+#[test]
+fn a_sign_hypothesis_true_for_small_h_is_discharged_and_one_false_there_is_not() {
+    let cat = with_catalogue(
+        sign_claim(
+            "zz.small",
+            "zz-small",
+            "cn(h, k) > sn(h, k)",
+            "cn(h, k) - sn(h, k)",
+        ) + &sign_claim("zz.far", "zz-far", "sn(h, k) > 0.005", "sn(h, k) - 0.005"),
+    );
+    let run = |id: &str| {
+        let c = cat.claims.iter().find(|c| c.id == id).expect("claim");
+        run_claim(&cat, c, &Options::default())
+    };
+    let kinds = |r: &eulertop::claims::verdict::ClaimResult| -> Vec<&str> {
+        r.proof.hypotheses.iter().map(|h| h.kind).collect()
+    };
+    let r = run("zz.small");
+    assert_eq!(
+        r.verdict,
+        Verdict::Proved,
+        "{} {:?}",
+        r.reason,
+        r.proof.reason
+    );
+    assert_eq!(kinds(&r), ["small h"], "{:?}", r.proof.hypotheses);
+    // sn(h) > 0.005 holds on the sampled h but not as h → 0: it stays a stated sign
+    let r = run("zz.far");
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+    assert_eq!(kinds(&r), ["sign"], "{:?}", r.proof.hypotheses);
+}
+
+#[test]
+fn the_papers_sign_hypotheses_hold_for_small_h() {
+    let cat = with_catalogue(String::new());
+    for id in [
+        "sec8.thm2.gammaMV",
+        "sec8.GammaMV.up",
+        "sec8.master-vm-form.lo",
+    ] {
+        let c = cat.claims.iter().find(|c| c.id == id).expect("claim");
+        let r = run_claim(&cat, c, &Options::default());
+        assert_eq!(r.verdict, Verdict::Proved, "{id}: {}", r.reason);
+        assert!(
+            r.proof.hypotheses.iter().all(|h| h.kind != "sign"),
+            "{id}: {:?}",
+            r.proof.hypotheses
+        );
+    }
+}

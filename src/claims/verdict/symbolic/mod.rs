@@ -106,6 +106,7 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
     if let Some(mut joint) =
         prove_signs_jointly(ctx, &roles, &cases, (lhs, rhs), (certificate, &signs))
     {
+        small_h(ctx, &mut joint);
         joint.ms = t0.elapsed().as_secs_f64() * 1e3;
         return with_lemmas(ctx, joint);
     }
@@ -136,8 +137,29 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
             }
         }
     }
+    small_h(ctx, &mut info);
     info.ms = t0.elapsed().as_secs_f64() * 1e3;
     with_lemmas(ctx, info)
+}
+
+/// Marks the proof's sign hypotheses that hold for every small enough `h > 0`
+/// ([`series::small_h_signs`]): the claim then holds for h small enough, as the paper
+/// states it, with no sign condition beyond that.
+fn small_h(ctx: Ctx<'_>, info: &mut ProofInfo) {
+    if !info.is_proved() || !info.hypotheses.iter().any(|h| h.kind == "sign") {
+        return;
+    }
+    let small = series::small_h_signs(ctx);
+    for h in info.hypotheses.iter_mut() {
+        let name = h.source.trim_start_matches("hypothesis.");
+        if h.kind == "sign" && small.iter().any(|s| s == name) {
+            h.kind = "small h";
+            h.statement = format!(
+                "{} (holds for every small enough h > 0: the leading coefficient of its power series in h is proved positive on the domain)",
+                h.statement
+            );
+        }
+    }
 }
 
 /// A proof that rests on lemmas stands only when they are proved.

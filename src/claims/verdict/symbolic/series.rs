@@ -19,6 +19,7 @@ use crate::algebra::series::{Series, with_precision};
 use crate::algebra::{AlgResult, AlgebraError, Proof, Ring, RingOptions, Sym, prove_components};
 use crate::claims::ast::ExprKind;
 use crate::claims::catalogue::PExpr;
+use crate::claims::catalogue::claim::HypothesisKind;
 use crate::claims::eval::Evaluator;
 use crate::claims::kind::Verdict;
 use crate::claims::sampler::{Point, Stream};
@@ -254,4 +255,74 @@ pub fn judge_order(ctx: Ctx<'_>, claim: Order<'_>, ev: &mut Evidence) {
         ev.verdict = Verdict::Refuted;
     }
     ev.proof = Some(info);
+}
+
+/// The claim's sign hypotheses (`when = "a > b"`) that hold for every small enough
+/// `h > 0`, as the paper's "for h small enough" says: with the claim's variable `h` the
+/// series variable, the leading coefficient of `±(a − b)` is proved positive on the
+/// domain, in every case of it.  Empty when the claim has no free variable `h`.
+pub(super) fn small_h_signs(ctx: Ctx<'_>) -> Vec<String> {
+    let signs: Vec<(String, PExpr, i32)> = (ctx.cat.hypotheses_of(ctx.claim).into_iter())
+        .filter_map(|h| match &h.kind {
+            HypothesisKind::Sign { condition, sign } => {
+                Some((h.name.clone(), condition.clone(), *sign))
+            }
+            HypothesisKind::Branch(_) => None,
+        })
+        .collect();
+    let Ok(sampler) = ctx.sampler(Stream::Proof) else {
+        return Vec::new();
+    };
+    let plain: Vec<(String, (Role, usize))> = (sampler.variables().iter())
+        .map(|(n, p)| (n.clone(), role_of(p)))
+        .collect();
+    if signs.is_empty() || !plain.iter().any(|(n, (r, _))| n == "h" && *r == Role::Free) {
+        return Vec::new();
+    }
+    let roles: Vec<(String, Role, &PExpr)> = (sampler.variables().iter())
+        .zip(&plain)
+        .map(|((n, p), (_, (r, _)))| (n.clone(), r.clone(), *p))
+        .collect();
+    let Ok(cases) = case_points(ctx, &plain) else {
+        return Vec::new();
+    };
+    let positivity = crate::claims::verdict::positivity::parametrization(sampler.variables());
+    let mut holds = vec![!cases.is_empty(); signs.len()];
+    for points in cases.values() {
+        let ring = Ring::new(RingOptions {
+            points: points.len(),
+            positivity: positivity.clone(),
+            ..RingOptions::default()
+        });
+        with_precision(4, || {
+            let ev = bind(ctx, &ring, &roles, points, "h").ok();
+            for (ok, (_, condition, sign)) in holds.iter_mut().zip(&signs) {
+                *ok &= ev
+                    .as_ref()
+                    .is_some_and(|ev| positive_for_small_h(ev, condition, *sign));
+            }
+        });
+    }
+    (signs.into_iter().zip(holds))
+        .filter(|(_, ok)| *ok)
+        .map(|((name, _, _), _)| name)
+        .collect()
+}
+
+/// Is `sign·(a − b)` of the condition `a ≷ b` positive for small `h > 0` (its leading
+/// coefficient proved positive, no error in the ring)?
+fn positive_for_small_h(ev: &Evaluator<'_, Series>, condition: &PExpr, sign: i32) -> bool {
+    let ExprKind::Binary(_, a, b) = &condition.expr.kind else {
+        return false;
+    };
+    let side = |e| match ev.eval(e) {
+        Ok(Value::Real(x)) => Some(x),
+        _ => None,
+    };
+    let (Some(a), Some(b)) = (side(a), side(b)) else {
+        return false;
+    };
+    let d = if sign > 0 { a - b } else { b - a };
+    let ring = d.ring().clone();
+    matches!(d.sign(), Ok(1)) && ring.error().is_none()
 }
