@@ -129,6 +129,7 @@ pub mod roots;
 mod scalar;
 pub mod series;
 mod series_scalar;
+pub mod series_solve;
 pub mod shadow;
 pub mod sign_state;
 pub mod split;

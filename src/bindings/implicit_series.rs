@@ -12,8 +12,9 @@
 //! `E(x₀, 0) = 0` is checked exactly, and `L`'s determinant has a proved sign.
 
 use super::euler_top::{ModelFn, err, inertia, params, v3};
+use crate::algebra::AssumptionKind;
 use crate::algebra::series::Series;
-use crate::algebra::{AssumptionKind, Sym};
+use crate::algebra::series_solve::solve;
 use crate::claims::implicit::Implicit;
 use crate::claims::value::Value;
 use crate::linalg::{Mat3, Vec3};
@@ -22,9 +23,6 @@ use crate::model::elliptic_coords::sncndn_params;
 use crate::model::phase::{master12_equation, mv_master_equation};
 use crate::model::veselov_moser::{cayley, hat, j_diag, omega_residual, vm_conjugate};
 use crate::numbers::Scalar;
-
-/// The equations `E(x, h)` of a map, as components.
-type Equations<'a> = dyn Fn(&[Series], &Series) -> Result<Vec<Series>, String> + 'a;
 
 /// `f(args)` as a power series (see the module doc).
 pub(super) fn series(f: ModelFn, args: &[Value<Series>]) -> Result<Value<Series>, String> {
@@ -120,89 +118,4 @@ fn phase(f: ModelFn, args: &[Value<Series>], h: &Series) -> Result<Value<Series>
     };
     let x = solve(vec![h.zero()], &e, h)?;
     Ok(Value::Real(x[0].clone()))
-}
-
-/// The power-series root of `e(x, h) = 0` with `x(0) = x0(0)` (see the module doc).
-fn solve(x0: Vec<Series>, e: &Equations<'_>, h: &Series) -> Result<Vec<Series>, String> {
-    let inv = linearization_inverse(&x0, e, h)?;
-    let mut x = x0;
-    let rounds = h.precision().max(1) + 2;
-    for _ in 0..rounds {
-        let r = e(&x, h)?;
-        let next: Vec<Series> = (0..x.len())
-            .map(|i| {
-                let step = (0..x.len()).fold(h.zero(), |acc, j| {
-                    acc + Series::constant(&inv[i][j]) * r[j].clone()
-                });
-                x[i].clone() - step
-            })
-            .collect();
-        failed(h)?;
-        if next == x {
-            return Ok(x);
-        }
-        x = next;
-    }
-    Err(format!(
-        "the power series of the map's root did not settle in {rounds} steps"
-    ))
-}
-
-/// `L⁻¹` for `L = ∂E/∂x (x₀(0), 0)`, after checking `E(x₀(0), 0) = 0` exactly and that
-/// `det L` has a proved sign.
-fn linearization_inverse(
-    x0: &[Series],
-    e: &Equations<'_>,
-    h: &Series,
-) -> Result<Vec<Vec<Sym>>, String> {
-    let n = x0.len();
-    let base: Vec<Series> = x0
-        .iter()
-        .map(|x| Series::constant(&x.coefficient(0).unwrap_or_else(|| x.ring().integer(0))))
-        .collect();
-    let t = Series::var(h.ring());
-    let zero = h.zero();
-    let mut cols = Vec::new();
-    for j in 0..n {
-        let mut xj = base.clone();
-        xj[j] = xj[j].clone() + t.clone();
-        let r = e(&xj, &zero)?;
-        failed(h)?;
-        if r.iter().any(|c| c.valuation() < 1) {
-            return Err("the map's equations do not hold at h = 0 at the starting value".into());
-        }
-        cols.push(
-            r.iter()
-                .map(|c| c.coefficient(1).ok_or("no linear term"))
-                .collect::<Result<Vec<Sym>, _>>()?,
-        );
-    }
-    let l = |i: usize, j: usize| cols[j][i].clone();
-    if n == 1 {
-        nonzero(&l(0, 0))?;
-        return Ok(vec![vec![l(0, 0).one() / l(0, 0)]]);
-    }
-    let m = Mat3::from_fn(l);
-    nonzero(&m.det())?;
-    let inv = m
-        .inverse()
-        .ok_or("the linearization at h = 0 is singular")?;
-    Ok(inv.0.iter().map(|row| row.to_vec()).collect())
-}
-
-/// A proved nonzero sign on the whole domain.
-fn nonzero(d: &Sym) -> Result<(), String> {
-    match d.sign() {
-        Ok(0) => Err("the linearization at h = 0 is singular".into()),
-        Ok(_) => Ok(()),
-        Err(e) => Err(format!("the linearization at h = 0: {e}")),
-    }
-}
-
-/// The ring's first error, if any.
-fn failed(h: &Series) -> Result<(), String> {
-    match h.ring().error() {
-        Some(e) => Err(e.to_string()),
-        None => Ok(()),
-    }
 }

@@ -270,7 +270,17 @@ fn judge(ctx: Ctx<'_>, opts: &Options) -> Result<Evidence, Failure> {
                 in_set: in_set.as_ref(),
                 tries: *tries,
             };
-            existence::run(ctx, spec, bits)
+            let mut ev = existence::run(ctx, spec, bits)?;
+            if opts.exact {
+                let sys = symbolic::System {
+                    unknowns,
+                    equations,
+                    start,
+                    in_set: in_set.as_ref(),
+                };
+                symbolic::judge_existence(ctx, sys, &mut ev);
+            }
+            Ok(ev)
         }
         Body::Negation(inner) => Ok(negation::judge(&run_claim(ctx.cat, inner, opts))),
     }

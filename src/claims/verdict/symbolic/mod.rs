@@ -46,6 +46,7 @@
 mod binding;
 mod case;
 mod cases;
+mod existence_ift;
 mod linear;
 mod scope;
 mod series;
@@ -61,6 +62,7 @@ use crate::claims::sampler::{Point, Stream};
 use crate::claims::value::Value;
 use case::{Signs, prove_case};
 use cases::{Cases, Role, case_points, role_of};
+pub use existence_ift::{System, judge_existence, prove_existence};
 use scope::{evaluates_pi, iteration, not_analytic, states_condition};
 pub use series::{Order, judge_order, prove_order};
 use std::time::Instant;

@@ -150,7 +150,7 @@ fn coefficients(
     claim: Order<'_>,
 ) -> AlgResult<Vec<((Sym, Sym), String)>> {
     let fail = AlgebraError::Domain;
-    let ev = bind(ctx, ring, roles, points, claim.var)?;
+    let ev = bind(ctx, ring, roles, points, (claim.var, Series::var(ring)))?;
     let value = match &claim.expr.expr.kind {
         ExprKind::Call(name, args) if PEELED.contains(&name.as_str()) && args.len() == 1 => {
             ev.eval(&args[0]).map_err(|e| fail(e.message))?
@@ -189,28 +189,65 @@ fn coefficients(
     Ok(pairs)
 }
 
-/// The claim's variables as constant series, the small variable as the series
-/// variable, and the claim's `let`s.
-fn bind<'c>(
+/// The claim's variables as constant series, the small variable `var` as `at` (the
+/// series variable, or 0 for the equations at `var = 0`), and the claim's `let`s.
+pub(super) fn bind<'c>(
     ctx: Ctx<'c>,
     ring: &Ring,
     roles: &[(String, Role, &PExpr)],
     points: &[Point],
+    var: (&str, Series),
+) -> AlgResult<Evaluator<'c, Series>> {
+    let syms = symbols(ctx, ring, roles, points, var.0)?;
+    scope(ctx, roles, &syms, var)
+}
+
+/// The symbols of the sampled variables other than `var` and the computed ones, as
+/// constant series (`None` where the value is computed), created once per ring.
+pub(super) fn symbols(
+    ctx: Ctx<'_>,
+    ring: &Ring,
+    roles: &[(String, Role, &PExpr)],
+    points: &[Point],
     var: &str,
+) -> AlgResult<Vec<Option<Value<Series>>>> {
+    let syms = Evaluator::new(&ctx.cat.registry, ring.integer(0));
+    (roles.iter())
+        .map(|(name, role, def)| {
+            if name == var || *role == Role::Computed {
+                return Ok(None);
+            }
+            let v = bind_one(&syms, ring, name, role, def, points)?;
+            Ok(Some(v.map(&mut |s: &Sym| Series::constant(s))))
+        })
+        .collect()
+}
+
+/// The evaluator of the claim's variables ([`symbols`]) with `var` at `at`, the computed
+/// variables and the `let`s evaluated from them.
+pub(super) fn scope<'c>(
+    ctx: Ctx<'c>,
+    roles: &[(String, Role, &PExpr)],
+    syms: &[Option<Value<Series>>],
+    (var, at): (&str, Series),
 ) -> AlgResult<Evaluator<'c, Series>> {
     let fail = AlgebraError::Domain;
-    let syms = Evaluator::new(&ctx.cat.registry, ring.integer(0));
-    let h = Series::var(ring);
-    let mut ev = Evaluator::new(&ctx.cat.registry, h.zero());
-    for (name, role, def) in roles {
-        let value = match role {
-            Role::Computed => eval(&ev, def).map_err(fail)?,
-            _ => bind_one(&syms, ring, name, role, def, points)?
-                .map(&mut |s: &Sym| Series::constant(s)),
+    let mut ev = Evaluator::new(&ctx.cat.registry, at.zero());
+    let mut bound = false;
+    for ((name, _, def), sym) in roles.iter().zip(syms) {
+        let value = match sym {
+            _ if name == var => {
+                bound = true;
+                Value::Real(at.clone())
+            }
+            Some(v) => v.clone(),
+            None => eval(&ev, def).map_err(fail)?,
         };
         ev.bind(name, value);
     }
-    ev.bind(var, Value::Real(h));
+    if !bound {
+        ev.bind(var, Value::Real(at));
+    }
     for b in &ctx.claim.lets {
         ev.bind_let(b)
             .map_err(|e| fail(format!("let {}: {}", b.name, e.message)))?;
@@ -295,7 +332,7 @@ pub(super) fn small_h_signs(ctx: Ctx<'_>) -> Vec<String> {
             ..RingOptions::default()
         });
         with_precision(4, || {
-            let ev = bind(ctx, &ring, &roles, points, "h").ok();
+            let ev = bind(ctx, &ring, &roles, points, ("h", Series::var(&ring))).ok();
             for (ok, (_, condition, sign)) in holds.iter_mut().zip(&signs) {
                 *ok &= ev
                     .as_ref()
