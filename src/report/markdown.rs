@@ -53,7 +53,7 @@ pub fn certified_line(results: &[ClaimResult]) -> String {
     let refuted = by("refuted", ProofMethod::Witness);
     let judged = results.len() - g("defined");
     format!(
-        "certified: {} of the {judged} verdicts that are not definitions ({symbolic} proved symbolically, {series} orders proved by exact power series, {negations} negations proved, and {refuted} claims refuted at a point where lhs − rhs or a power-series coefficient below the claimed order is certified nonzero); the other verdicts rest on sampling or, for the {} by construction, on the model's definitions",
+        "certified: {} of the {judged} verdicts that are not definitions ({symbolic} proved symbolically, {series} proved by exact power series (orders, and existence for small h), {negations} negations proved, and {refuted} claims refuted at a point where lhs − rhs or a power-series coefficient below the claimed order is certified nonzero); the other verdicts rest on sampling or, for the {} by construction, on the model's definitions",
         symbolic + series + negations + refuted,
         g("construction"),
     )

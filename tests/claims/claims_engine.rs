@@ -378,13 +378,15 @@ fn thin_domain_is_a_clear_inconclusive() {
 
 #[test]
 fn asymptotic_slopes() {
-    // sin h − h = −h³/6 + O(h⁵): order 3 holds, order 4 is refuted
+    // sin h − h = −h³/6 + O(h⁵): order 3 holds (and its power series proves it), order 4
+    // is refuted
     let base = "kind = \"asymptotic\"\nvars = [[\"x\", \"uniform(1, 2)\"]]\nexpr = \"x * (sin(h) - h)\"\nvar = \"h\"\nh0 = 0.05\nsteps = 5\n";
     let r = verdict_of(
-        &claim(&format!("{base}expect = \"holds\"\norder = 3")),
+        &claim(&format!("{base}expect = \"proved\"\norder = 3")),
         &LADDER,
     );
-    assert_eq!(r.verdict, Verdict::Holds, "{}", r.reason);
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+    assert!(r.as_expected);
     assert!((r.residuals[3].slope().unwrap() - 3.0).abs() < 0.01);
     let r = verdict_of(
         &claim(&format!("{base}expect = \"refuted\"\norder = 4")),
