@@ -96,10 +96,11 @@ macro_rules! by_duals {
         }
     )*};
 }
-by_duals!(f64, Float);
+// a derivative of a derivative: duals of duals (second order, no further)
+by_duals!(f64, Float, Dual<f64>, Dual<Float>);
 
 macro_rules! cannot_derive {
-    ($($t:ty),*) => {$(
+    ($($t:ty => $why:expr),* $(,)?) => {$(
         impl Differentiate for $t {
             fn derive(
                 _ev: &Evaluator<'_, Self>,
@@ -107,14 +108,17 @@ macro_rules! cannot_derive {
                 var: &str,
                 _comp: Option<i64>,
             ) -> Result<Value<Self>, EvalError> {
-                Err(EvalError::new(format!(
-                    "d(..., {var}): nested derivatives and exact derivatives are not supported"
-                )))
+                Err(EvalError::new(format!("d(..., {var}): {} are not supported", $why)))
             }
         }
     )*};
 }
-cannot_derive!(Dual<f64>, Dual<Float>, Dual<Sym>, Rational);
+cannot_derive!(
+    Dual<Dual<f64>> => "derivatives of order 3 or more",
+    Dual<Dual<Float>> => "derivatives of order 3 or more",
+    Dual<Sym> => "derivatives inside a function differentiated in its parameter",
+    Rational => "derivatives in exact rational arithmetic",
+);
 
 /// Exact derivatives: the derivation of the prover's tower with respect to the
 /// indeterminate bound to `var` (every value already depends on it through the

@@ -1057,6 +1057,17 @@ fn w1_cd_and_dc_at_k_equal_to_one_are_one() {
         jacobi_values(&["--functions", "cd,dc", "--bits", "256"], "1e9 1\n"),
         [1.0, 1.0]
     );
+    // and they are not next to a pole: no warning about their condition
+    for input in ["800 1\n", "3 1\n"] {
+        let o = run_in(
+            None,
+            &["jacobi", "--functions", "cd,dc"],
+            input.as_bytes(),
+            Stdio::piped(),
+        );
+        assert_eq!(o.code, Some(0), "{}", o.stderr);
+        assert!(!o.stderr.contains("warning"), "{input}: {}", o.stderr);
+    }
     for f in ["cd", "dc"] {
         let o = run(&["eval", &format!("{f}(1e3, 1)")]);
         assert_eq!(o.code, Some(0), "{}", o.stderr);
@@ -1559,4 +1570,161 @@ fn r2_a_proof_that_evaluates_pi_fails_before_the_work() {
         o.stdout,
         o.stderr
     );
+}
+
+// -- R4: second derivatives -------------------------------------------------------------
+
+#[test]
+fn r4_a_derivative_of_a_derivative_is_the_second_derivative() {
+    // DLMF 22.13: sn'' = −(1 + k²) sn + 2k² sn³; at k = 0.5: −1.25 sn + 0.5 sn³
+    for bits in ["53", "256"] {
+        let o = run(&[
+            "eval",
+            "--bits",
+            bits,
+            "--set",
+            "u=0.3",
+            "d(d(sn(u,0.5),u),u) + 1.25*sn(u,0.5) - 0.5*sn(u,0.5)^3",
+        ]);
+        let v: f64 = o.stdout.trim().parse().unwrap_or(f64::NAN);
+        assert!(v.abs() < 1e-14, "{bits}: {} {}", o.stdout, o.stderr);
+    }
+    // mixed partials: d/dy d/dx (x³y²) = 6x²y = 72 at (2, 3); of a vec3 component too
+    let o = run(&["eval", "--set", "x=2", "--set", "y=3", "d(d(x^3*y^2,x),y)"]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(72.0),
+        "{}",
+        o.stderr
+    );
+    let o = run(&["eval", "--set", "M=vec(1,2,3)", "d(d(M[1]^2*M[2],M,1),M,2)"]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(2.0),
+        "{}",
+        o.stderr
+    );
+    // a third derivative is refused by its order
+    let o = run(&["eval", "--set", "x=2", "d(d(d(x^3,x),x),x)"]);
+    assert_one_line_error(&o, &["order 3"], "third derivative");
+}
+
+#[test]
+fn r4_a_second_derivative_in_a_claim_is_checked_and_proved() {
+    let claim = |id: &str, sign: &str| {
+        format!(
+            "[[claim]]\nid = \"{id}\"\nlocation = \"test\"\nprinted = 'x'\n\
+             environment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\n\
+             expect = \"holds\"\nvars = [[\"k\", \"uniform(0.1, 0.9)\"], [\"u\", \"uniform(0.2, 1.5)\"]]\n\
+             lhs = \"d(d(sn(u, k), u), u)\"\nrhs = \"-(1 + k^2) * sn(u, k) {sign} 2 * k^2 * sn(u, k)^3\"\n\n"
+        )
+    };
+    let text = claim("t.right", "+") + &claim("t.wrong", "-");
+    let dir = catalogue("second-derivative", text.as_bytes());
+    let o = run(&["prove", "t.right", "--catalogue", dir.to_str().unwrap()]);
+    assert!(o.stdout.contains(": proved"), "{}{}", o.stdout, o.stderr);
+    let o = run(&[
+        "verify",
+        "--catalogue",
+        dir.to_str().unwrap(),
+        "--format",
+        "json",
+    ]);
+    assert_no_crash(&o, "verify");
+    let verdict = |id: &str| {
+        let at = o
+            .stdout
+            .find(&format!("\"{id}\""))
+            .expect("claim in the json");
+        let rest = &o.stdout[at..];
+        let v = rest.find("\"verdict\"").expect("verdict");
+        rest[v..].split('"').nth(3).unwrap_or("").to_string()
+    };
+    assert_eq!(verdict("t.right"), "proved", "{}", o.stdout);
+    assert_eq!(verdict("t.wrong"), "refuted", "{}", o.stdout);
+}
+
+// -- M14: the excerpt of a parenthesised expression ---------------------------------------
+
+#[test]
+fn m14_the_excerpt_of_a_power_keeps_its_parenthesis() {
+    let text = "[[claim]]\nid = \"t.pow\"\nlocation = \"test\"\nprinted = 'x'\n\
+                environment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\n\
+                expect = \"holds\"\nvars = [[\"x\", \"uniform(0.1, 1)\"]]\n\
+                lhs = \"(1+x)^100000\"\nrhs = \"1\"\n";
+    let dir = catalogue("m14", text.as_bytes());
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert!(o.stdout.contains("at '(1+x)^100000'"), "{}", o.stdout);
+}
+
+// -- R3: the prover's messages on false and on complex-argument claims -------------------
+
+fn jacobi_claim(id: &str, expect: &str, vars: &str, lhs: &str, rhs: &str) -> String {
+    format!(
+        "[[claim]]\nid = \"{id}\"\nlocation = \"test\"\nprinted = 'x'\n\
+         environment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\n\
+         expect = \"{expect}\"\nvars = {vars}\nlhs = \"{lhs}\"\nrhs = \"{rhs}\"\n\n"
+    )
+}
+
+#[test]
+fn r3_a_false_addition_formula_is_not_called_zero() {
+    let uv =
+        r#"[["k", "uniform(0.1, 0.9)"], ["u", "uniform(0.2, 1.5)"], ["v", "uniform(0.2, 1.5)"]]"#;
+    let text = jacobi_claim(
+        "t.cd",
+        "refuted",
+        uv,
+        "cd(u + v, k)",
+        "(cd(u,k)*cd(v,k) - (1-k^2)*sd(u,k)*nd(u,k)*sd(v,k)*nd(v,k)) / (1 + k^2*cd(u,k)^2*cd(v,k)^2)",
+    ) + &jacobi_claim(
+        "t.nd",
+        "refuted",
+        uv,
+        "nd(u + v, k)",
+        "(nd(u,k)*nd(v,k) + k^2*sd(u,k)*cd(u,k)*sd(v,k)*cd(v,k)) / (1 + k^2*sn(u,k)^2*sn(v,k)^2)",
+    );
+    let dir = catalogue("r3-addition", text.as_bytes());
+    for id in ["t.cd", "t.nd"] {
+        let o = run(&["prove", id, "--catalogue", dir.to_str().unwrap()]);
+        let last = o.stdout.lines().last().unwrap_or("");
+        assert!(
+            last.starts_with("not proved"),
+            "{id}: {}{}",
+            o.stdout,
+            o.stderr
+        );
+        assert!(!last.contains("vanishes numerically"), "{id}: {last}");
+        assert!(last.contains("differ at domain point"), "{id}: {last}");
+    }
+}
+
+#[test]
+fn r3_claims_at_k_plus_i_k_prime_and_on_sd_are_proved() {
+    let ku = r#"[["k", "uniform(0.1, 0.9)"], ["u", "uniform(-1.5, 1.5)"]]"#;
+    let text = jacobi_claim(
+        "t.kk",
+        "holds",
+        ku,
+        "sn(u + K(k) + cplx(0,1)*K(sqrt(1-k^2)), k)",
+        "dc(u,k)/k",
+    ) + &jacobi_claim(
+        "t.sd",
+        "holds",
+        ku,
+        "sd(u,k)^2*(1-k^2)",
+        "(1-k^2)*sn(u,k)^2/(1-k^2*sn(u,k)^2)",
+    );
+    let dir = catalogue("r3-kk-sd", text.as_bytes());
+    for id in ["t.kk", "t.sd"] {
+        let o = run(&["prove", id, "--catalogue", dir.to_str().unwrap()]);
+        assert!(
+            o.stdout.lines().last().unwrap_or("").ends_with(": proved"),
+            "{id}: {}{}",
+            o.stdout,
+            o.stderr
+        );
+        assert!(!o.stdout.contains("internal inconsistency"), "{}", o.stdout);
+        assert!(!o.stdout.contains("overflows"), "{}", o.stdout);
+    }
 }
