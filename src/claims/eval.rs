@@ -906,10 +906,15 @@ where
             "d(): differentiate a vec3 variable by component: d(expr, v, j) or grad(expr, v)"
                 .into(),
         ),
+        (Value::Real(_), Some(j)) => Err(format!(
+            "d(): component {j} of a real variable (a component index needs a vec3 variable)"
+        )),
+        (Value::Vec3(_), Some(j)) => Err(format!(
+            "d(): component {j} of a vec3 variable (components are 1, 2 and 3)"
+        )),
         (v, _) => Err(format!(
-            "d(): cannot differentiate with respect to a {} (component {:?})",
-            v.type_name(),
-            comp
+            "d(): cannot differentiate with respect to a {}",
+            v.type_name()
         )),
     }
 }
