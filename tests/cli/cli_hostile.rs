@@ -1728,3 +1728,196 @@ fn r3_claims_at_k_plus_i_k_prime_and_on_sd_are_proved() {
         assert!(!o.stdout.contains("overflows"), "{}", o.stdout);
     }
 }
+
+// -- Whole-number options, sampled variables, output paths --------------------------------
+
+#[test]
+fn whole_number_options_name_a_negative_or_malformed_value() {
+    let cases: [(&[&str], &[&str]); 6] = [
+        (&["verify", "--seed", "-5"], &["--seed", "-5 is negative"]),
+        (&["verify", "--jobs", "-1"], &["--jobs", "-1 is negative"]),
+        (
+            &["prove", "x", "--proof-budget-ms", "-1"],
+            &["--proof-budget-ms", "negative"],
+        ),
+        (
+            &[
+                "step",
+                "--inertia",
+                "3,2,1",
+                "--h",
+                "0.1",
+                "--steps",
+                "1e3",
+                "1",
+                "1",
+                "1",
+            ],
+            &["--steps", "'1e3' is not a whole number"],
+        ),
+        (
+            &["eval", "--bits", "1.5", "1"],
+            &["--bits", "not a whole number"],
+        ),
+        (
+            &["eval", "--bits", "99999999999999999999", "1"],
+            &["--bits", "too large"],
+        ),
+    ];
+    for (args, needles) in cases {
+        assert_one_line_error(&run(args), needles, &args.join(" "));
+    }
+    let dir = temp_dir("init-year");
+    for year in ["-5", "99999"] {
+        let target = dir.join(year);
+        let o = run(&["init", target.to_str().unwrap(), "--year", year]);
+        assert_one_line_error(&o, &["--year", year, "1000..=9999"], "init --year");
+        assert!(
+            !target.exists(),
+            "init --year {year} wrote {}",
+            target.display()
+        );
+    }
+}
+
+fn one_var_claim(vars: &str) -> String {
+    format!(
+        "[[claim]]\nid = \"t.v\"\nlocation = \"test\"\nprinted = 'x'\n\
+         environment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\n\
+         expect = \"holds\"\nvars = {vars}\nlhs = \"x\"\nrhs = \"x\"\n"
+    )
+}
+
+#[test]
+fn a_variable_sampled_twice_is_a_load_error() {
+    let dir = catalogue(
+        "sampled-twice",
+        one_var_claim(r#"[["x", "uniform(0, 1)"], ["x", "uniform(2, 3)"]]"#).as_bytes(),
+    );
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_data_error(&o, &["t.toml:", "'x' is sampled twice"], "vars x twice");
+}
+
+#[test]
+fn a_domain_that_cannot_be_sampled_stops_verify() {
+    let dir = catalogue(
+        "unsampleable",
+        one_var_claim(r#"[["x", "uniform(1, 0)"]]"#).as_bytes(),
+    );
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_one_line_error(
+        &o,
+        &["claim t.v", "cannot be sampled", "uniform(1, 0)"],
+        "uniform(1, 0)",
+    );
+}
+
+#[test]
+fn output_paths_are_checked_before_the_work() {
+    let dir = temp_dir("output-paths");
+    let missing = dir.join("no-such-dir").join("x.svg");
+    let o = run(&[
+        "orbit",
+        "--inertia",
+        "3,2,1",
+        "--h",
+        "0.1",
+        "--steps",
+        "5",
+        "--svg",
+        missing.to_str().unwrap(),
+        "1",
+        "1",
+        "1",
+    ]);
+    assert_one_line_error(&o, &["--svg", "no directory"], "orbit --svg into nowhere");
+    assert!(
+        o.stdout.is_empty(),
+        "rows printed before the refusal: {}",
+        o.stdout
+    );
+    // one file for the certificate and the Coq script: refused, nothing written
+    let cat = catalogue(
+        "cert-coq-same",
+        one_var_claim(r#"[["x", "uniform(0, 1)"]]"#).as_bytes(),
+    );
+    let f = dir.join("c.out");
+    let f = f.to_str().unwrap();
+    let o = run(&[
+        "prove",
+        "t.v",
+        "--catalogue",
+        cat.to_str().unwrap(),
+        "--certificate",
+        f,
+        "--coq",
+        f,
+    ]);
+    assert_one_line_error(
+        &o,
+        &["--certificate", "--coq", "same file"],
+        "one file twice",
+    );
+    assert!(!Path::new(f).exists(), "{f} written");
+}
+
+#[test]
+fn a_derivative_component_is_named_in_words() {
+    let o = run(&["eval", "--set", "x=1", "d(x^2, x, 2)"]);
+    assert_one_line_error(&o, &["component 2 of a real variable"], "d(x^2, x, 2)");
+    assert!(!o.stderr.contains("Some("), "{}", o.stderr);
+    let o = run(&["eval", "--set", "M=vec(1,2,3)", "d(M[1], M, 4)"]);
+    assert_one_line_error(&o, &["component 4", "1, 2 and 3"], "d(M[1], M, 4)");
+}
+
+#[test]
+fn an_expression_may_start_with_a_minus_sign() {
+    for (args, want) in [
+        (&["eval", "-1"][..], -1.0),
+        (&["eval", "-x^2", "--set", "x=3"][..], -9.0),
+        (&["eval", "--bits", "64", "-2*3"][..], -6.0),
+    ] {
+        let o = run(args);
+        assert_eq!(
+            o.stdout.trim().parse::<f64>().ok(),
+            Some(want),
+            "{args:?}: {}",
+            o.stderr
+        );
+    }
+    // the absolute value of a negative zero is +0
+    let o = run(&["eval", "abs(-0)"]);
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    assert!(!o.stdout.starts_with('-'), "{}", o.stdout);
+}
+
+#[test]
+fn randint_names_its_range_limit() {
+    let dir = catalogue(
+        "randint-wide",
+        one_var_claim(r#"[["x", "randint(1, 1000000000000000000)"]]"#).as_bytes(),
+    );
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_one_line_error(
+        &o,
+        &["randint", "at most 10^12", "a = 1, b = 1000000000000000000"],
+        "randint",
+    );
+}
+
+#[test]
+fn an_infinite_derivative_is_named_as_such() {
+    for (expr, name) in [("d(sqrt(x), x)", "sqrt"), ("d(d(sqrt(x), x), x)", "sqrt")] {
+        let o = run(&["eval", "--set", "x=0", expr]);
+        assert_one_line_error(&o, &[&format!("derivative of {name}"), "not finite"], expr);
+    }
+    let o = run(&["eval", "--set", "x=1", "d(asin(x), x)"]);
+    assert_one_line_error(&o, &["derivative of asin"], "d(asin(x), x) at 1");
+}
+
+#[test]
+fn a_step_from_a_start_point_whose_m2_overflows_names_it() {
+    let o = run(&["eval", "step_gamma1(vec(1e300,2,3), 0.1, 3, 2, 1)"]);
+    assert_one_line_error(&o, &["M²", "overflows", "rescale M"], "huge M");
+    assert!(!o.stderr.contains("too large?"), "{}", o.stderr);
+}
