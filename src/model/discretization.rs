@@ -358,15 +358,25 @@ fn check_start<R: Real>(
             what()
         )));
     }
-    if !m.norm2().is_finite() {
-        return Err(ModelError::Undefined(format!(
-            "{}: M² = M₁² + M₂² + M₃² overflows at {} bits (|M_i| up to {:.3e}); rescale M",
-            what(),
-            mnorm.prec(),
-            mnorm.to_f64()
-        )));
+    check_m2_finite(m, mnorm, what)
+}
+
+/// `M²` of a start point is finite: else every residual of the step is NaN, and the
+/// failure would be blamed on the step size.
+pub(super) fn check_m2_finite<R: Real>(
+    m: &Vec3<R>,
+    mnorm: &R,
+    what: &dyn Fn() -> String,
+) -> Result<(), ModelError> {
+    if m.norm2().is_finite() {
+        return Ok(());
     }
-    Ok(())
+    Err(ModelError::Undefined(format!(
+        "{}: M² = M₁² + M₂² + M₃² overflows at {} bits (|M_i| up to {:.3e}); rescale M",
+        what(),
+        mnorm.prec(),
+        mnorm.to_f64()
+    )))
 }
 
 /// Solves (impl spec 1–3) for `M̂` by Newton's method (see the module docs for the
