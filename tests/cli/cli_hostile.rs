@@ -1932,3 +1932,18 @@ fn a_step_from_a_start_point_whose_m2_overflows_names_it() {
         assert!(!o.stderr.contains("too large?"), "{}", o.stderr);
     }
 }
+
+#[test]
+fn a_complex_argument_too_large_names_its_part() {
+    let o = run(&["eval", "sn(cplx(1e300, 1), 0.5)"]);
+    assert_one_line_error(&o, &["|Re u|/K", "Re u = 1e300"], "Re u huge");
+    let o = run(&["eval", "sn(cplx(1, 1e300), 0.5)"]);
+    assert_one_line_error(&o, &["|Im u|/K'", "Im u = 1e300"], "Im u huge");
+    let o = run_in(
+        None,
+        &["jacobi", "--complex"],
+        b"0.5 1e300 0.8\n",
+        Stdio::piped(),
+    );
+    assert_data_error(&o, &["<stdin>:1:", "Im u = 1e300"], "jacobi --complex");
+}
