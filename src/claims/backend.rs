@@ -225,6 +225,13 @@ fn real_fn_generic<R: Real>(x: &R, f: RealFn) -> Result<R, String> {
         Ok(r)
     } else if let Some(why) = Real::failure(&r) {
         Err(format!("{f:?}: {why}"))
+    } else if r.to_f64().is_finite() {
+        // a dual number: the value is finite, its derivative is not (√x at 0)
+        let name = format!("{f:?}").to_lowercase();
+        Err(format!(
+            "the derivative of {name} at {:.6e} is not finite",
+            x.to_f64()
+        ))
     } else {
         Err(format!("{f:?} of {:.6e} is not finite", x.to_f64()))
     }

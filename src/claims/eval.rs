@@ -96,10 +96,17 @@ macro_rules! by_duals {
         }
     )*};
 }
-by_duals!(f64, Float, crate::algebra::series::Series);
+// a derivative of a derivative: duals of duals (second order, no further)
+by_duals!(
+    f64,
+    Float,
+    Dual<f64>,
+    Dual<Float>,
+    crate::algebra::series::Series
+);
 
 macro_rules! cannot_derive {
-    ($($t:ty),*) => {$(
+    ($($t:ty => $why:expr),* $(,)?) => {$(
         impl Differentiate for $t {
             fn derive(
                 _ev: &Evaluator<'_, Self>,
@@ -107,19 +114,17 @@ macro_rules! cannot_derive {
                 var: &str,
                 _comp: Option<i64>,
             ) -> Result<Value<Self>, EvalError> {
-                Err(EvalError::new(format!(
-                    "d(..., {var}): nested derivatives and exact derivatives are not supported"
-                )))
+                Err(EvalError::new(format!("d(..., {var}): {} are not supported", $why)))
             }
         }
     )*};
 }
 cannot_derive!(
-    Dual<f64>,
-    Dual<Float>,
-    Dual<Sym>,
-    Rational,
-    Dual<crate::algebra::series::Series>
+    Dual<Dual<f64>> => "derivatives of order 3 or more",
+    Dual<Dual<Float>> => "derivatives of order 3 or more",
+    Dual<Sym> => "derivatives inside a function differentiated in its parameter",
+    Rational => "derivatives in exact rational arithmetic",
+    Dual<crate::algebra::series::Series> => "second derivatives of power series",
 );
 
 /// Exact derivatives: the derivation of the prover's tower with respect to the
@@ -908,10 +913,15 @@ where
             "d(): differentiate a vec3 variable by component: d(expr, v, j) or grad(expr, v)"
                 .into(),
         ),
+        (Value::Real(_), Some(j)) => Err(format!(
+            "d(): component {j} of a real variable (a component index needs a vec3 variable)"
+        )),
+        (Value::Vec3(_), Some(j)) => Err(format!(
+            "d(): component {j} of a vec3 variable (components are 1, 2 and 3)"
+        )),
         (v, _) => Err(format!(
-            "d(): cannot differentiate with respect to a {} (component {:?})",
-            v.type_name(),
-            comp
+            "d(): cannot differentiate with respect to a {}",
+            v.type_name()
         )),
     }
 }

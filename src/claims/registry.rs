@@ -30,6 +30,16 @@ pub trait ExtFunction: Send + Sync {
     fn call_dual_f64(&self, args: &[Value<Dual<f64>>]) -> Result<Value<Dual<f64>>, String>;
     /// On MPFR duals (derivatives).
     fn call_dual_mpfr(&self, args: &[Value<Dual<Float>>]) -> Result<Value<Dual<Float>>, String>;
+    /// On duals of f64 duals (second derivatives).
+    fn call_dual2_f64(
+        &self,
+        args: &[Value<Dual<Dual<f64>>>],
+    ) -> Result<Value<Dual<Dual<f64>>>, String>;
+    /// On duals of MPFR duals (second derivatives).
+    fn call_dual2_mpfr(
+        &self,
+        args: &[Value<Dual<Dual<Float>>>],
+    ) -> Result<Value<Dual<Dual<Float>>>, String>;
     /// On exact rationals.
     fn call_exact(&self, args: &[Value<Rational>]) -> Result<Value<Rational>, String>;
     /// On exact symbolic values (the prover's backend).
@@ -82,6 +92,18 @@ impl<G: GenericFunction> ExtFunction for G {
         self.call(a)
     }
     fn call_dual_mpfr(&self, a: &[Value<Dual<Float>>]) -> Result<Value<Dual<Float>>, String> {
+        self.call(a)
+    }
+    fn call_dual2_f64(
+        &self,
+        a: &[Value<Dual<Dual<f64>>>],
+    ) -> Result<Value<Dual<Dual<f64>>>, String> {
+        self.call(a)
+    }
+    fn call_dual2_mpfr(
+        &self,
+        a: &[Value<Dual<Dual<Float>>>],
+    ) -> Result<Value<Dual<Dual<Float>>>, String> {
         self.call(a)
     }
     fn call_exact(&self, a: &[Value<Rational>]) -> Result<Value<Rational>, String> {
@@ -157,6 +179,8 @@ host_call!(
     Float => call_mpfr,
     Dual<f64> => call_dual_f64,
     Dual<Float> => call_dual_mpfr,
+    Dual<Dual<f64>> => call_dual2_f64,
+    Dual<Dual<Float>> => call_dual2_mpfr,
     Rational => call_exact,
     Sym => call_sym,
     Dual<Sym> => call_dual_sym,

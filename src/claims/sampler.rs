@@ -271,7 +271,10 @@ impl<'c> Sampler<'c> {
         Ok(match p {
             Primitive::Uniform => {
                 if a.len() != 2 || a[0] >= a[1] || !a[0].is_finite() || !a[1].is_finite() {
-                    return Err("uniform(a, b) needs a < b".into());
+                    return Err(format!(
+                        "uniform(a, b) needs finite a < b, got {}",
+                        bounds(a)
+                    ));
                 }
                 let mut j = self.rng.gen_range(0..=UNIFORM_GRID);
                 if self.boundary {
@@ -294,13 +297,17 @@ impl<'c> Sampler<'c> {
                 (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
             }
             Primitive::Randint => {
-                if a.len() != 2
-                    || a[0].fract() != 0.0
-                    || a[1].fract() != 0.0
-                    || a[0] > a[1]
-                    || (a[1] - a[0]) > 1e12
-                {
-                    return Err("randint(a, b) needs integers a <= b".into());
+                if a.len() != 2 || a[0].fract() != 0.0 || a[1].fract() != 0.0 || a[0] > a[1] {
+                    return Err(format!(
+                        "randint(a, b) needs integers a <= b, got {}",
+                        bounds(a)
+                    ));
+                }
+                if a[1] - a[0] > MAX_RANDINT_SPAN {
+                    return Err(format!(
+                        "randint(a, b) draws from at most 10^12 + 1 integers (b - a <= 10^12), got {}",
+                        bounds(a)
+                    ));
                 }
                 self.set_size((a[1] - a[0]) as u64 + 1);
                 self.rng.gen_range(a[0] as i64..=a[1] as i64) as f64
@@ -372,5 +379,16 @@ impl<'c> Sampler<'c> {
         let x = self.draw_primitive(p, &reals(args)?)?;
         e.kind = ExprKind::Num(format!("{x:e}"));
         Ok(())
+    }
+}
+
+/// The widest range `randint(a, b)` draws from: `b - a` at most 10¹².
+const MAX_RANDINT_SPAN: f64 = 1e12;
+
+/// `a = …, b = …` for a message about the bounds of a primitive.
+fn bounds(a: &[f64]) -> String {
+    match a {
+        [x, y] => format!("a = {x}, b = {y}"),
+        _ => format!("{} arguments", a.len()),
     }
 }

@@ -9,10 +9,12 @@ use clap::Parser;
 /// Arguments of `eulertop eval`.
 #[derive(Parser, Debug)]
 pub struct Args {
-    /// The expression, e.g. `sn(0.5, 0.8)^2 + cn(0.5, 0.8)^2`.
+    /// The expression, e.g. `sn(0.5, 0.8)^2 + cn(0.5, 0.8)^2` (it may start with a minus
+    /// sign: `-x^2`).
+    #[arg(allow_hyphen_values = true)]
     pub expr: String,
     /// Precision in bits (53 = IEEE double; else MPFR).
-    #[arg(long, default_value_t = 53, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 53, allow_negative_numbers = true, value_parser = super::whole::<u32>)]
     pub bits: u32,
     /// Variable bindings `name=expression`, evaluated in order.
     #[arg(long = "set")]

@@ -28,10 +28,13 @@ pub struct Args {
     /// An author of the paper (repeat for several).
     #[arg(long)]
     pub author: Vec<String>,
-    /// The year of publication (default: this year).
-    #[arg(long)]
+    /// The year of publication, 1000..=9999 (default: this year).
+    #[arg(long, allow_negative_numbers = true)]
     pub year: Option<i64>,
 }
+
+/// The years `--year` accepts.
+pub const YEARS: std::ops::RangeInclusive<i64> = 1000..=9999;
 
 /// The `[paper]` table; `{TITLE}`, `{AUTHORS}` and `{YEAR}` are filled in.
 const PAPER: &str = r#"# The paper this catalogue checks (identities/README.md of eulertop, "Checking your
@@ -132,6 +135,15 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     let dir = Path::new(&args.dir);
     if args.dir.is_empty() {
         return Err(CliError("init: the directory name is empty".into()));
+    }
+    if let Some(y) = args.year
+        && !YEARS.contains(&y)
+    {
+        return Err(CliError(format!(
+            "--year {y} is outside {}..={} (the year of publication)",
+            YEARS.start(),
+            YEARS.end()
+        )));
     }
     if dir.exists() && !dir.is_dir() {
         return Err(CliError(format!(

@@ -36,7 +36,7 @@ const MAX_LINE: usize = 4096;
 #[derive(clap::Args, Debug)]
 pub struct Args {
     /// Precision in bits: 53 = f64 code path, otherwise MPFR at this many bits.
-    #[arg(long, default_value_t = 53, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 53, allow_negative_numbers = true, value_parser = super::whole::<u32>)]
     pub bits: u32,
     /// Complex argument: lines are `re(u) im(u) k` (with --parameter: `re(u) im(u) m`).
     #[arg(long)]

@@ -54,6 +54,86 @@ pub fn printable(s: &str) -> String {
         .collect()
 }
 
+/// Parses the value of a whole-number option (`--steps`, `--seed`, `--jobs`, `--bits`,
+/// …): a negative number, a fraction or exponent form, and a value past the type's
+/// maximum are each named as such (clap's own message would be "invalid digit").
+///
+/// ```
+/// use eulertop::cli::whole;
+/// assert_eq!(whole::<u32>("12"), Ok(12));
+/// assert!(whole::<u32>("-5").unwrap_err().contains("negative"));
+/// assert!(whole::<u32>("1e3").unwrap_err().contains("not a whole number"));
+/// assert!(whole::<u32>("99999999999").unwrap_err().contains("too large"));
+/// ```
+pub fn whole<T>(s: &str) -> Result<T, String>
+where
+    T: std::str::FromStr + num_traits::Bounded + std::fmt::Display,
+{
+    let t = s.trim();
+    if let Ok(v) = t.parse::<T>() {
+        return Ok(v);
+    }
+    let max = T::max_value();
+    let digits = |d: &str| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit());
+    if let Some(rest) = t.strip_prefix('-')
+        && digits(rest)
+    {
+        Err(format!(
+            "{t} is negative (a whole number 0..={max} is expected)"
+        ))
+    } else if digits(t.strip_prefix('+').unwrap_or(t)) {
+        Err(format!("{t} is too large (at most {max})"))
+    } else {
+        Err(format!(
+            "'{}' is not a whole number (digits only, such as 12)",
+            printable(t)
+        ))
+    }
+}
+
+/// Checks an output file option (`--certificate`, `--coq`, `--csv`, `--svg`) before the
+/// work that fills it runs: a file name in an existing directory, not a directory itself.
+pub fn check_output_path(flag: &str, p: &std::path::Path) -> Result<(), CliError> {
+    let bad = |why: &str| Err(CliError(format!("{flag} '{}': {why}", p.display())));
+    if p.as_os_str().is_empty() {
+        return bad("an empty file name");
+    }
+    if p.is_dir() {
+        return bad("is a directory");
+    }
+    let parent = match p.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => std::path::Path::new("."),
+    };
+    if !parent.is_dir() {
+        return bad(&format!("no directory {}", parent.display()));
+    }
+    Ok(())
+}
+
+/// Whether `a` and `b` name one file: the same path once the directory is resolved, or
+/// one existing file (a hard or symbolic link).
+pub fn same_file(a: &std::path::Path, b: &std::path::Path) -> bool {
+    let resolved = |p: &std::path::Path| {
+        let dir = match p.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d,
+            _ => std::path::Path::new("."),
+        };
+        Some(dir.canonicalize().ok()?.join(p.file_name()?))
+    };
+    if a == b || resolved(a).is_some_and(|x| Some(x) == resolved(b)) {
+        return true;
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        if let (Ok(x), Ok(y)) = (std::fs::metadata(a), std::fs::metadata(b)) {
+            return x.dev() == y.dev() && x.ino() == y.ino();
+        }
+    }
+    false
+}
+
 /// The largest `--jobs` accepted (worker threads).
 pub const MAX_JOBS: usize = 1024;
 
@@ -73,10 +153,12 @@ pub fn check_jobs(jobs: Option<usize>) -> Result<(), CliError> {
 pub struct ProofBudgetArgs {
     /// Wall-clock time of one proof attempt in milliseconds, 1..=86400000; past it the
     /// claim is not proved and keeps its numerical verdict.
-    #[arg(long, value_name = "MS", default_value_t = crate::algebra::DEFAULT_TIME_MS)]
+    #[arg(long, value_name = "MS", default_value_t = crate::algebra::DEFAULT_TIME_MS,
+          value_parser = whole::<u64>, allow_negative_numbers = true)]
     pub proof_budget_ms: u64,
     /// Ceiling on the resident memory while a proof runs, in MiB, 64..=1048576.
-    #[arg(long, value_name = "MB", default_value_t = crate::algebra::DEFAULT_MEMORY_MB)]
+    #[arg(long, value_name = "MB", default_value_t = crate::algebra::DEFAULT_MEMORY_MB,
+          value_parser = whole::<u64>, allow_negative_numbers = true)]
     pub proof_memory_mb: u64,
 }
 

@@ -222,29 +222,6 @@ fn run_generic<R: Real>(like: R, args: &Args) -> Result<i32, CliError> {
     Ok(0)
 }
 
-/// Whether `a` and `b` name one file: the same path once the directory is resolved, or
-/// one existing file (a hard or symbolic link).
-fn same_file(a: &Path, b: &Path) -> bool {
-    let resolved = |p: &Path| {
-        let dir = match p.parent() {
-            Some(d) if !d.as_os_str().is_empty() => d,
-            _ => Path::new("."),
-        };
-        Some(dir.canonicalize().ok()?.join(p.file_name()?))
-    };
-    if a == b || resolved(a).is_some_and(|x| Some(x) == resolved(b)) {
-        return true;
-    }
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::MetadataExt;
-        if let (Ok(x), Ok(y)) = (std::fs::metadata(a), std::fs::metadata(b)) {
-            return x.dev() == y.dev() && x.ino() == y.ino();
-        }
-    }
-    false
-}
-
 /// Runs the subcommand; returns the exit status.
 pub fn run(args: Args) -> Result<i32, CliError> {
     check_bits(args.step.bits)?;
@@ -254,8 +231,13 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             args.step.steps
         )));
     }
+    for (flag, path) in [("--csv", &args.csv), ("--svg", &args.svg)] {
+        if let Some(path) = path {
+            super::check_output_path(flag, path)?;
+        }
+    }
     if let (Some(c), Some(s)) = (&args.csv, &args.svg)
-        && same_file(c, s)
+        && super::same_file(c, s)
     {
         return Err(CliError::new(format!(
             "--csv {} and --svg {} name the same file: the figure would overwrite the table",

@@ -154,8 +154,15 @@ fn prove_one(args: &Args, cat: &Catalogue, claim: &Claim) -> Result<i32, CliErro
     let (lhs, rhs) = sides(claim)?;
     for (flag, path) in [("--certificate", &args.certificate), ("--coq", &args.coq)] {
         if let Some(path) = path {
-            check_certificate_path(flag, path)?;
+            super::check_output_path(flag, std::path::Path::new(path))?;
         }
+    }
+    if let (Some(c), Some(q)) = (&args.certificate, &args.coq)
+        && super::same_file(std::path::Path::new(c), std::path::Path::new(q))
+    {
+        return Err(CliError(format!(
+            "--certificate {c} and --coq {q} name the same file: the Coq script would overwrite the certificate"
+        )));
     }
     let certify = args.certificate.is_some() || args.coq.is_some();
     let p = prove(Ctx { cat, claim }, &lhs, &rhs, certify);
@@ -225,25 +232,4 @@ fn write_coq(path: &str, cert: Option<&str>, p: &ProofInfo) -> Result<(), CliErr
     Err(CliError(format!(
         "no Coq script written to {path}: {why}{removed}"
     )))
-}
-
-/// Checks `--certificate PATH` (or `--coq PATH`) before the proof runs: a file name in
-/// an existing directory, not a directory itself.
-fn check_certificate_path(flag: &str, path: &str) -> Result<(), CliError> {
-    let p = std::path::Path::new(path);
-    let bad = |why: &str| Err(CliError(format!("{flag} '{path}': {why}")));
-    if path.is_empty() {
-        return bad("an empty file name");
-    }
-    if p.is_dir() {
-        return bad("is a directory");
-    }
-    let parent = match p.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => std::path::Path::new("."),
-    };
-    if !parent.is_dir() {
-        return bad(&format!("no directory {}", parent.display()));
-    }
-    Ok(())
 }

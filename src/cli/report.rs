@@ -31,7 +31,7 @@ pub struct Args {
     #[arg(long)]
     pub catalogue: Option<String>,
     /// Number of worker threads, 1..=1024 (default: all cores).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::whole::<usize>)]
     pub jobs: Option<usize>,
     /// A README whose verdict-count block (between `<!-- verdicts -->` and
     /// `<!-- /verdicts -->`) is rewritten; empty to skip.  Without it, `README.md` of the

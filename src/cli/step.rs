@@ -35,10 +35,10 @@ pub struct Args {
     #[arg(long = "h", allow_hyphen_values = true)]
     pub h: String,
     /// Number of steps N.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, allow_negative_numbers = true, value_parser = super::whole::<usize>)]
     pub steps: usize,
     /// Precision in bits (53 = f64).
-    #[arg(long, default_value_t = 53, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 53, allow_negative_numbers = true, value_parser = super::whole::<u32>)]
     pub bits: u32,
     /// Start point M1 M2 M3.
     #[arg(num_args = 3, required = true, value_names = ["M1", "M2", "M3"])]

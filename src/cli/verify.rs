@@ -29,7 +29,7 @@ pub struct Args {
     #[arg(long, default_value = "text")]
     pub format: String,
     /// Number of worker threads, 1..=1024 (default: all cores).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::whole::<usize>)]
     pub jobs: Option<usize>,
     /// Catalogue directory or file (default: the paper's catalogue, built into the
     /// binary).
@@ -40,7 +40,7 @@ pub struct Args {
     pub coverage: bool,
     /// Combined with each claim's own seed (0, the default, keeps the catalogue's
     /// seeds): the samples change, and the set of proved claims must not.
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, allow_negative_numbers = true, value_parser = super::whole::<u64>)]
     pub seed: u64,
     /// The budget of every proof attempt.
     #[command(flatten)]
@@ -185,30 +185,32 @@ fn summary(results: &[ClaimResult], bits: &[u32]) -> Summary {
     }
 }
 
-/// A selected claim with `where` constraints (its own or its domain's) that no point
-/// satisfies is a data error naming the claim and the constraint, found before the run
-/// (one draw of its sampler each).
+/// A selected claim whose domain yields no point is a data error naming the claim and
+/// the cause, found before the run (one draw of its sampler each): `where` constraints
+/// that no point satisfies ("the domain is unreachable"), or a sampled variable that
+/// cannot be drawn, such as `uniform(1, 0)` ("the domain cannot be sampled").  Either
+/// would end the claim at its first sample.
 pub fn check_domains_reachable(
     cat: &Catalogue,
     select: &(dyn Fn(&crate::claims::catalogue::Claim) -> bool + Sync),
 ) -> Result<(), CliError> {
     use crate::claims::sampler::{Sampler, Stream};
     for c in cat.claims.iter().filter(|c| select(c)) {
-        let domain_wheres = (c.domain.as_ref())
-            .and_then(|d| cat.domains.get(&d.value))
-            .is_some_and(|d| !d.wheres.is_empty());
-        if c.wheres.is_empty() && !domain_wheres {
-            continue;
-        }
         let Ok(mut s) = Sampler::new(cat, c, Stream::Samples) else {
             continue;
         };
-        if let Err(m) = s.draw()
-            && m.starts_with("domain too thin")
-        {
+        if let Err(m) = s.draw() {
+            // a constraint that fails to evaluate everywhere is not a thin domain
+            let what = if m.starts_with("domain too thin") && !m.contains("cannot be evaluated") {
+                "the domain is unreachable"
+            } else {
+                "the domain cannot be sampled"
+            };
             return Err(CliError(format!(
-                "{}: claim {}: the domain is unreachable: {m}",
-                c.position, c.id
+                "{}: claim {}: {what}: {}",
+                c.position,
+                c.id,
+                super::printable(&m)
             )));
         }
     }

@@ -344,6 +344,41 @@ pub fn predictor<R: Real>(inertia: &Inertia<R>, m: &Vec3<R>, h: &R) -> Vec3<R> {
     m.clone() + inertia.field_et(&mid).scale(h)
 }
 
+/// The start point of a step: not at rest (the stopping rule is relative to `‖M‖`, so at
+/// `M = 0` it cannot judge a step), and with a finite `M²` (else every residual is NaN
+/// and the failure would be blamed on the step size).
+fn check_start<R: Real>(
+    m: &Vec3<R>,
+    mnorm: &R,
+    what: &dyn Fn() -> String,
+) -> Result<(), ModelError> {
+    if mnorm.is_zero() {
+        return Err(ModelError::Undefined(format!(
+            "{}: M = 0 (the top at rest) is not a start point; the step needs M ≠ 0",
+            what()
+        )));
+    }
+    check_m2_finite(m, mnorm, what)
+}
+
+/// `M²` of a start point is finite: else every residual of the step is NaN, and the
+/// failure would be blamed on the step size.
+pub(super) fn check_m2_finite<R: Real>(
+    m: &Vec3<R>,
+    mnorm: &R,
+    what: &dyn Fn() -> String,
+) -> Result<(), ModelError> {
+    if m.norm2().is_finite() {
+        return Ok(());
+    }
+    Err(ModelError::Undefined(format!(
+        "{}: M² = M₁² + M₂² + M₃² overflows at {} bits (|M_i| up to {:.3e}); rescale M",
+        what(),
+        mnorm.prec(),
+        mnorm.to_f64()
+    )))
+}
+
 /// Solves (impl spec 1–3) for `M̂` by Newton's method (see the module docs for the
 /// stopping rule and error behaviour).
 pub fn step_report<R: Real>(
@@ -356,13 +391,7 @@ pub fn step_report<R: Real>(
     let what = || format!("(impl spec) with {}", gamma.name());
     let eps = h.epsilon();
     let mnorm = inf_norm(m);
-    if mnorm.is_zero() {
-        // the stopping rule is relative to ‖M‖: at rest it cannot judge a step
-        return Err(ModelError::Undefined(format!(
-            "{}: M = 0 (the top at rest) is not a start point; the step needs M ≠ 0",
-            what()
-        )));
-    }
+    check_start(m, &mnorm, &what)?;
     let mut x = ladder(h, |q| {
         let (i, m, h) = (inertia.at_prec(q), m.at_prec(q), h.at_prec(q));
         step_report(&i, gamma, &m, &h, opts).map(|r| r.m)

@@ -168,6 +168,7 @@ pub struct VmStep<R> {
 /// Solves (M thru omega) `hM = ωJ − Jωᵀ` for `ω` (branch: see module docs) and
 /// returns the (VM) step `M̂ = ωᵀMω`.
 pub fn vm_step<R: Real>(inertia: &Inertia<R>, m: &Vec3<R>, h: &R) -> Result<VmStep<R>, ModelError> {
+    super::discretization::check_m2_finite(m, &inf_norm(m), &|| "(M thru omega)".into())?;
     let jv = j_diag(inertia);
     let jm = Mat3::diag(&jv);
     let mm = hat(m);

@@ -213,10 +213,11 @@ pub trait Scalar:
         if let Some(sigma) = self.sign_symbol()? {
             return Ok(sigma * self.clone());
         }
-        Ok(if self.stated_sign()? < 0 {
-            -self.clone()
-        } else {
-            self.clone()
+        Ok(match self.stated_sign()? {
+            s if s < 0 => -self.clone(),
+            // −0 + 0 = +0 (round to nearest), so |−0| is +0; the derivative is kept
+            0 => self.clone() + self.zero(),
+            _ => self.clone(),
         })
     }
     /// The absolute value (modulus), rounded to `f64`.  Used for residual scaling.

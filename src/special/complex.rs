@@ -61,16 +61,28 @@ pub fn sncndn_complex<C: ComplexScalar>(u: &C, k: &C::R) -> Result<(C, C, C), Sp
     }
     let w = n + GUARD;
     let one = k.one();
-    let real = sncndn_imp(&x, Spec::Modulus(k, Modulus::K), n)?;
+    let real = sncndn_imp(&x, Spec::Modulus(k, Modulus::K), n).map_err(part("Re u", "K"))?;
     let imag = if *k < one {
-        sncndn_imp(&y, Spec::Modulus(k, Modulus::Complement), n)?
+        sncndn_imp(&y, Spec::Modulus(k, Modulus::Complement), n).map_err(part("Im u", "K'"))?
     } else {
         // 1 − k² = −(k − 1)(k + 1), exact in the first factor
         let kw = k.with_prec(w);
         let mc = -((kw.clone() - kw.one()) * (kw.clone() + kw.one()));
-        sncndn_imp(&y, Spec::Parameter(&mc), n)?
+        sncndn_imp(&y, Spec::Parameter(&mc), n).map_err(part("Im u", "K'"))?
     };
     combine(&x, &y, real, imag, &k.with_prec(w).sqr(), n)
+}
+
+/// Names the part of a complex argument (`Re u`, with its period `K`; `Im u`, with `K'`)
+/// that the argument reduction of the real algorithm refused.
+fn part(label: &'static str, period: &'static str) -> impl Fn(SpecialError) -> SpecialError {
+    move |e| match e {
+        SpecialError::ArgumentTooLarge(m) => SpecialError::ArgumentTooLarge(
+            m.replace("|u|/K", &format!("|{label}|/{period}"))
+                .replace("(u = ", &format!("({label} = ")),
+        ),
+        other => other,
+    }
 }
 
 /// [`sncndn_complex`] for the **parameter** `m = k²`, any real `m` (mpmath:
@@ -109,8 +121,8 @@ pub fn sncndn_complex_m<C: ComplexScalar>(u: &C, m: &C::R) -> Result<(C, C, C), 
     let w = n + GUARD;
     let mw = m.with_prec(w);
     let mc = mw.one() - mw.clone();
-    let real = sncndn_imp(&x, Spec::Parameter(m), n)?;
-    let imag = sncndn_imp(&y, Spec::Parameter(&mc), n)?;
+    let real = sncndn_imp(&x, Spec::Parameter(m), n).map_err(part("Re u", "K"))?;
+    let imag = sncndn_imp(&y, Spec::Parameter(&mc), n).map_err(part("Im u", "K'"))?;
     combine(&x, &y, real, imag, &mw, n)
 }
 

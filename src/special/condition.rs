@@ -22,7 +22,8 @@ impl JacobiFn {
     /// precision in bits), and `reports/accuracy.md` lists the `f64` errors next to
     /// the poles with `κ_u`.  `+∞` at a pole of `f` (and wherever a value is not
     /// finite); at `u = 0` the limit (`1` for the odd functions, `0` for the even
-    /// ones).
+    /// ones).  For `cd` and `dc` it is `|u·sn·(1 − m)/(cn·dn)|` (as `dn² − m·cn² = 1 − m`),
+    /// so `0` at `m = 1`.
     ///
     /// ```
     /// use eulertop::special::{JacobiFn, ellipk, sncndn};
@@ -42,6 +43,9 @@ impl JacobiFn {
     /// let zero = (&0.0, &1.0, &1.0);
     /// assert_eq!(JacobiFn::Ns.condition(&0.0, &m, zero), 1.0);
     /// assert_eq!(JacobiFn::Cn.condition(&0.0, &m, zero), 0.0);
+    /// // cd = dc = 1 at m = 1, even where cn and dn underflow
+    /// let flat = (&1.0, &0.0, &0.0);
+    /// assert_eq!(JacobiFn::Cd.condition(&800.0, &1.0, flat), 0.0);
     /// ```
     pub fn condition<R: Real>(self, u: &R, m: &R, (s, c, d): (&R, &R, &R)) -> R {
         // u·L, with u·L_sn = 1 at u = 0 (the one zero of sn a real argument reaches:
@@ -54,7 +58,19 @@ impl JacobiFn {
             _ => u.zero(),
         };
         let (p, q) = self.parts();
-        let kappa = (scaled(p) - scaled(q)).abs();
+        let kappa = match (p, q) {
+            // cd and dc: u·(L_cn − L_dn) = −u·sn·(1 − m)/(cn·dn), as dn² − m·cn² = 1 − m;
+            // 0 at m = 1, where cd = dc = 1 even where cn and dn underflow
+            (Some(1), Some(2)) | (Some(2), Some(1)) => {
+                let gap = u.one() - m.clone();
+                if gap.is_zero() {
+                    u.zero()
+                } else {
+                    (u.clone() * s.clone() * gap / (c.clone() * d.clone())).abs()
+                }
+            }
+            _ => (scaled(p) - scaled(q)).abs(),
+        };
         if kappa.is_finite() {
             kappa
         } else {

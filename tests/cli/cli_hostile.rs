@@ -1057,6 +1057,17 @@ fn w1_cd_and_dc_at_k_equal_to_one_are_one() {
         jacobi_values(&["--functions", "cd,dc", "--bits", "256"], "1e9 1\n"),
         [1.0, 1.0]
     );
+    // and they are not next to a pole: no warning about their condition
+    for input in ["800 1\n", "3 1\n"] {
+        let o = run_in(
+            None,
+            &["jacobi", "--functions", "cd,dc"],
+            input.as_bytes(),
+            Stdio::piped(),
+        );
+        assert_eq!(o.code, Some(0), "{}", o.stderr);
+        assert!(!o.stderr.contains("warning"), "{input}: {}", o.stderr);
+    }
     for f in ["cd", "dc"] {
         let o = run(&["eval", &format!("{f}(1e3, 1)")]);
         assert_eq!(o.code, Some(0), "{}", o.stderr);
@@ -1559,4 +1570,380 @@ fn r2_a_proof_that_evaluates_pi_fails_before_the_work() {
         o.stdout,
         o.stderr
     );
+}
+
+// -- R4: second derivatives -------------------------------------------------------------
+
+#[test]
+fn r4_a_derivative_of_a_derivative_is_the_second_derivative() {
+    // DLMF 22.13: sn'' = −(1 + k²) sn + 2k² sn³; at k = 0.5: −1.25 sn + 0.5 sn³
+    for bits in ["53", "256"] {
+        let o = run(&[
+            "eval",
+            "--bits",
+            bits,
+            "--set",
+            "u=0.3",
+            "d(d(sn(u,0.5),u),u) + 1.25*sn(u,0.5) - 0.5*sn(u,0.5)^3",
+        ]);
+        let v: f64 = o.stdout.trim().parse().unwrap_or(f64::NAN);
+        assert!(v.abs() < 1e-14, "{bits}: {} {}", o.stdout, o.stderr);
+    }
+    // mixed partials: d/dy d/dx (x³y²) = 6x²y = 72 at (2, 3); of a vec3 component too
+    let o = run(&["eval", "--set", "x=2", "--set", "y=3", "d(d(x^3*y^2,x),y)"]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(72.0),
+        "{}",
+        o.stderr
+    );
+    let o = run(&["eval", "--set", "M=vec(1,2,3)", "d(d(M[1]^2*M[2],M,1),M,2)"]);
+    assert_eq!(
+        o.stdout.trim().parse::<f64>().ok(),
+        Some(2.0),
+        "{}",
+        o.stderr
+    );
+    // a third derivative is refused by its order
+    let o = run(&["eval", "--set", "x=2", "d(d(d(x^3,x),x),x)"]);
+    assert_one_line_error(&o, &["order 3"], "third derivative");
+}
+
+#[test]
+fn r4_a_second_derivative_in_a_claim_is_checked_and_proved() {
+    let claim = |id: &str, sign: &str| {
+        format!(
+            "[[claim]]\nid = \"{id}\"\nlocation = \"test\"\nprinted = 'x'\n\
+             environment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\n\
+             expect = \"holds\"\nvars = [[\"k\", \"uniform(0.1, 0.9)\"], [\"u\", \"uniform(0.2, 1.5)\"]]\n\
+             lhs = \"d(d(sn(u, k), u), u)\"\nrhs = \"-(1 + k^2) * sn(u, k) {sign} 2 * k^2 * sn(u, k)^3\"\n\n"
+        )
+    };
+    let text = claim("t.right", "+") + &claim("t.wrong", "-");
+    let dir = catalogue("second-derivative", text.as_bytes());
+    let o = run(&["prove", "t.right", "--catalogue", dir.to_str().unwrap()]);
+    assert!(o.stdout.contains(": proved"), "{}{}", o.stdout, o.stderr);
+    let o = run(&[
+        "verify",
+        "--catalogue",
+        dir.to_str().unwrap(),
+        "--format",
+        "json",
+    ]);
+    assert_no_crash(&o, "verify");
+    let verdict = |id: &str| {
+        let at = o
+            .stdout
+            .find(&format!("\"{id}\""))
+            .expect("claim in the json");
+        let rest = &o.stdout[at..];
+        let v = rest.find("\"verdict\"").expect("verdict");
+        rest[v..].split('"').nth(3).unwrap_or("").to_string()
+    };
+    assert_eq!(verdict("t.right"), "proved", "{}", o.stdout);
+    assert_eq!(verdict("t.wrong"), "refuted", "{}", o.stdout);
+}
+
+// -- M14: the excerpt of a parenthesised expression ---------------------------------------
+
+#[test]
+fn m14_the_excerpt_of_a_power_keeps_its_parenthesis() {
+    let text = "[[claim]]\nid = \"t.pow\"\nlocation = \"test\"\nprinted = 'x'\n\
+                environment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\n\
+                expect = \"holds\"\nvars = [[\"x\", \"uniform(0.1, 1)\"]]\n\
+                lhs = \"(1+x)^100000\"\nrhs = \"1\"\n";
+    let dir = catalogue("m14", text.as_bytes());
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert!(o.stdout.contains("at '(1+x)^100000'"), "{}", o.stdout);
+}
+
+// -- R3: the prover's messages on false and on complex-argument claims -------------------
+
+fn jacobi_claim(id: &str, expect: &str, vars: &str, lhs: &str, rhs: &str) -> String {
+    format!(
+        "[[claim]]\nid = \"{id}\"\nlocation = \"test\"\nprinted = 'x'\n\
+         environment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\n\
+         expect = \"{expect}\"\nvars = {vars}\nlhs = \"{lhs}\"\nrhs = \"{rhs}\"\n\n"
+    )
+}
+
+#[test]
+fn r3_a_false_addition_formula_is_not_called_zero() {
+    let uv =
+        r#"[["k", "uniform(0.1, 0.9)"], ["u", "uniform(0.2, 1.5)"], ["v", "uniform(0.2, 1.5)"]]"#;
+    let text = jacobi_claim(
+        "t.cd",
+        "refuted",
+        uv,
+        "cd(u + v, k)",
+        "(cd(u,k)*cd(v,k) - (1-k^2)*sd(u,k)*nd(u,k)*sd(v,k)*nd(v,k)) / (1 + k^2*cd(u,k)^2*cd(v,k)^2)",
+    ) + &jacobi_claim(
+        "t.nd",
+        "refuted",
+        uv,
+        "nd(u + v, k)",
+        "(nd(u,k)*nd(v,k) + k^2*sd(u,k)*cd(u,k)*sd(v,k)*cd(v,k)) / (1 + k^2*sn(u,k)^2*sn(v,k)^2)",
+    );
+    let dir = catalogue("r3-addition", text.as_bytes());
+    for id in ["t.cd", "t.nd"] {
+        let o = run(&["prove", id, "--catalogue", dir.to_str().unwrap()]);
+        let last = o.stdout.lines().last().unwrap_or("");
+        assert!(
+            last.starts_with("not proved"),
+            "{id}: {}{}",
+            o.stdout,
+            o.stderr
+        );
+        assert!(!last.contains("vanishes numerically"), "{id}: {last}");
+        assert!(last.contains("differ at domain point"), "{id}: {last}");
+    }
+}
+
+#[test]
+fn r3_claims_at_k_plus_i_k_prime_and_on_sd_are_proved() {
+    let ku = r#"[["k", "uniform(0.1, 0.9)"], ["u", "uniform(-1.5, 1.5)"]]"#;
+    let text = jacobi_claim(
+        "t.kk",
+        "holds",
+        ku,
+        "sn(u + K(k) + cplx(0,1)*K(sqrt(1-k^2)), k)",
+        "dc(u,k)/k",
+    ) + &jacobi_claim(
+        "t.sd",
+        "holds",
+        ku,
+        "sd(u,k)^2*(1-k^2)",
+        "(1-k^2)*sn(u,k)^2/(1-k^2*sn(u,k)^2)",
+    );
+    let dir = catalogue("r3-kk-sd", text.as_bytes());
+    for id in ["t.kk", "t.sd"] {
+        let o = run(&["prove", id, "--catalogue", dir.to_str().unwrap()]);
+        assert!(
+            o.stdout.lines().last().unwrap_or("").ends_with(": proved"),
+            "{id}: {}{}",
+            o.stdout,
+            o.stderr
+        );
+        assert!(!o.stdout.contains("internal inconsistency"), "{}", o.stdout);
+        assert!(!o.stdout.contains("overflows"), "{}", o.stdout);
+    }
+}
+
+// -- Whole-number options, sampled variables, output paths --------------------------------
+
+#[test]
+fn whole_number_options_name_a_negative_or_malformed_value() {
+    let cases: [(&[&str], &[&str]); 6] = [
+        (&["verify", "--seed", "-5"], &["--seed", "-5 is negative"]),
+        (&["verify", "--jobs", "-1"], &["--jobs", "-1 is negative"]),
+        (
+            &["prove", "x", "--proof-budget-ms", "-1"],
+            &["--proof-budget-ms", "negative"],
+        ),
+        (
+            &[
+                "step",
+                "--inertia",
+                "3,2,1",
+                "--h",
+                "0.1",
+                "--steps",
+                "1e3",
+                "1",
+                "1",
+                "1",
+            ],
+            &["--steps", "'1e3' is not a whole number"],
+        ),
+        (
+            &["eval", "--bits", "1.5", "1"],
+            &["--bits", "not a whole number"],
+        ),
+        (
+            &["eval", "--bits", "99999999999999999999", "1"],
+            &["--bits", "too large"],
+        ),
+    ];
+    for (args, needles) in cases {
+        assert_one_line_error(&run(args), needles, &args.join(" "));
+    }
+    let dir = temp_dir("init-year");
+    for year in ["-5", "99999"] {
+        let target = dir.join(year);
+        let o = run(&["init", target.to_str().unwrap(), "--year", year]);
+        assert_one_line_error(&o, &["--year", year, "1000..=9999"], "init --year");
+        assert!(
+            !target.exists(),
+            "init --year {year} wrote {}",
+            target.display()
+        );
+    }
+}
+
+fn one_var_claim(vars: &str) -> String {
+    format!(
+        "[[claim]]\nid = \"t.v\"\nlocation = \"test\"\nprinted = 'x'\n\
+         environment = \"Section 2\"\nrole = \"statement\"\nkind = \"identity\"\n\
+         expect = \"holds\"\nvars = {vars}\nlhs = \"x\"\nrhs = \"x\"\n"
+    )
+}
+
+#[test]
+fn a_variable_sampled_twice_is_a_load_error() {
+    let dir = catalogue(
+        "sampled-twice",
+        one_var_claim(r#"[["x", "uniform(0, 1)"], ["x", "uniform(2, 3)"]]"#).as_bytes(),
+    );
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_data_error(&o, &["t.toml:", "'x' is sampled twice"], "vars x twice");
+}
+
+#[test]
+fn a_domain_that_cannot_be_sampled_stops_verify() {
+    let dir = catalogue(
+        "unsampleable",
+        one_var_claim(r#"[["x", "uniform(1, 0)"]]"#).as_bytes(),
+    );
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_one_line_error(
+        &o,
+        &["claim t.v", "cannot be sampled", "uniform(1, 0)"],
+        "uniform(1, 0)",
+    );
+    // a constraint that is not a condition is not a thin domain
+    let text = one_var_claim(r#"[["x", "uniform(0, 1)"]]"#) + "where = [\"x\"]\n";
+    let dir = catalogue("where-not-bool", text.as_bytes());
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_one_line_error(
+        &o,
+        &["claim t.v", "cannot be sampled", "expected a bool"],
+        "where = [\"x\"]",
+    );
+}
+
+#[test]
+fn output_paths_are_checked_before_the_work() {
+    let dir = temp_dir("output-paths");
+    let missing = dir.join("no-such-dir").join("x.svg");
+    let o = run(&[
+        "orbit",
+        "--inertia",
+        "3,2,1",
+        "--h",
+        "0.1",
+        "--steps",
+        "5",
+        "--svg",
+        missing.to_str().unwrap(),
+        "1",
+        "1",
+        "1",
+    ]);
+    assert_one_line_error(&o, &["--svg", "no directory"], "orbit --svg into nowhere");
+    assert!(
+        o.stdout.is_empty(),
+        "rows printed before the refusal: {}",
+        o.stdout
+    );
+    // one file for the certificate and the Coq script: refused, nothing written
+    let cat = catalogue(
+        "cert-coq-same",
+        one_var_claim(r#"[["x", "uniform(0, 1)"]]"#).as_bytes(),
+    );
+    let f = dir.join("c.out");
+    let f = f.to_str().unwrap();
+    let o = run(&[
+        "prove",
+        "t.v",
+        "--catalogue",
+        cat.to_str().unwrap(),
+        "--certificate",
+        f,
+        "--coq",
+        f,
+    ]);
+    assert_one_line_error(
+        &o,
+        &["--certificate", "--coq", "same file"],
+        "one file twice",
+    );
+    assert!(!Path::new(f).exists(), "{f} written");
+}
+
+#[test]
+fn a_derivative_component_is_named_in_words() {
+    let o = run(&["eval", "--set", "x=1", "d(x^2, x, 2)"]);
+    assert_one_line_error(&o, &["component 2 of a real variable"], "d(x^2, x, 2)");
+    assert!(!o.stderr.contains("Some("), "{}", o.stderr);
+    let o = run(&["eval", "--set", "M=vec(1,2,3)", "d(M[1], M, 4)"]);
+    assert_one_line_error(&o, &["component 4", "1, 2 and 3"], "d(M[1], M, 4)");
+}
+
+#[test]
+fn an_expression_may_start_with_a_minus_sign() {
+    for (args, want) in [
+        (&["eval", "-1"][..], -1.0),
+        (&["eval", "-x^2", "--set", "x=3"][..], -9.0),
+        (&["eval", "--bits", "64", "-2*3"][..], -6.0),
+    ] {
+        let o = run(args);
+        assert_eq!(
+            o.stdout.trim().parse::<f64>().ok(),
+            Some(want),
+            "{args:?}: {}",
+            o.stderr
+        );
+    }
+    // the absolute value of a negative zero is +0
+    let o = run(&["eval", "abs(-0)"]);
+    assert_eq!(o.code, Some(0), "{}", o.stderr);
+    assert!(!o.stdout.starts_with('-'), "{}", o.stdout);
+}
+
+#[test]
+fn randint_names_its_range_limit() {
+    let dir = catalogue(
+        "randint-wide",
+        one_var_claim(r#"[["x", "randint(1, 1000000000000000000)"]]"#).as_bytes(),
+    );
+    let o = run(&["verify", "--catalogue", dir.to_str().unwrap()]);
+    assert_one_line_error(
+        &o,
+        &["randint", "at most 10^12", "a = 1, b = 1000000000000000000"],
+        "randint",
+    );
+}
+
+#[test]
+fn an_infinite_derivative_is_named_as_such() {
+    for (expr, name) in [("d(sqrt(x), x)", "sqrt"), ("d(d(sqrt(x), x), x)", "sqrt")] {
+        let o = run(&["eval", "--set", "x=0", expr]);
+        assert_one_line_error(&o, &[&format!("derivative of {name}"), "not finite"], expr);
+    }
+    let o = run(&["eval", "--set", "x=1", "d(asin(x), x)"]);
+    assert_one_line_error(&o, &["derivative of asin"], "d(asin(x), x) at 1");
+}
+
+#[test]
+fn a_step_from_a_start_point_whose_m2_overflows_names_it() {
+    for f in ["step_gamma1", "step_vm"] {
+        let o = run(&["eval", &format!("{f}(vec(1e300,2,3), 0.1, 3, 2, 1)")]);
+        assert_one_line_error(&o, &["M²", "overflows", "rescale M"], f);
+        assert!(!o.stderr.contains("too large?"), "{}", o.stderr);
+    }
+}
+
+#[test]
+fn a_complex_argument_too_large_names_its_part() {
+    let o = run(&["eval", "sn(cplx(1e300, 1), 0.5)"]);
+    assert_one_line_error(&o, &["|Re u|/K", "Re u = 1e300"], "Re u huge");
+    let o = run(&["eval", "sn(cplx(1, 1e300), 0.5)"]);
+    assert_one_line_error(&o, &["|Im u|/K'", "Im u = 1e300"], "Im u huge");
+    let o = run_in(
+        None,
+        &["jacobi", "--complex"],
+        b"0.5 1e300 0.8\n",
+        Stdio::piped(),
+    );
+    assert_data_error(&o, &["<stdin>:1:", "Im u = 1e300"], "jacobi --complex");
 }

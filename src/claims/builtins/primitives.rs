@@ -44,7 +44,7 @@ name_table! {
     pub enum Primitive: PrimitiveSpec {
         /// a + (b − a)·j/2^24 with j uniform in 0..=2^24: a finite set of 2^24 + 1 points
         Uniform = "uniform"("a, b"): Arity::Exact(2), true;
-        /// an integer uniform in a..=b
+        /// an integer uniform in a..=b (b − a at most 10¹²)
         Randint = "randint"("a, b"): Arity::Exact(2), true;
         /// standard normal (Box–Muller); not uniform, so a claim using it cannot be proved
         Normal = "normal"(""): Arity::Exact(0), false;

@@ -179,6 +179,7 @@ impl Checker<'_> {
         let mut scope = Scope::default().sampling();
         for (name, p) in &d.vars {
             self.pexpr(p, &scope)?;
+            sampled_once(name, &scope, p)?;
             scope.vars.push(name.clone());
         }
         let wheres = Scope::default().with(&scope.vars);
@@ -195,6 +196,7 @@ impl Checker<'_> {
         }
         for (name, p) in &c.vars {
             self.pexpr(p, &sampled.sampling())?;
+            sampled_once(name, &sampled, p)?;
             sampled.vars.push(name.clone());
         }
         c.wheres.iter().try_for_each(|w| self.pexpr(w, &sampled))?;
@@ -247,6 +249,18 @@ impl Checker<'_> {
 }
 
 /// The global definitions a body calls.
+/// A sampled variable is named once: a second `vars` entry of the same name (in the
+/// claim's or its domain's list) would silently replace the first.
+fn sampled_once(name: &str, scope: &Scope, p: &PExpr) -> Result<(), LoadError> {
+    if scope.vars.iter().any(|v| v == name) {
+        return Err(p.origin.error(
+            None,
+            format!("variable '{name}' is sampled twice (a second vars entry of that name)"),
+        ));
+    }
+    Ok(())
+}
+
 fn calls_of(body: &Expr, defs: &BTreeMap<&str, usize>) -> Vec<usize> {
     let mut out = Vec::new();
     body.walk(&mut |x| {
