@@ -19,12 +19,18 @@ pub fn verdict_badge(v: Verdict) -> &'static str {
 
 /// A claim's verdict badge: as [`verdict_badge`], with a refutation certified at an
 /// exact point (proof method `witness`) marked `✗✗` apart from a sampled one, and a
-/// negation proved by such a point marked `proved (witness)`.
+/// negation proved by such a point marked `proved (witness)`, and an existence claim
+/// whose sampled solutions are certified by the Krawczyk test marked `holds (roots
+/// certified at the samples)`.
 pub fn result_badge(r: &ClaimResult) -> &'static str {
-    let witness = r.proof.method == crate::claims::verdict::ProofMethod::Witness;
+    use crate::claims::verdict::ProofMethod;
+    let witness = r.proof.method == ProofMethod::Witness;
     match r.verdict {
         Verdict::Refuted if witness => return "✗✗ refuted (witness)",
         Verdict::Proved if witness => return "✓✓ proved (witness)",
+        Verdict::Holds if r.proof.method == ProofMethod::Interval => {
+            return "✓ holds (roots certified at the samples)";
+        }
         _ => {}
     }
     verdict_badge(r.verdict)

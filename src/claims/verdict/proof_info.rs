@@ -11,9 +11,17 @@ pub enum ProofMethod {
     /// Refuted with a witness: a domain point at which lhs − rhs is certified nonzero
     /// (field `witness`).
     Witness,
+    /// Existence certified at the sampled points by the Krawczyk test in ball arithmetic
+    /// (one solution in a box around each sampled solution); not a proof on the whole
+    /// domain, so the verdict stays `holds`.
+    Interval,
     /// Not proved (the reason says why).
     None,
 }
+
+/// How the reason of an existence claim whose sampled solutions are not certified by
+/// the Krawczyk test begins.
+pub const NO_INTERVAL: &str = "no interval certificate: ";
 
 /// A fact a proof rests on besides algebra.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
