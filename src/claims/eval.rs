@@ -660,7 +660,11 @@ impl<'r, T: Backend> Evaluator<'r, T> {
                 .is_some_and(|a| 1 + chain_depth(a, name) >= ITERATION_DEPTH)
         {
             let local = self.local_fns.iter().rev().find(|f| f.def.name == name);
-            if let Some(f) = local.or_else(|| self.reg.user(name)).cloned() {
+            // a chain of a step (a function without an iteration of its own); a chain of
+            // iterations is evaluated as written, each iteration inside certified
+            if let Some(f) = local.or_else(|| self.reg.user(name)).cloned()
+                && !has_chain(&f.def.body)
+            {
                 return self.fixed_point(&f, args, sp);
             }
         }
@@ -701,8 +705,9 @@ impl<'r, T: Backend> Evaluator<'r, T> {
     /// `g` (Newton's method written out) stands for its limit, the fixed point of `g`
     /// near the iterate: the iterate `r` is computed, and the Krawczyk test on
     /// `x − g(x, …)` in the box `r ± 10⁻⁹·max(|r|, 10⁻³)` certifies exactly one fixed
-    /// point there, whose enclosure is the value.  A step that is an iteration itself, a
-    /// value that is not real, and a derivative through the iteration are refused.
+    /// point there, whose enclosure is the value.  A value that is not real and a
+    /// derivative through the iteration are refused.  (A chain of a function that holds
+    /// an iteration itself is evaluated as written, its inner iterations certified.)
     fn fixed_point(&self, f: &Arc<UserFn>, args: &[Expr], sp: Span) -> Result<Value<T>, EvalError> {
         let name = f.def.name.clone();
         let fail =
@@ -711,9 +716,6 @@ impl<'r, T: Backend> Evaluator<'r, T> {
             return Err(fail("a derivative through an iteration has no enclosure"));
         };
         let (prec, one) = (like.prec_bits(), crate::numbers::Scalar::one(like));
-        if has_chain(&f.def.body) {
-            return Err(fail("its step is an iteration itself"));
-        }
         let vals: Vec<Value<T>> = args
             .iter()
             .map(|x| self.eval(x))

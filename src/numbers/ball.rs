@@ -226,14 +226,13 @@ impl Ball {
 
 /// `==` is the identity of the balls (same midpoint and radius), as the evaluator's
 /// memory of calls needs: a call with identical argument balls has the same enclosure.
-/// Other balls compare as their values: unequal when disjoint, and undecided (recorded)
-/// when they overlap.  The language's `==` tests the difference with
-/// [`Scalar::is_zero`], which decides only a certain zero or a certain nonzero.
+/// It is not the equality of the values the balls stand for: the language's `==` tests
+/// the difference with [`Scalar::is_zero`], which decides only a certain zero or a
+/// certain nonzero (and records the rest as undecided).
 impl PartialEq for Ball {
     fn eq(&self, o: &Ball) -> bool {
         // SAFETY: both balls are initialised.
-        let (same, ne) = unsafe { (arb_equal(&self.b, &o.b) != 0, arb_ne(&self.b, &o.b) != 0) };
-        Ball::decide(same, ne)
+        unsafe { arb_equal(&self.b, &o.b) != 0 }
     }
 }
 
@@ -333,6 +332,10 @@ impl Scalar for Ball {
     }
     fn magnitude(&self) -> f64 {
         self.mid_f64().abs()
+    }
+    /// `|x|` needs no decision in balls: the ball of all `|x|`.
+    fn stated_abs(&self) -> Result<Self, String> {
+        Ok(Real::abs(self))
     }
     fn to_f64(&self) -> f64 {
         self.mid_f64()
