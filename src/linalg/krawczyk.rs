@@ -174,9 +174,10 @@ mod tests {
         let s = std::f64::consts::SQRT_2;
         let c = krawczyk(&mut CircleLine, &[s, s], &[1e-9, 1e-9], 128).expect("certified");
         for e in &c.enclosure {
-            // the zero is √2: its square holds 2, and the enclosure is tight
+            // the zero is √2: its square holds 2, and the enclosure is far inside the
+            // box (radius about the box's radius squared)
             assert!((e.clone() * e.clone()).contains_f64(2.0), "{e:?}");
-            assert!(e.rad_f64() < 1e-25, "{e:?}");
+            assert!(e.rad_f64() < 1e-15, "{e:?}");
         }
         // a box of the same size one thousandth away holds no zero
         assert!(krawczyk(&mut CircleLine, &[s + 1e-3, s], &[1e-9, 1e-9], 128).is_err());

@@ -18,8 +18,9 @@
 //! use eulertop::numbers::{Ball, Real, Scalar, take_undecided};
 //! let two = Ball::exact(2.0, 128);
 //! let r = Real::sqrt(&two);
-//! // the ball of √2 contains 1.41421356237 and excludes 1.4142
-//! assert!(r.contains_f64(std::f64::consts::SQRT_2) && !r.contains_f64(1.4142));
+//! // the ball of √2 is tight (it excludes the nearest double) and its square holds 2
+//! assert!(!r.contains_f64(std::f64::consts::SQRT_2) && r.rad_f64() < 1e-36);
+//! assert!((r.clone() * r).contains_f64(2.0));
 //! let _ = take_undecided();
 //! let wide = Ball::with_radius(0.0, 1.0, 128); // [-1, 1]
 //! assert!(!(wide > two.zero()));

@@ -135,7 +135,7 @@ pub fn readme(input: &ReportInput) -> String {
     );
     let _ = writeln!(
         s,
-        "- **✗✗ refuted (witness)**: refuted, and certified: at a domain point (the prover's variables at their exact sampled values) the normal form of lhs − rhs is enclosed in Arb balls that exclude 0, so lhs ≠ rhs there; a residual too small for the precision ladder is refuted this way too."
+        "- **✗✗ refuted (witness)**: refuted, and certified: at a domain point (the variables at their exact sampled values) lhs − rhs is enclosed in an Arb ball that excludes 0, so lhs ≠ rhs there: the prover's normal form evaluated at the point or, for a claim outside the prover's field, the claim's formulas evaluated in ball arithmetic (every comparison decided, an implicit map's value and the limit of an iteration written out certified by the Krawczyk test); a residual too small for the precision ladder is refuted this way too."
     );
     let _ = writeln!(
         s,
