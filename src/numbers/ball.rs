@@ -448,7 +448,8 @@ mod tests {
         let _ = take_undecided();
         assert!(third < Ball::exact(0.34, 128));
         assert!(!take_undecided());
-        assert!(!(back > Ball::exact(1.0, 128)));
+        let greater = back > Ball::exact(1.0, 128);
+        assert!(!greater);
         assert!(take_undecided(), "3 · (1/3) > 1 is undecided in balls");
     }
 
