@@ -34,7 +34,7 @@
 //! ```
 
 use super::newton::solve;
-use crate::numbers::{Ball, Scalar, take_undecided};
+use crate::numbers::{Ball, Decisions, Scalar};
 
 /// A square system evaluated in balls: every returned ball must enclose the exact value
 /// for every argument inside the argument balls.
@@ -99,14 +99,14 @@ pub fn krawczyk<S: BallSystem>(
     prec: u32,
 ) -> Result<Certificate, String> {
     let n = center.len();
-    let _ = take_undecided();
+    let span = Decisions::start();
     let xm: Vec<Ball> = center.iter().map(|&c| Ball::exact(c, prec)).collect();
     let boxes: Vec<Ball> = (center.iter().zip(radius))
         .map(|(&c, &r)| Ball::with_radius(c, r, prec))
         .collect();
     let fm = sys.residual(&xm)?;
     let jx = sys.jacobian(&boxes)?;
-    if take_undecided() {
+    if !span.all_decided() {
         return Err("a comparison could not be decided in balls on the box".into());
     }
     if fm.len() != n || jx.len() != n || jx.iter().any(|r| r.len() != n) {

@@ -9,22 +9,22 @@
 //!
 //! * a comparison (`<`, `<=`, `==`, [`Scalar::is_zero`], `floor`) of balls that overlap
 //!   where the answer would differ is **undecided**: it answers `false` (or a wide ball)
-//!   and is recorded, per thread, until [`take_undecided`] reads it.  An evaluation
-//!   with an undecided comparison proves nothing;
+//!   and is recorded, per thread ([`Decisions`]).  An evaluation with an undecided
+//!   comparison proves nothing;
 //! * the elliptic functions are refused ([`Real::BY_RULE`]: no numerical iteration, whose
 //!   truncation error the balls would not see, ever runs on balls).
 //!
 //! ```
-//! use eulertop::numbers::{Ball, Real, Scalar, take_undecided};
+//! use eulertop::numbers::{Ball, Decisions, Real, Scalar};
 //! let two = Ball::exact(2.0, 128);
 //! let r = Real::sqrt(&two);
 //! // the ball of √2 is tight (it excludes the nearest double) and its square holds 2
 //! assert!(!r.contains_f64(std::f64::consts::SQRT_2) && r.rad_f64() < 1e-36);
 //! assert!((r.clone() * r).contains_f64(2.0));
-//! let _ = take_undecided();
+//! let span = Decisions::start();
 //! let wide = Ball::with_radius(0.0, 1.0, 128); // [-1, 1]
 //! assert!(!(wide > two.zero()));
-//! assert!(take_undecided(), "0 < [-1, 1] cannot be decided");
+//! assert!(!span.all_decided(), "0 < [-1, 1] cannot be decided");
 //! ```
 
 use super::{NumError, Real, Scalar};
@@ -45,11 +45,22 @@ fn undecided() {
     UNDECIDED.with(|c| c.set(c.get() + 1));
 }
 
-/// Whether a comparison of balls was undecided on this thread since the last call (and
-/// resets the record).  An evaluation in balls is an enclosure only when this is
-/// `false` after it.
-pub fn take_undecided() -> bool {
-    UNDECIDED.with(|c| c.replace(0)) > 0
+/// A span of evaluation on this thread, for whether a comparison of balls in it was
+/// undecided.  Spans nest (an enclosure computed inside another evaluation opens its
+/// own): the count of undecided comparisons only grows.
+pub struct Decisions(u64);
+
+impl Decisions {
+    /// Opens a span here.
+    pub fn start() -> Decisions {
+        Decisions(UNDECIDED.with(Cell::get))
+    }
+
+    /// Was every comparison of balls on this thread since the start decided?  An
+    /// evaluation in balls is an enclosure only then.
+    pub fn all_decided(&self) -> bool {
+        UNDECIDED.with(Cell::get) == self.0
+    }
 }
 
 /// A real ball of Arb at a working precision (bits).
@@ -445,20 +456,20 @@ mod tests {
         assert!(!third.is_exact() && third.rad_f64() < 1e-35);
         let back = third.clone() * Ball::exact(3.0, 128);
         assert!(back.contains_f64(1.0));
-        let _ = take_undecided();
+        let span = Decisions::start();
         assert!(third < Ball::exact(0.34, 128));
-        assert!(!take_undecided());
+        assert!(span.all_decided());
         let greater = back > Ball::exact(1.0, 128);
         assert!(!greater);
-        assert!(take_undecided(), "3 · (1/3) > 1 is undecided in balls");
+        assert!(!span.all_decided(), "3 · (1/3) > 1 is undecided in balls");
     }
 
     #[test]
     fn floor_is_undecided_across_an_integer() {
-        let _ = take_undecided();
+        let span = Decisions::start();
         assert_eq!(Ball::with_radius(2.5, 0.25, 64).floor().mid_f64(), 2.0);
-        assert!(!take_undecided());
+        assert!(span.all_decided());
         let _ = Ball::with_radius(2.0, 0.25, 64).floor();
-        assert!(take_undecided());
+        assert!(!span.all_decided());
     }
 }

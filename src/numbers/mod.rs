@@ -31,7 +31,7 @@ pub mod gmp_kernels;
 mod mpfr;
 mod rational;
 
-pub use ball::{Ball, take_undecided};
+pub use ball::{Ball, Decisions};
 pub use complex::{C64, Cplx};
 pub use dual::Dual;
 pub use rational::{Rational, parse_rational};

@@ -24,7 +24,7 @@ use super::result::{Counterexample, Evidence};
 use crate::claims::catalogue::PExpr;
 use crate::claims::kind::Verdict;
 use crate::claims::sampler::{Point, Stream};
-use crate::numbers::{Ball, take_undecided};
+use crate::numbers::{Ball, Decisions};
 
 /// The working precision of the search, in bits.
 const BITS: u32 = 128;
@@ -54,11 +54,11 @@ fn show_point(p: &Point) -> String {
 
 /// lhs − rhs in balls at `p`: a witness, undecided, or why it cannot be evaluated.
 fn at_point(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, p: &Point) -> Result<AtPoint, String> {
-    let _ = take_undecided();
+    let span = Decisions::start();
     let ev = ctx.setup(p, Ball::exact(0.0, BITS))?;
     let (l, r) = (eval(&ev, lhs)?, eval(&ev, rhs)?);
     let d = l.sub(&r)?;
-    if take_undecided() {
+    if !span.all_decided() {
         return Ok(AtPoint::Undecided);
     }
     let comps = d.components();

@@ -23,7 +23,7 @@ use crate::claims::sampler::{Point, Sampler, Stream};
 use crate::claims::value::Value;
 use crate::linalg::krawczyk::{BallSystem, Certificate, krawczyk};
 use crate::linalg::newton::{Limits, System, newton};
-use crate::numbers::{Ball, take_undecided};
+use crate::numbers::{Ball, Decisions};
 
 /// The existence claim's fields.
 #[derive(Clone, Copy)]
@@ -268,6 +268,8 @@ pub fn certify(
     x: &[f64],
     radius: &[f64],
 ) -> Result<Certificate, String> {
+    // every comparison decided, from the `let`s (an implicit map's enclosure) on
+    let span = Decisions::start();
     let like = Ball::exact(0.0, CERT_BITS);
     let base = ctx.setup(point, like)?;
     let jacobian = jacobian_exprs(spec);
@@ -278,13 +280,15 @@ pub fn certify(
         last: None,
     };
     let cert = krawczyk(&mut system, x, radius, CERT_BITS)?;
+    if !span.all_decided() {
+        return Err("a comparison could not be decided in balls".into());
+    }
     if let Some(p) = spec.in_set {
-        let _ = take_undecided();
         let boxes: Vec<Ball> = (x.iter().zip(radius))
             .map(|(&c, &r)| Ball::with_radius(c, r, CERT_BITS))
             .collect();
         let inside = eval(&system.bound(&boxes), p)?.as_bool()?;
-        if take_undecided() || !inside {
+        if !span.all_decided() || !inside {
             return Err("the box is not certified to lie in the stated set".into());
         }
     }
