@@ -48,6 +48,14 @@ fn undecided() {
 /// A span of evaluation on this thread, for whether a comparison of balls in it was
 /// undecided.  Spans nest (an enclosure computed inside another evaluation opens its
 /// own): the count of undecided comparisons only grows.
+///
+/// ```
+/// use eulertop::numbers::{Ball, Decisions};
+/// let outer = Decisions::start();
+/// let _ = Ball::with_radius(1.0, 0.5, 64) < Ball::exact(1.2, 64); // undecided
+/// let inner = Decisions::start();
+/// assert!(inner.all_decided() && !outer.all_decided());
+/// ```
 pub struct Decisions(u64);
 
 impl Decisions {
@@ -64,6 +72,13 @@ impl Decisions {
 }
 
 /// A real ball of Arb at a working precision (bits).
+///
+/// ```
+/// use eulertop::numbers::{Ball, Real};
+/// let x = Ball::with_radius(0.5, 1e-10, 128); // [0.5 ± 1e-10]
+/// let s = Real::sin(&x);                       // every sin of the ball
+/// assert!(s.contains_f64(0.479425538604203) && s.rad_f64() < 2e-10);
+/// ```
 pub struct Ball {
     b: arb_struct,
     prec: u32,
