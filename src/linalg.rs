@@ -3,6 +3,7 @@
 //! and Newton's method for small square systems.  Part of the numbers layer: it knows
 //! nothing about the Euler top.
 
+pub mod krawczyk;
 pub mod newton;
 
 use crate::numbers::{ComplexScalar, Scalar};

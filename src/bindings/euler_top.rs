@@ -254,6 +254,13 @@ impl GenericFunction for ModelFn {
         self.is_implicit().then_some(self as &dyn Implicit)
     }
 
+    fn call_ball(
+        &self,
+        a: &[Value<crate::numbers::Ball>],
+    ) -> Result<Value<crate::numbers::Ball>, String> {
+        super::ball::call(*self, a)
+    }
+
     fn name_for_proofs(&self) -> &str {
         self.name()
     }

@@ -2,6 +2,7 @@
 //! both (the model knows nothing of claims, the engine nothing of the Euler top) and
 //! registers the model's functions under the names the catalogue uses.
 
+mod ball;
 pub mod catalogue;
 pub mod euler_top;
 mod implicit;

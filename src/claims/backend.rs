@@ -127,6 +127,16 @@ pub trait Num: Scalar + PartialOrd {
     }
     /// An elementary function of one argument.
     fn real_fn(&self, f: RealFn) -> Result<Self, String>;
+    /// Is every value an enclosure ([`Real::ENCLOSES`])?
+    const ENCLOSES: bool = false;
+    /// The value as a ball ([`Real::as_ball`]).
+    fn as_ball(&self) -> Option<&crate::numbers::Ball> {
+        None
+    }
+    /// A ball as a value of this type ([`Real::from_ball`]).
+    fn from_ball(_x: crate::numbers::Ball) -> Option<Self> {
+        None
+    }
     /// Why a value is meaningless, when the number system records failures inside
     /// operators (see [`Real::failure`]).
     fn failure(&self) -> Option<String> {
@@ -241,6 +251,13 @@ fn real_fn_generic<R: Real>(x: &R, f: RealFn) -> Result<R, String> {
 impl<R: Real> Num for R {
     const EXACT: bool = false;
     const ARITHMETIC: &'static str = "floating-point arithmetic";
+    const ENCLOSES: bool = <R as Real>::ENCLOSES;
+    fn as_ball(&self) -> Option<&crate::numbers::Ball> {
+        Real::as_ball(self)
+    }
+    fn from_ball(x: crate::numbers::Ball) -> Option<Self> {
+        <R as Real>::from_ball(x)
+    }
     fn failure(&self) -> Option<String> {
         Real::failure(self)
     }

@@ -20,7 +20,7 @@ use super::registry::{HostCall, Registry, UserFn};
 use super::value::Value;
 use crate::algebra::Sym;
 use crate::linalg::{Mat2, Mat3, Vec3};
-use crate::numbers::{Dual, Rational};
+use crate::numbers::{Ball, Dual, Rational};
 use rug::Float;
 use std::any::Any;
 use std::cell::{Cell, RefCell};
@@ -102,7 +102,8 @@ by_duals!(
     Float,
     Dual<f64>,
     Dual<Float>,
-    crate::algebra::series::Series
+    crate::algebra::series::Series,
+    crate::numbers::Ball
 );
 
 macro_rules! cannot_derive {
@@ -125,6 +126,7 @@ cannot_derive!(
     Dual<Sym> => "derivatives inside a function differentiated in its parameter",
     Rational => "derivatives in exact rational arithmetic",
     Dual<crate::algebra::series::Series> => "second derivatives of power series",
+    Dual<crate::numbers::Ball> => "second derivatives in ball arithmetic",
 );
 
 /// Exact derivatives: the derivation of the prover's tower with respect to the
@@ -185,6 +187,32 @@ fn others_independent(ev: &Evaluator<'_, Sym>, var: &str, comp: Option<i64>, x: 
             itself || c.derivative(x).is_ok_and(|d| d.is_exact_zero())
         })
     })
+}
+
+/// Nested applications of one catalogue function to its own result (through the first
+/// argument), this deep or deeper, are an iteration (such as Newton's method written
+/// out): in ball arithmetic its value is its limit ([`Evaluator::fixed_point`]).
+const ITERATION_DEPTH: usize = 3;
+
+/// How many times `name` is applied in a chain `name(name(…))` starting at `e`.
+fn chain_depth(e: &Expr, name: &str) -> usize {
+    match &e.kind {
+        ExprKind::Call(n, args) if n == name => {
+            1 + args.first().map_or(0, |a| chain_depth(a, name))
+        }
+        _ => 0,
+    }
+}
+
+/// Does `e` hold an iteration (a chain of [`ITERATION_DEPTH`] applications)?
+fn has_chain(e: &Expr) -> bool {
+    let mut found = false;
+    e.walk(&mut |x| {
+        if let ExprKind::Call(n, _) = &x.kind {
+            found |= chain_depth(x, n) >= ITERATION_DEPTH;
+        }
+    });
+    found
 }
 
 #[derive(Clone)]
@@ -633,6 +661,20 @@ impl<'r, T: Backend> Evaluator<'r, T> {
 
     #[inline(never)]
     fn call(&self, name: &str, args: &[Expr], sp: Span) -> Result<Value<T>, EvalError> {
+        if T::ENCLOSES
+            && args
+                .first()
+                .is_some_and(|a| 1 + chain_depth(a, name) >= ITERATION_DEPTH)
+        {
+            let local = self.local_fns.iter().rev().find(|f| f.def.name == name);
+            // a chain of a step (a function without an iteration of its own); a chain of
+            // iterations is evaluated as written, each iteration inside certified
+            if let Some(f) = local.or_else(|| self.reg.user(name)).cloned()
+                && !has_chain(&f.def.body)
+            {
+                return self.fixed_point(&f, args, sp);
+            }
+        }
         let vals: Vec<Value<T>> = args
             .iter()
             .map(|x| self.eval(x))
@@ -664,6 +706,81 @@ impl<'r, T: Backend> Evaluator<'r, T> {
             return self.call_user(&f, &vals, sp);
         }
         Err(EvalError::at(format!("unknown function '{name}'"), sp))
+    }
+
+    /// In ball arithmetic, an iteration `g(g(g(x₀, …), …), …)` of a catalogue function
+    /// `g` (Newton's method written out) stands for its limit, the fixed point of `g`
+    /// near the iterate: the iterate `r` is computed, and the Krawczyk test on
+    /// `x − g(x, …)` in the box `r ± 10⁻⁹·max(|r|, 10⁻³)` certifies exactly one fixed
+    /// point there, whose enclosure is the value.  A value that is not real and a
+    /// derivative through the iteration are refused.  (A chain of a function that holds
+    /// an iteration itself is evaluated as written, its inner iterations certified.)
+    fn fixed_point(&self, f: &Arc<UserFn>, args: &[Expr], sp: Span) -> Result<Value<T>, EvalError> {
+        let name = f.def.name.clone();
+        let fail =
+            |m: &str| EvalError::at(format!("{name}: the iteration is not enclosed: {m}"), sp);
+        let Some(like) = self.like.as_ball() else {
+            return Err(fail("a derivative through an iteration has no enclosure"));
+        };
+        let (prec, one) = (like.prec_bits(), crate::numbers::Scalar::one(like));
+        let vals: Vec<Value<T>> = args
+            .iter()
+            .map(|x| self.eval(x))
+            .collect::<Result<_, _>>()?;
+        let r = self
+            .call_user(f, &vals, sp)?
+            .as_real()
+            .map_err(|m| fail(&m))?;
+        let c = r.as_ball().map_or(f64::NAN, Ball::mid_f64);
+        if !c.is_finite() {
+            return Err(fail("the iterate is not finite"));
+        }
+        let rad = 1e-9 * c.abs().max(1e-3);
+        let ball = |x: Ball| Value::Real(T::from_ball(x).expect("the evaluator's type is Ball"));
+        // the step g(x, …) with x and the other arguments bound to names no catalogue
+        // name can take (they contain spaces)
+        let names: Vec<String> = (0..vals.len())
+            .map(|i| format!("fixed point {i}"))
+            .collect();
+        let mut ev = self.clone();
+        for (n, v) in names.iter().zip(&vals).skip(1) {
+            ev.bind(n, v.clone());
+        }
+        let name_expr = |n: &String| Expr {
+            kind: ExprKind::Name(n.clone()),
+            span: sp,
+        };
+        let step = Expr {
+            kind: ExprKind::Call(name.clone(), names.iter().map(name_expr).collect()),
+            span: sp,
+        };
+        let real = |v: Value<T>| -> Result<Ball, EvalError> {
+            let x = v.as_real().map_err(|m| fail(&m))?;
+            x.as_ball().cloned().ok_or_else(|| fail("not a ball"))
+        };
+        ev.bind(&names[0], ball(Ball::exact(c, prec)));
+        let fc = Ball::exact(c, prec) - real(ev.eval(&step)?)?;
+        let bx = Ball::with_radius(c, rad, prec);
+        ev.bind(&names[0], ball(bx.clone()));
+        let d = Expr {
+            kind: ExprKind::Deriv {
+                body: Box::new(step),
+                var: names[0].clone(),
+                component: None,
+            },
+            span: sp,
+        };
+        let dfx = one.clone() - real(ev.eval(&d)?)?;
+        let y = Ball::exact(1.0 / dfx.mid_f64(), prec);
+        let k = Ball::exact(c, prec) - y.clone() * fc
+            + (one - y * dfx) * (bx.clone() - Ball::exact(c, prec));
+        if !bx.contains_interior(&k) {
+            return Err(fail(&format!(
+                "the Krawczyk image {} is not inside the box",
+                k.show(10)
+            )));
+        }
+        Ok(ball(k))
     }
 
     /// A Jacobi built-in, its triple `[sn, cn, dn](u, k)` remembered (see [`CallMemo`]).

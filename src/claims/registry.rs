@@ -14,7 +14,7 @@ use super::implicit::Implicit;
 use super::value::Value;
 use crate::algebra::Sym;
 use crate::algebra::series::Series;
-use crate::numbers::{Dual, Rational, Real};
+use crate::numbers::{Ball, Dual, Rational, Real};
 use rug::Float;
 use std::collections::BTreeMap;
 use std::sync::Arc;
@@ -58,12 +58,29 @@ pub trait ExtFunction: Send + Sync {
     fn implicit(&self) -> Option<&dyn Implicit> {
         None
     }
+    /// On real balls (rigorous enclosures): refused by default, since a function's
+    /// numerical algorithms (iterations stopped at a tolerance) are not enclosures.
+    fn call_ball(&self, _args: &[Value<Ball>]) -> Result<Value<Ball>, String> {
+        Err(NO_BALLS.into())
+    }
+    /// On duals over real balls: refused by default, as [`ExtFunction::call_ball`].
+    fn call_dual_ball(&self, _args: &[Value<Dual<Ball>>]) -> Result<Value<Dual<Ball>>, String> {
+        Err(NO_BALLS.into())
+    }
 }
+
+/// Why a registered function gives no enclosure in ball arithmetic.
+pub const NO_BALLS: &str = "a model function is not evaluated in ball arithmetic (its numerical algorithms are not enclosures)";
 
 /// A function written once, generically over the backends.
 pub trait GenericFunction: Send + Sync {
     /// Evaluates on any real backend; errors are one-line messages.
     fn call<R: Real>(&self, args: &[Value<R>]) -> Result<Value<R>, String>;
+    /// Evaluates in ball arithmetic, as an enclosure of the exact value for every
+    /// argument in the argument balls; by default refused (see [`NO_BALLS`]).
+    fn call_ball(&self, _args: &[Value<Ball>]) -> Result<Value<Ball>, String> {
+        Err(NO_BALLS.into())
+    }
     /// Evaluates with field operations only, on any backend (exact rationals, and any
     /// backend without transcendental functions); by default an error (the function is
     /// not rational).
@@ -108,6 +125,9 @@ impl<G: GenericFunction> ExtFunction for G {
     }
     fn call_exact(&self, a: &[Value<Rational>]) -> Result<Value<Rational>, String> {
         self.call_algebraic(a)
+    }
+    fn call_ball(&self, a: &[Value<Ball>]) -> Result<Value<Ball>, String> {
+        GenericFunction::call_ball(self, a)
     }
     fn call_sym(&self, a: &[Value<Sym>]) -> Result<Value<Sym>, String> {
         if self.implicit().is_some()
@@ -186,6 +206,8 @@ host_call!(
     Dual<Sym> => call_dual_sym,
     Series => call_series,
     Dual<Series> => call_dual_series,
+    Ball => call_ball,
+    Dual<Ball> => call_dual_ball,
 );
 
 /// A registered function.

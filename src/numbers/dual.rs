@@ -145,6 +145,7 @@ impl<R: Real> Real for Dual<R> {
     // a dual over a type that evaluates by rules must not run numerical iterations either
     const BY_RULE: bool = R::BY_RULE;
     const FIXED: bool = R::FIXED;
+    const ENCLOSES: bool = R::ENCLOSES;
     fn prec(&self) -> u32 {
         self.v.prec()
     }

@@ -23,6 +23,7 @@
 //! assert!(back.magnitude() < 1e-75);
 //! ```
 
+mod ball;
 mod complex;
 mod dual;
 mod float64;
@@ -30,6 +31,7 @@ pub mod gmp_kernels;
 mod mpfr;
 mod rational;
 
+pub use ball::{Ball, Decisions};
 pub use complex::{C64, Cplx};
 pub use dual::Dual;
 pub use rational::{Rational, parse_rational};
@@ -318,6 +320,18 @@ pub trait Real: Scalar + PartialOrd {
     /// An MPFR number as a value of this type: `Some` exactly for the types whose
     /// [`Real::as_mpfr`] answers (the inverse of it).
     fn from_mpfr(_x: rug::Float) -> Option<Self> {
+        None
+    }
+    /// Is every value of this type an enclosure (a [`Ball`], or a dual number over
+    /// balls), so that an algorithm whose result is not an enclosure (an iteration
+    /// stopped after some steps) must not run on it?  `false` for every other type.
+    const ENCLOSES: bool = false;
+    /// The value as a [`Ball`] when the type is one; `None` for every other type.
+    fn as_ball(&self) -> Option<&Ball> {
+        None
+    }
+    /// A [`Ball`] as a value of this type: `Some` exactly for [`Ball`].
+    fn from_ball(_x: Ball) -> Option<Self> {
         None
     }
     /// Why a value is meaningless, for number systems that record failures inside

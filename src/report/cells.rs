@@ -19,8 +19,10 @@ pub fn verdict_badge(v: Verdict) -> &'static str {
 
 /// A claim's verdict badge: as [`verdict_badge`], with a refutation certified at an
 /// exact point (proof method `witness`) marked `✗✗` apart from a sampled one, and a
-/// negation proved by such a point marked `proved (witness)`, and an asymptotic claim
-/// proved by exact power series marked `proved (power series)`.
+/// negation proved by such a point marked `proved (witness)`, a claim proved by exact
+/// power series marked `proved (power series)`, and an existence claim whose sampled
+/// solutions are certified by the Krawczyk test marked `holds (roots certified at the
+/// samples)`.
 pub fn result_badge(r: &ClaimResult) -> &'static str {
     use crate::claims::verdict::ProofMethod;
     let witness = r.proof.method == ProofMethod::Witness;
@@ -29,6 +31,9 @@ pub fn result_badge(r: &ClaimResult) -> &'static str {
         Verdict::Proved if witness => return "✓✓ proved (witness)",
         Verdict::Proved if r.proof.method == ProofMethod::Series => {
             return "✓✓ proved (power series)";
+        }
+        Verdict::Holds if r.proof.method == ProofMethod::Interval => {
+            return "✓ holds (roots certified at the samples)";
         }
         _ => {}
     }

@@ -51,9 +51,15 @@ pub fn certified_line(results: &[ClaimResult]) -> String {
         by("proved", ProofMethod::Witness),
     );
     let refuted = by("refuted", ProofMethod::Witness);
+    let interval = by("holds", ProofMethod::Interval);
     let judged = results.len() - g("defined");
+    let sampled_roots = match interval {
+        0 => String::new(),
+        1 => "; of the verdicts that hold, 1 existence claim has the solution at every sample certified by a Krawczyk test (existence and uniqueness in a box), which certifies the samples, not the whole domain".into(),
+        n => format!("; of the verdicts that hold, {n} existence claims have the solution at every sample certified by a Krawczyk test (existence and uniqueness in a box), which certifies the samples, not the whole domain"),
+    };
     format!(
-        "certified: {} of the {judged} verdicts that are not definitions ({symbolic} proved symbolically, {series} proved by exact power series (orders, and existence for small h), {negations} negations proved, and {refuted} claims refuted at a point where lhs − rhs or a power-series coefficient below the claimed order is certified nonzero); the other verdicts rest on sampling or, for the {} by construction, on the model's definitions",
+        "certified: {} of the {judged} verdicts that are not definitions ({symbolic} proved symbolically, {series} proved by exact power series (orders, and existence for small h), {negations} negations proved, and {refuted} claims refuted at a point where lhs − rhs or a power-series coefficient below the claimed order is certified nonzero); the other verdicts rest on sampling or, for the {} by construction, on the model's definitions{sampled_roots}",
         symbolic + series + negations + refuted,
         g("construction"),
     )
@@ -130,7 +136,11 @@ pub fn readme(input: &ReportInput) -> String {
     );
     let _ = writeln!(
         s,
-        "- **✗✗ refuted (witness)**: refuted, and certified: at a domain point (the prover's variables at their exact sampled values) the normal form of lhs − rhs is enclosed in Arb balls that exclude 0, so lhs ≠ rhs there; a residual too small for the precision ladder is refuted this way too."
+        "- **✗✗ refuted (witness)**: refuted, and certified: at a domain point (the variables at their exact sampled values) lhs − rhs is enclosed in an Arb ball that excludes 0, so lhs ≠ rhs there: the prover's normal form evaluated at the point or, for a claim outside the prover's field, the claim's formulas evaluated in ball arithmetic (every comparison decided, an implicit map's value and the limit of an iteration written out certified by the Krawczyk test); a residual too small for the precision ladder is refuted this way too."
+    );
+    let _ = writeln!(
+        s,
+        "- **✓ holds (roots certified at the samples)**: an existence claim that holds, and at each sampled point the solution Newton found is certified by the Krawczyk test in Arb ball arithmetic: exactly one solution in a small box around it, every point of the box in the stated set; this certifies the sampled points only, so the verdict stays `holds`."
     );
     let _ = writeln!(s, "- **? inconclusive**: neither.\n");
     let _ = writeln!(

@@ -8,7 +8,24 @@ use std::fmt::Write;
 /// The proof paragraph of one claim (empty for claims that are not identities).
 pub fn proof_block(p: &ProofInfo) -> String {
     let mut s = String::new();
+    if p.method == crate::claims::verdict::ProofMethod::Interval {
+        let why = p.reason.as_deref().unwrap_or_default();
+        let _ = writeln!(s, "Interval certificate: {}.\n", why.trim_end_matches('.'));
+        if !p.notes.is_empty() {
+            let shown: Vec<String> = p.notes.iter().map(|x| format!("`{x}`")).collect();
+            let _ = writeln!(s, "- certified enclosures: {}\n", shown.join("; "));
+        }
+        return s;
+    }
     if let Some(r) = &p.reason {
+        if let Some(why) = r.strip_prefix(crate::claims::verdict::proof_info::NO_INTERVAL) {
+            let _ = writeln!(
+                s,
+                "Interval certificate: none — {}.\n",
+                why.trim_end_matches('.')
+            );
+            return s;
+        }
         if r != "a definition"
             && r != "only identities and independence claims are proved symbolically"
         {

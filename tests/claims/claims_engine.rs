@@ -452,10 +452,21 @@ fn independence_existence_negation() {
         eulertop::claims::verdict::ProofMethod::Witness
     );
     assert!(r.counterexample.is_some());
-    // exp is outside the prover's field: no witness, and the negation holds by sampling
+    // exp is outside the prover's field, but Arb encloses it: proved by a witness in
+    // ball arithmetic
     let r = verdict_of(
         &claim(
-            "kind = \"negation\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\n[claim.inner]\nkind = \"identity\"\nlhs = \"exp(2*x)\"\nrhs = \"2*exp(x)\"",
+            "kind = \"negation\"\nexpect = \"proved\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\n[claim.inner]\nkind = \"identity\"\nlhs = \"exp(2*x)\"\nrhs = \"2*exp(x)\"",
+        ),
+        &LADDER,
+    );
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+    assert!(r.reason.contains("Arb ball arithmetic"), "{}", r.reason);
+    // the amplitude am is outside both (the balls run no numerical iteration): the
+    // negation holds by sampling only
+    let r = verdict_of(
+        &claim(
+            "kind = \"negation\"\nexpect = \"holds\"\nvars = [[\"x\", \"uniform(0.5, 1)\"]]\n[claim.inner]\nkind = \"identity\"\nlhs = \"am(2*x, 0.5)\"\nrhs = \"2*am(x, 0.5)\"",
         ),
         &LADDER,
     );

@@ -65,3 +65,40 @@ fn the_papers_misprints_are_refuted_with_witnesses() {
         assert_eq!(r.proof.method, ProofMethod::Witness, "{id}: {}", r.reason);
     }
 }
+
+#[test]
+fn the_misprints_outside_the_provers_field_are_refuted_with_witnesses_in_balls() {
+    // Section 8's root counts: the roots of the cubic are Newton's method written out,
+    // enclosed as certified fixed points; the witness must not depend on the seed
+    for seed in [0, 1] {
+        let mut cat = with_catalogue(String::new());
+        cat.reseed(seed);
+        for id in [
+            "sec8.decomp.SO3.printed",
+            "sec8.S-minus.positive.printed",
+            "sec8.omega-as.only.printed",
+        ] {
+            let claim = cat.claims.iter().find(|c| c.id == id).expect("claim");
+            let r = run_claim(&cat, claim, &Options::default());
+            assert_eq!(r.verdict, Verdict::Refuted, "{id}: {}", r.reason);
+            assert_eq!(r.proof.method, ProofMethod::Witness, "{id}: {}", r.reason);
+            let w = r.proof.witness.as_deref().unwrap_or_default();
+            assert!(
+                w.contains("Arb ball arithmetic") && w.contains("excludes 0"),
+                "{w}"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_true_claim_outside_the_provers_field_has_no_witness_in_balls() {
+    // the corrected counts of Section 8 hold: the balls decide them at every point and
+    // find no witness
+    let cat = with_catalogue(String::new());
+    for id in ["sec8.decomp.O3", "sec8.S-minus.positive.tri"] {
+        let r = run(&cat, id);
+        assert_eq!(r.verdict, Verdict::Holds, "{id}: {}", r.reason);
+        assert!(r.proof.witness.is_none(), "{id}");
+    }
+}

@@ -11,6 +11,7 @@
 //! Samples that cannot be evaluated are reported as failures and replaced, never counted.
 
 pub mod asymptotic;
+pub mod ball_witness;
 pub mod context;
 pub mod exact;
 pub mod existence;
@@ -219,6 +220,7 @@ fn judge(ctx: Ctx<'_>, opts: &Options) -> Result<Evidence, Failure> {
                     Ok(()) => symbolic::judge(ctx, lhs, rhs, &mut ev),
                     Err(why) => ev.reason = format!("{}; not proved: {why}", ev.reason),
                 }
+                ball_witness::refine(ctx, lhs, rhs, &mut ev);
             }
             Ok(ev)
         }

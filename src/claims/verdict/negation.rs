@@ -33,7 +33,15 @@ pub fn judge(inner: &ClaimResult) -> Evidence {
                     inner.reason
                 )
             } else {
-                format!("inner claim {}: {}", inner.verdict.name(), inner.reason)
+                let why = match (&inner.proof.reason, verdict) {
+                    (Some(r), Verdict::Holds) => format!("; no witness: {r}"),
+                    _ => String::new(),
+                };
+                format!(
+                    "inner claim {}: {}{why}",
+                    inner.verdict.name(),
+                    inner.reason
+                )
             },
         )
     }

@@ -14,9 +14,17 @@ pub enum ProofMethod {
     /// An asymptotic claim proved by exact power series: every coefficient below the
     /// claimed order has normal form 0.
     Series,
+    /// Existence certified at the sampled points by the Krawczyk test in ball arithmetic
+    /// (one solution in a box around each sampled solution); not a proof on the whole
+    /// domain, so the verdict stays `holds`.
+    Interval,
     /// Not proved (the reason says why).
     None,
 }
+
+/// How the reason of an existence claim whose sampled solutions are not certified by
+/// the Krawczyk test begins.
+pub const NO_INTERVAL: &str = "no interval certificate: ";
 
 /// A fact a proof rests on besides algebra.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]

@@ -44,7 +44,9 @@ pub struct System<'a> {
 const PRECISION: i32 = 4;
 
 /// Turns a sampled `holds` into `proved` (method `series`) when the implicit function
-/// theorem proves the solution for every small enough `h` (see the module doc).
+/// theorem proves the solution for every small enough `h` (see the module doc); an
+/// attempt that does not prove leaves the sampled evidence (and its certificates) as it
+/// is.
 pub fn judge_existence(ctx: Ctx<'_>, sys: System<'_>, ev: &mut Evidence) {
     if ev.verdict != Verdict::Holds {
         return;
@@ -57,8 +59,10 @@ pub fn judge_existence(ctx: Ctx<'_>, sys: System<'_>, ev: &mut Evidence) {
             info.extent(),
             ev.reason
         );
+        ev.proof = Some(info);
+    } else if ev.proof.is_none() {
+        ev.proof = Some(info);
     }
-    ev.proof = Some(info);
 }
 
 /// The proof attempt over every case of the claim's domain.

@@ -1,0 +1,159 @@
+//! Certified refutations in ball arithmetic: a sampled domain point at which lhs − rhs,
+//! evaluated in Arb balls, excludes 0.
+//!
+//! The prover's witnesses (module `crate::algebra::witness`) need the claim in its
+//! field.  A claim outside it (an iteration such as Newton's method written out, an
+//! implicit map, functions the prover does not expand) may still be evaluated in balls
+//! ([`crate::numbers::Ball`]): every operation encloses its exact result, a comparison
+//! the balls cannot decide voids the evaluation, functions whose numerical algorithms do
+//! not enclose are refused, an implicit map's value is certified by the Krawczyk test,
+//! and an iteration stands for its limit, a fixed point certified in the same way.  At
+//! a point of the domain (the sampler's values, exact binary numbers) where a
+//! component of lhs − rhs is a ball excluding 0, the claim fails: a certified witness.
+//!
+//! The search walks the claim's sample stream: for a refuted or inconclusive claim the
+//! points the ladder saw and three times as many more; for a claim that holds at its
+//! samples as many points past them, so that a refutation does not depend on the few
+//! points one seed draws.  It stops at the first refusal (the same function is
+//! refused at every point).  A claim that states hypotheses (sign conditions, solution
+//! branches) is not searched: its domain is narrower than the sampler's.
+
+use super::context::{Ctx, eval, named, render};
+use super::proof_info::{ProofInfo, ProofMethod};
+use super::result::{Counterexample, Evidence};
+use crate::claims::catalogue::PExpr;
+use crate::claims::kind::Verdict;
+use crate::claims::sampler::{Point, Stream};
+use crate::numbers::{Ball, Decisions};
+
+/// The working precision of the search, in bits.
+const BITS: u32 = 128;
+
+/// What one point gave.
+enum AtPoint {
+    /// lhs − rhs excludes 0 there: the witness and the counterexample.
+    Witness(String, Counterexample),
+    /// The balls do not decide (they contain 0, or a comparison was undecided).
+    Undecided,
+}
+
+/// The point as `name = value` pairs, each value the exact binary number sampled
+/// (shortest decimal that reads back to it).
+fn show_point(p: &Point) -> String {
+    (p.vars.iter())
+        .map(|(n, v)| {
+            let parts: Vec<String> = v.components().iter().map(|x| format!("{x:?}")).collect();
+            match parts.len() {
+                1 => format!("{n} = {}", parts[0]),
+                _ => format!("{n} = ({})", parts.join(", ")),
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// lhs − rhs in balls at `p`: a witness, undecided, or why it cannot be evaluated.
+fn at_point(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, p: &Point) -> Result<AtPoint, String> {
+    let span = Decisions::start();
+    let ev = ctx.setup(p, Ball::exact(0.0, BITS))?;
+    let (l, r) = (eval(&ev, lhs)?, eval(&ev, rhs)?);
+    let d = l.sub(&r)?;
+    if !span.all_decided() {
+        return Ok(AtPoint::Undecided);
+    }
+    let comps = d.components();
+    let Some((i, b)) = comps.iter().enumerate().find(|(_, b)| !b.contains_zero()) else {
+        return Ok(AtPoint::Undecided);
+    };
+    let which = match comps.len() {
+        1 => String::new(),
+        _ => format!(" (component {})", i + 1),
+    };
+    let witness = format!(
+        "at the sampled point {}: lhs − rhs{which} ∈ {} (Arb ball arithmetic, every comparison decided), which excludes 0",
+        show_point(p),
+        b.show(15)
+    );
+    let counterexample = Counterexample {
+        bits: BITS,
+        point: named(p),
+        lhs: render(&l),
+        rhs: render(&r),
+        log2_residual: Some(d.log2_magnitude()),
+    };
+    Ok(AtPoint::Witness(witness, counterexample))
+}
+
+/// A witness from the claim's sample stream, or why there is none: the first `skip`
+/// points are drawn but not evaluated (the ladder found lhs = rhs there), then up to
+/// `count` are evaluated.
+fn search(
+    ctx: Ctx<'_>,
+    lhs: &PExpr,
+    rhs: &PExpr,
+    skip: usize,
+    count: usize,
+) -> Result<(String, Counterexample), String> {
+    let mut sampler = ctx.sampler(Stream::Samples).map_err(|c| c.to_string())?;
+    for k in 0..skip + count {
+        let Ok(p) = sampler.draw() else {
+            break;
+        };
+        if k < skip {
+            continue;
+        }
+        if let AtPoint::Witness(w, c) = at_point(ctx, lhs, rhs, &p)? {
+            return Ok((w, c));
+        }
+    }
+    Err(format!(
+        "lhs − rhs in balls contains 0 at each of {count} sampled points"
+    ))
+}
+
+/// Certifies a refutation, or refutes an inconclusive or sampled claim, by a witness in
+/// ball arithmetic when the evidence has no certificate yet (see the module).
+pub fn refine(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, ev: &mut Evidence) {
+    let method = ev.proof.as_ref().map_or(ProofMethod::None, |p| p.method);
+    let open = matches!(
+        ev.verdict,
+        Verdict::Refuted | Verdict::Inconclusive | Verdict::Holds
+    );
+    // a stated hypothesis (a sign condition, a branch) restricts the domain beyond what
+    // the sampler draws: no witness is sought outside the proved setting
+    if method != ProofMethod::None || !open || !ctx.claim.hypotheses.is_empty() {
+        return;
+    }
+    // a claim that holds at its samples is tried at as many points past them; a
+    // refuted or inconclusive one at its samples and three times as many more
+    let n = ctx.claim.samples.max(1);
+    let (skip, count) = match ev.verdict {
+        Verdict::Holds => (n, n),
+        _ => (0, 4 * n),
+    };
+    let (w, counterexample) = match search(ctx, lhs, rhs, skip, count) {
+        Ok(found) => found,
+        Err(why) => {
+            // a refutation without a certificate says why the balls give none
+            if ev.verdict != Verdict::Holds
+                && let Some(p) = ev.proof.as_mut()
+            {
+                let before = p.reason.take().unwrap_or_default();
+                p.reason = Some(format!("{before}; no witness in ball arithmetic: {why}"));
+            }
+            return;
+        }
+    };
+    let mut info = ev.proof.take().unwrap_or_else(|| ProofInfo::none(""));
+    info.method = ProofMethod::Witness;
+    info.witness = Some(w.clone());
+    ev.reason = match ev.verdict {
+        Verdict::Refuted => format!("{}; certified: lhs − rhs ≠ 0 {w}", ev.reason),
+        _ => format!("certified: lhs − rhs ≠ 0 {w} (numerically: {})", ev.reason),
+    };
+    ev.verdict = Verdict::Refuted;
+    ev.proof = Some(info);
+    if ev.counterexample.is_none() {
+        ev.counterexample = Some(counterexample);
+    }
+}
