@@ -214,10 +214,16 @@ impl Section {
     /// Writes `Definition t_id`, the lemma `e_id` and records the value.
     fn define(&mut self, id: usize, def: &str, target: Val, proof: &str) -> Result<(), String> {
         Self::guard(id, &target)?;
+        let text = self.text(&target);
+        // a value written as its definition (a symbol, a constant): nothing to prove
+        let proof = if def.trim_matches(['(', ')']) == text.trim_matches(['(', ')']) {
+            "  reflexivity.\n"
+        } else {
+            proof
+        };
         let _ = writeln!(
             self.body,
-            "Definition t_{id} := {def}.\nLemma e_{id} : t_{id} = {}.\nProof.\n  unfold t_{id}.\n{proof}Qed.",
-            self.text(&target)
+            "Definition t_{id} := {def}.\nLemma e_{id} : t_{id} = {text}.\nProof.\n  unfold t_{id}.\n{proof}Qed."
         );
         self.vals.insert(id, target);
         Ok(())
