@@ -112,8 +112,12 @@ class Evaluator:
         raise Unsupported("a comparison whose sign the certificate does not prove")
 
     def compare(self, op, a, b):
-        s = self.sign_of(self.c.add(self.scalar(a), self.scalar(b), -1))
-        return {"<": s < 0, ">": s > 0, "<=": s < 0, ">=": s > 0, "==": False, "!=": True}[op]
+        """a op b decided by a - b: a rational constant (zero included), else a proved
+        (nonzero) sign."""
+        d = self.c.add(self.scalar(a), self.scalar(b), -1)
+        r = self.c.rational(d)
+        s = (r > 0) - (r < 0) if r is not None else self.sign_of(d)
+        return {"<": s < 0, ">": s > 0, "<=": s <= 0, ">=": s >= 0, "==": s == 0, "!=": s != 0}[op]
 
     def sqrt(self, x):
         for rad, val in self.c.sqrt_nodes:
