@@ -13,9 +13,14 @@
 //!   (`dz_N`), and the branch of every square root as a sign (`br_N : 0 <= value`).
 //!
 //! Then every node `tN` of the derivation is a `Definition t_N` of its operation, and a
-//! lemma `e_N : t_N = num / den` proves its value: `field` for the rational step, and
-//! for a normal form reduced modulo the root relations, the explicit cofactors `qᵢ` with
-//! `num·den' − num'·den = Σ qᵢ (rᵢ² − aᵢ)` (checked by `ring`).  The theorem
+//! lemma `e_N : t_N = num / den` proves its value without normalising a large term with
+//! `field`: the arguments' values, as fractions, are combined into one fraction by the
+//! preamble's lemmas on atoms (`eu_addq`, `eu_mulq`, … applied by the tactic `eu_comb`),
+//! and the normal form follows by `ring` on the cross-multiplied numerators, with the
+//! root relations `r² = a` as rewriting rules (`ring [rel_r …]`; the cofactors `qᵢ` with
+//! `num·den' − num'·den = Σ qᵢ (rᵢ² − aᵢ)` name the relations a step uses).  A node
+//! without a normal form is stated as `eu_comb` builds it, so that its value is expanded
+//! once, where it is used.  The theorem
 //! `claim_holds` states `lhs − rhs = 0` for every claim line, and `Print Assumptions`
 //! lists what it rests on: the declared variables and hypotheses, and the axioms of
 //! Coq's real numbers.  Derivatives are not exported (a claim whose derivation needs

@@ -283,8 +283,9 @@ impl Section {
         }
     }
 
-    /// A rational operation (or a symbol or constant): `field` from the arguments'
-    /// values, then the reduction to the normal form, if the node has one.
+    /// A rational operation (or a symbol or constant): `ring` on the arguments' values
+    /// when they are polynomials, else `eu_comb` on them as fractions; then the
+    /// reduction to the normal form, if the node has one.
     fn rational(&mut self, id: usize, b: &[&str], nf: Option<&str>) -> Result<(), String> {
         let (def, args, val) = self.operation(id, b)?;
         Self::guard(id, &val)?;
