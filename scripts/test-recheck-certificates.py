@@ -173,6 +173,9 @@ class Cases:
         swapped = ws.replace(lines[0], "@").replace(lines[1], lines[0]).replace("@", lines[1])
         self.expect("its imaginary part's line in place of the real part's is rejected",
                     recheck([write(t, "ws-swapped.cert", swapped)]), False, "is not the catalogue's")
+        mm = prove("sec6.M-M-1.up", t)
+        self.expect("sn, cn, dn at a sum of base arguments by the checker's addition formulae: evaluated",
+                    recheck([write(t, "mm.cert", mm)]), True, "formulas: evaluated")
         master = prove("sec7.master12.g1.up", t)
         self.expect("the premises are printed",
                     recheck([write(t, "m.cert", master)]), True,

@@ -4,7 +4,7 @@ and compares them with the sides of the derivation's `claim` lines."""
 import re
 
 from .evaluate import Evaluator
-from .exprlang import Parser, Unsupported
+from .exprlang import Parser, Unsupported, bindings
 
 
 class FormulaMismatch(Exception):
@@ -36,6 +36,41 @@ def complex_free(cert, name):
     functions, true for complex values: a claim over a complex variable may bind it."""
     return cert.kinds.get(name) == "indeterminate" and name not in cert.real_assumed \
         and name not in cert.images
+
+
+def own_symbols(cert, src, env):
+    """The `let` names the certificate declares as indeterminates of its own: the
+    derivation proves its identity for every value of such a symbol, so it holds at the
+    value the `let` line gives.  Where a check used that the symbol is real, its
+    definition must be real by construction (real sampled variables and earlier such
+    names, numbers, + - * /)."""
+    real = {n for n, smp in (list(next((v for k, v in src.items() if k.startswith("domain.")), {}).get("vars", []))
+                             + list(src.get("claim.vars", []))) if "cplx(" not in smp and "sign(" not in smp}
+    own = set()
+    texts = " ".join(str(src.get(f"claim.{k}") or "") for k in ("let", "lhs", "rhs", "expr"))
+    if src.get("claim.kind") != "identity" or re.search(r"\b(d|grad)\(", texts):
+        return own  # a derivative would differentiate the symbol as independent
+    for name, params, tree in bindings(src.get("claim.let")):
+        if params is not None or name in env or cert.kinds.get(name) != "indeterminate" or name in cert.images:
+            continue
+        if name not in cert.real_assumed or real_by_construction(tree, real):
+            own.add(name)
+            real.add(name)
+    return own
+
+
+def real_by_construction(tree, real):
+    """Is the expression real by its form: numbers and real names under + - * /?"""
+    tag = tree[0]
+    if tag == "num":
+        return True
+    if tag == "var":
+        return tree[1] in real
+    if tag == "un":
+        return tree[1] == "-" and real_by_construction(tree[2], real)
+    if tag == "bin" and tree[1] in ("+", "-", "*", "/"):
+        return real_by_construction(tree[2], real) and real_by_construction(tree[3], real)
+    return False
 
 
 def complex_bound(cert, src):
@@ -71,7 +106,7 @@ def sides(cert, src):
     """The components of (lhs, rhs) of the claim, evaluated here."""
     ev = Evaluator(cert, [v for k, v in sorted(src.items()) if k.startswith("define.")])
     env = environment(cert, src)
-    ev.let(src.get("claim.let"), env)
+    ev.let(src.get("claim.let"), env, own=own_symbols(cert, src, env))
     kind = src.get("claim.kind")
     if kind == "identity":
         lhs = ev.eval(Parser(src["claim.lhs"]).whole(), env)
