@@ -115,14 +115,25 @@ fn the_steps_combine_fractions_by_lemmas_and_reduce_by_ring_with_the_relations()
     let coq = std::fs::read_to_string(&path).expect("script written");
     let _ = std::fs::remove_file(&path);
     // the preamble's lemmas on atoms, and the tactic that applies them
-    assert!(coq.contains("Lemma eu_addq a b c d : b <> 0 -> d <> 0 ->"), "{coq}");
-    assert!(coq.contains("Ltac eu_comb := repeat match goal with"), "{coq}");
-    let (_, body) = coq.split_once("\nModule Claim.").expect("the claim's module");
+    assert!(
+        coq.contains("Lemma eu_addq a b c d : b <> 0 -> d <> 0 ->"),
+        "{coq}"
+    );
+    assert!(
+        coq.contains("Ltac eu_comb := repeat match goal with"),
+        "{coq}"
+    );
+    let (_, body) = coq
+        .split_once("\nModule Claim.")
+        .expect("the claim's module");
     // a step on fractions: eu_comb, then the normal form by ring with the relations
     // it uses as rewriting rules; never field on the derivation's terms
     assert!(body.contains("  eu_comb.\n"), "{body}");
     assert!(body.contains("ring [rel_"), "{body}");
-    assert!(body.contains("apply (eu_fracr _ _ _ _ (sn_1)); [nzp | ring | ]."), "{body}");
+    assert!(
+        body.contains("apply (eu_fracr _ _ _ _ (sn_1)); [nzp | ring | ]."),
+        "{body}"
+    );
     assert!(!body.contains("field"), "{body}");
     // a constant's or a symbol's node is its definition
     assert!(
