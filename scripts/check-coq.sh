@@ -6,7 +6,8 @@
 # identities with (ident 1) and (ident 2), G1 - k^2 sn^2 G0 = k^2 nu^2 cn^2 dn^2, and
 # Lemma 2) and then further proved claims while the budget lasts (COQ_BUDGET seconds of
 # wall time, default 180, on JOBS parallel coqc, default 2; each coqc at most
-# COQ_TIMEOUT seconds, default 20: a longer one is listed as a timeout).  Every compiled script's
+# COQ_TIMEOUT seconds, default 20, and a family's at most COQ_FAMILY_TIMEOUT, default 120,
+# as the families must compile: a longer one is listed as a timeout).  Every compiled script's
 # `Print Assumptions` must list only the variables and hypotheses it declares and the
 # axioms of Coq's real numbers.  A negative check: a script with one relation's sign
 # flipped, and one with its claim changed, must fail to compile.  Exit status 0 when no written script fails to compile
@@ -46,7 +47,7 @@ deadline=$(($(date +%s) + budget))
 # one claim: write its script, compile it, check its assumptions; one line of result
 # (a claim of the budget's part is skipped once the deadline has passed)
 one() {
-  local id="$1" dir="$2" bin="$3" deadline="$4"
+  local id="$1" dir="$2" bin="$3" deadline="$4" limit="$5"
   local name
   name="c_$(printf '%s' "$id" | tr -c 'A-Za-z0-9_' '_')"
   if [ "$deadline" != 0 ] && [ "$(date +%s)" -ge "$deadline" ]; then
@@ -58,9 +59,9 @@ one() {
     return 0
   fi
   local t0=$SECONDS rc=0
-  (cd "$dir" && timeout "${COQ_TIMEOUT:-20}" coqc "$name.v" >"$name.log" 2>&1) || rc=$?
+  (cd "$dir" && timeout "$limit" coqc "$name.v" >"$name.log" 2>&1) || rc=$?
   if [ "$rc" = 124 ]; then
-    echo "timeout $id: coqc takes more than ${COQ_TIMEOUT:-20} s"
+    echo "timeout $id: coqc takes more than $limit s"
     return 0
   elif [ "$rc" != 0 ]; then
     echo "FAIL $id: $(grep -m1 -A2 'Error' "$dir/$name.log" | tr '\n' ' ' | head -c 200)"
@@ -74,13 +75,19 @@ one() {
 }
 export -f one
 tr ' ' '\n' <<<"$families" | sed '/^$/d' |
-  xargs -P "$jobs" -I{} bash -c 'one "$@"' _ {} "$out" "$bin" 0 >"$out/results.txt"
+  xargs -P "$jobs" -I{} bash -c 'one "$@"' _ {} "$out" "$bin" 0 "${COQ_FAMILY_TIMEOUT:-120}" >"$out/results.txt"
+family_ok=$(grep -c '^OK' "$out/results.txt" || true)
+family_time=$SECONDS
 printf '%s\n' "$others" | sed '/^$/d' |
-  xargs -P "$jobs" -I{} bash -c 'one "$@"' _ {} "$out" "$bin" "$deadline" >>"$out/results.txt"
+  xargs -P "$jobs" -I{} bash -c 'one "$@"' _ {} "$out" "$bin" "$deadline" "${COQ_TIMEOUT:-20}" >>"$out/results.txt"
 status=0
 negative=rejected
 grep -v '^OK\|^skipped' "$out/results.txt" | sort || true
 grep -q '^FAIL' "$out/results.txt" && status=1
+# a family's script that is written must compile (a timeout of one is a failure)
+if grep -q '^timeout' <(head -n "$(tr ' ' '\n' <<<"$families" | sed '/^$/d' | wc -l)" "$out/results.txt"); then
+  echo "check-coq: a script of the families takes more than ${COQ_FAMILY_TIMEOUT:-120} s"; status=1
+fi
 # the negative check, on sn^2 + cn^2 = 1 (whose proof uses the relation
 # cn_1^2 = 1 - sn_1^2): the script compiles; with that relation's sign flipped, or with
 # the claim stated as lhs - rhs = 1, it must fail to compile
@@ -101,5 +108,6 @@ for c in c_corrupt_relation c_corrupt_claim; do
 done
 ok=$(grep -c '^OK' "$out/results.txt" || true)
 count() { grep -c "^$1" "$out/results.txt" || true; }
+echo "check-coq: the families: $family_ok scripts compile in ${family_time} s wall"
 echo "check-coq: $ok Coq scripts compile, $(count FAIL) fail, $(count timeout) take more than ${COQ_TIMEOUT:-20} s, $(count nocoq) claims have none, $(count skipped) skipped for the budget; the corrupted scripts: $negative; ${SECONDS} s wall"
 exit "$status"

@@ -296,6 +296,7 @@ class Cert:
         self.alt = None  # its state once built (see `swap_parametrization`)
         self.pnames = None
         self.realmemo = {}  # symbol -> None (being checked), True/False
+        self.real_assumed = set()  # indeterminates whose being real a check has used
         self.checked = 0
         self.points = []
         self.sqrts = []  # (node id, radicand, stated value) of every square root
@@ -707,6 +708,7 @@ class Cert:
         kind = self.kinds.get(name)
         if kind == "indeterminate" or name in self.real_declared:
             ok = True
+            self.real_assumed.add(name)
         elif name in self.named:
             ok = self.frac_real(self.named[name])
         elif kind == "sn":

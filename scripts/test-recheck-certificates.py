@@ -84,6 +84,7 @@ EVALUATIONS = [  # (expression of the catalogue's language, its value as a certi
     ("([[1, 2, 0], [0, 1, 0], [0, 0, 1]] * vec(x, y, 1))[1]", "x + 2*y"),
     ("inv([[2, 0, 0], [0, x, 0], [0, 0, 1]])[2, 2]", "1/x"), ("det(diag(x, y, 2))", "2*x*y"),
     ("1e-3 + .5", "501/1000"), ("(x + y)^2 - x^2", "2*x*y + y**2"), ("1 - 2 * 3^2", "-17"),
+    ("if 2 == 2 then x else y", "x"), ("if 1 != 1 then x else y", "y"), ("if 1 <= 1 and 2 >= 2 then x else y", "x"),
 ]
 
 
@@ -165,6 +166,16 @@ class Cases:
         wrong = wrong.replace("node t15 = t11 - t14", "node t15 = t11 + t14")
         self.expect("a derivation that does not start from the formula is rejected",
                     recheck([write(t, "et-formula.cert", wrong)]), False, "is not the catalogue's")
+        ws = prove("sec5.ws.w1-w3", t)
+        self.expect("a claim over a complex variable u (derived as real and imaginary parts) is evaluated",
+                    recheck([write(t, "ws.cert", ws)]), True, "formulas: evaluated")
+        lines = re.findall(r"^claim t\d+ = t\d+$", ws, re.M)
+        swapped = ws.replace(lines[0], "@").replace(lines[1], lines[0]).replace("@", lines[1])
+        self.expect("its imaginary part's line in place of the real part's is rejected",
+                    recheck([write(t, "ws-swapped.cert", swapped)]), False, "is not the catalogue's")
+        mm = prove("sec6.M-M-1.up", t)
+        self.expect("sn, cn, dn at a sum of base arguments by the checker's addition formulae: evaluated",
+                    recheck([write(t, "mm.cert", mm)]), True, "formulas: evaluated")
         master = prove("sec7.master12.g1.up", t)
         self.expect("the premises are printed",
                     recheck([write(t, "m.cert", master)]), True,

@@ -112,8 +112,12 @@ class Evaluator:
         raise Unsupported("a comparison whose sign the certificate does not prove")
 
     def compare(self, op, a, b):
-        s = self.sign_of(self.c.add(self.scalar(a), self.scalar(b), -1))
-        return {"<": s < 0, ">": s > 0, "<=": s < 0, ">=": s > 0, "==": False, "!=": True}[op]
+        """a op b decided by a - b: a rational constant (zero included), else a proved
+        (nonzero) sign."""
+        d = self.c.add(self.scalar(a), self.scalar(b), -1)
+        r = self.c.rational(d)
+        s = (r > 0) - (r < 0) if r is not None else self.sign_of(d)
+        return {"<": s < 0, ">": s > 0, "<=": s <= 0, ">=": s >= 0, "==": s == 0, "!=": s != 0}[op]
 
     def sqrt(self, x):
         for rad, val in self.c.sqrt_nodes:
@@ -306,21 +310,53 @@ class Evaluator:
 
     def elliptic(self, name, u, k):
         """sn, cn, dn of (u, k) as a node of the certificate with that function, argument
-        and modulus (each recomputed there from the addition theorems); the other twelve
+        and modulus (each recomputed there from the addition theorems), or of a base
+        argument u at modulus k, as its `base` line states it (k up to its sign: the
+        functions depend on k² only); the other twelve
         Jacobi functions as their quotients (DLMF 22.2)."""
         num, den = ELLIPTIC[name]
         out = []
+        # sn, cn, dn depend on the modulus through k² only (DLMF 22.2)
+        k2 = self.c.mul(k, k)
+        same_k = lambda kk: kk is not None and self.c.eq(self.c.mul(kk, kk), k2)  # noqa: E731
         for f in (num, den):
             f = {"s": "sn", "c": "cn", "d": "dn"}.get(f, f)
             if f == "n":
                 out.append(self.c.one)
                 continue
             hit = next((val for g, arg, kk, val in self.c.elliptic_nodes
-                        if g == f and kk is not None and self.c.eq(arg, u) and self.c.eq(kk, k)), None)
+                        if g == f and self.c.eq(arg, u) and same_k(kk)), None)
+            if hit is None:
+                hit = self.of_bases(f, u, same_k)
             if hit is None:
                 raise Unsupported(f"{f} of an argument that is no elliptic node of the certificate")
             out.append(hit)
         return self.c.div(out[0], out[1])
+
+    def of_bases(self, f, u, same_k):
+        """f (sn, cn or dn) at u = Σ n_b b (integers n_b) for base arguments b that are
+        symbols of one table at the modulus: the checker's own addition formulae on the
+        values the `base` lines state (those its elliptic nodes start from), or None."""
+        if u.den != self.c.ring.one:
+            return None
+        combo, table = [], None
+        for monom, coef in u.num.terms():
+            used = [i for i, e in enumerate(monom) if e]
+            if len(used) != 1 or monom[used[0]] != 1 or int(coef) != coef:
+                return None
+            name = str(self.c.ring.symbols[used[0]])
+            base = next((h for h, b in self.c.bases.items()
+                         if b["z"] is None and same_k(b["k"]) and self.c.eq(b["arg"], self.c.frac(name))), None)
+            if base is None or (table is not None and base.split("_")[1] != table):
+                return None
+            table = base.split("_")[1]
+            combo.append(f"{base}:{int(coef)}")
+        if not combo:
+            return None
+        try:
+            return self.c.elliptic(f, u, table, combo, 0, 0)
+        except Exception:  # noqa: BLE001 - not the stated combination: not evaluated here
+            return None
 
     def implicit(self, name, args):
         """An implicit map's value where the certificate's chart gives it: at arguments
@@ -359,10 +395,13 @@ class Evaluator:
         z, n = self.c.zero, self.c.neg
         return (MAT, ((z, m[2], n(m[1])), (n(m[2]), z, m[0]), (m[1], n(m[0]), z)))
 
-    def let(self, text, env):
-        """Adds the `let` bindings to env (local functions as closures)."""
+    def let(self, text, env, own=()):
+        """Adds the `let` bindings to env (local functions as closures); a name of `own`
+        is the certificate's symbol of that name."""
         for name, params, tree in bindings(text):
-            if params is None:
+            if name in own:
+                env[name] = self.c.frac(name)
+            elif params is None:
                 # evaluated where it is first used: a binding the sides do not use may
                 # stay beyond this evaluator
                 env[name] = Lazy(self, tree, env)

@@ -4,7 +4,7 @@ and compares them with the sides of the derivation's `claim` lines."""
 import re
 
 from .evaluate import Evaluator
-from .exprlang import Parser, Unsupported
+from .exprlang import Parser, Unsupported, bindings
 
 
 class FormulaMismatch(Exception):
@@ -18,13 +18,71 @@ def environment(cert, src, charts=True):
     env = {}
     domain = next((v for k, v in src.items() if k.startswith("domain.")), {})
     for name, sampler in list(domain.get("vars", [])) + list(src.get("claim.vars", [])):
-        if "cplx(" in sampler:
-            continue  # a complex variable: not a real indeterminate of this evaluator
+        if "cplx(" in sampler and not complex_free(cert, name):
+            continue  # a complex variable where the derivation may use that it is real
         comps = [f"{name}{j}" for j in (1, 2, 3)] if sampler.strip().startswith("vec(") else [name]
         if all(cert.kinds.get(c) == "indeterminate" or is_sign_symbol(cert, c) for c in comps):
             syms = [cert.frac(c) for c in comps]
             env[name] = syms[0] if len(syms) == 1 else ("vec", tuple(syms))
     return chart_variables(cert, src, env) if charts else env
+
+
+def complex_free(cert, name):
+    """Does the derivation hold for complex values of the indeterminate `name`: has no
+    check used that it is real (module recheck-certificates, `sym_real`: sn of a real
+    argument, a root of a real radicand)?  It has no image in the domain's
+    parametrization either (module domain: a complex variable is not parametrized), so
+    no sign rests on it, and the derivation's identities are identities of rational
+    functions, true for complex values: a claim over a complex variable may bind it."""
+    return cert.kinds.get(name) == "indeterminate" and name not in cert.real_assumed \
+        and name not in cert.images
+
+
+def own_symbols(cert, src, env):
+    """The `let` names the certificate declares as indeterminates of its own: the
+    derivation proves its identity for every value of such a symbol, so it holds at the
+    value the `let` line gives.  Where a check used that the symbol is real, its
+    definition must be real by construction (real sampled variables and earlier such
+    names, numbers, + - * /)."""
+    real = {n for n, smp in (list(next((v for k, v in src.items() if k.startswith("domain.")), {}).get("vars", []))
+                             + list(src.get("claim.vars", []))) if "cplx(" not in smp and "sign(" not in smp}
+    own = set()
+    texts = " ".join(str(src.get(f"claim.{k}") or "") for k in ("let", "lhs", "rhs", "expr"))
+    if src.get("claim.kind") != "identity" or re.search(r"\b(d|grad)\(", texts):
+        return own  # a derivative would differentiate the symbol as independent
+    for name, params, tree in bindings(src.get("claim.let")):
+        if params is not None or name in env or cert.kinds.get(name) != "indeterminate" or name in cert.images:
+            continue
+        if name not in cert.real_assumed or real_by_construction(tree, real):
+            own.add(name)
+            real.add(name)
+    return own
+
+
+def real_by_construction(tree, real):
+    """Is the expression real by its form: numbers and real names under + - * /?"""
+    tag = tree[0]
+    if tag == "num":
+        return True
+    if tag == "var":
+        return tree[1] in real
+    if tag == "un":
+        return tree[1] == "-" and real_by_construction(tree[2], real)
+    if tag == "bin" and tree[1] in ("+", "-", "*", "/"):
+        return real_by_construction(tree[2], real) and real_by_construction(tree[3], real)
+    return False
+
+
+def complex_bound(cert, src):
+    """Has environment() bound a variable the catalogue samples as complex?"""
+    domain = next((v for k, v in src.items() if k.startswith("domain.")), {})
+    pairs = list(domain.get("vars", [])) + list(src.get("claim.vars", []))
+    return any("cplx(" in s and complex_free(cert, n) for n, s in pairs)
+
+
+def interleave_zero(cert, comps):
+    """Each component followed by 0 (its imaginary part in the derivation)."""
+    return [x for c in comps for x in (c, cert.zero)]
 
 
 def chart_variables(cert, src, env):
@@ -48,7 +106,7 @@ def sides(cert, src):
     """The components of (lhs, rhs) of the claim, evaluated here."""
     ev = Evaluator(cert, [v for k, v in sorted(src.items()) if k.startswith("define.")])
     env = environment(cert, src)
-    ev.let(src.get("claim.let"), env)
+    ev.let(src.get("claim.let"), env, own=own_symbols(cert, src, env))
     kind = src.get("claim.kind")
     if kind == "identity":
         lhs = ev.eval(Parser(src["claim.lhs"]).whole(), env)
@@ -120,22 +178,38 @@ def check(cert, src, catalogue=None):
     except Exception as e:  # noqa: BLE001 - whatever the evaluator cannot do binds by text only
         return f"text (not evaluated: {type(e).__name__} {e})"
     pairs = cert.claim_pairs
+    orders = [(lhs, rhs)]
+    if complex_bound(cert, src) and len(pairs) == 2 * len(lhs) and not cert.charts:
+        # a claim over a complex variable, derived as real and imaginary parts: each
+        # real part's line is the claim's component (the variable a formal symbol), each
+        # imaginary part's line states 0 = 0; the parts component by component or all
+        # real parts first
+        zero = [cert.zero] * len(lhs)
+        orders = [(interleave_zero(cert, lhs), interleave_zero(cert, rhs)), (lhs + zero, rhs + zero)]
     # after the claim's components, a proof through a chart claims the map's equations at
     # the chart (each rechecked as an equality; the chart is verified against the catalogue)
     extra = len(pairs) - len(lhs)
     if extra > 0 and cert.charts:
         pairs = pairs[:len(lhs)]
-    if len(pairs) != len(lhs):
+    if len(pairs) != len(orders[0][0]):
         raise FormulaMismatch(f"the claim has {len(lhs)} component(s), the derivation {len(pairs)} claim line(s)")
+    why = [mismatch(cert, pairs, l, r) for l, r in orders]
+    if all(why):
+        raise FormulaMismatch(why[0])
+    return "evaluated"
+
+
+def mismatch(cert, pairs, lhs, rhs):
+    """The first claim line whose sides are not (lhs, rhs)'s component, or None."""
     for j, ((a, b), l, r) in enumerate(zip(pairs, lhs, rhs), 1):
         tried = [(a, b)] + [split_difference(cert, a, b)]
         if not any(cert.eq(cert.vals[x], l) and cert.eq(cert.vals[y], r) for x, y in tried):
             x, y = tried[-1]
             side = "left" if not cert.eq(cert.vals[x], l) else "right"
-            raise FormulaMismatch(f"component {j}: the derivation's {side} side "
-                                  f"({x if side == 'left' else y}) is not the catalogue's "
-                                  f"{'lhs' if side == 'left' else 'rhs'} evaluated from the certificate's symbols")
-    return "evaluated"
+            return (f"component {j}: the derivation's {side} side "
+                    f"({x if side == 'left' else y}) is not the catalogue's "
+                    f"{'lhs' if side == 'left' else 'rhs'} evaluated from the certificate's symbols")
+    return None
 
 
 def split_difference(cert, a, b):

@@ -13,9 +13,14 @@
 //!   (`dz_N`), and the branch of every square root as a sign (`br_N : 0 <= value`).
 //!
 //! Then every node `tN` of the derivation is a `Definition t_N` of its operation, and a
-//! lemma `e_N : t_N = num / den` proves its value: `field` for the rational step, and
-//! for a normal form reduced modulo the root relations, the explicit cofactors `qᵢ` with
-//! `num·den' − num'·den = Σ qᵢ (rᵢ² − aᵢ)` (checked by `ring`).  The theorem
+//! lemma `e_N : t_N = num / den` proves its value without normalising a large term with
+//! `field`: the arguments' values, as fractions, are combined into one fraction by the
+//! preamble's lemmas on atoms (`eu_addq`, `eu_mulq`, … applied by the tactic `eu_comb`),
+//! and the normal form follows by `ring` on the cross-multiplied numerators, with the
+//! root relations `r² = a` as rewriting rules (`ring [rel_r …]`; the cofactors `qᵢ` with
+//! `num·den' − num'·den = Σ qᵢ (rᵢ² − aᵢ)` name the relations a step uses).  A node
+//! without a normal form is stated as `eu_comb` builds it, so that its value is expanded
+//! once, where it is used.  The theorem
 //! `claim_holds` states `lhs − rhs = 0` for every claim line, and `Print Assumptions`
 //! lists what it rests on: the declared variables and hypotheses, and the axioms of
 //! Coq's real numbers.  Derivatives are not exported (a claim whose derivation needs
@@ -39,10 +44,13 @@ Lemma eu_pfrac a n e : e <> 0 -> a * e - n = 0 -> a = n / e.
 Proof. intros he h. field_simplify_eq; [lra | auto]. Qed.
 Lemma eu_same a n e : a - n = 0 -> a / e = n / e.
 Proof. intros h. replace a with n by lra. reflexivity. Qed.
-Lemma eu_fracq a r n e : e <> 0 -> r <> 0 -> a - n * r = 0 -> a / (e * r) = n / e.
-Proof. intros he hr h. field_simplify_eq; [lra | auto..]. Qed.
-Lemma eu_nzq q e r : q <> 0 -> e * r = q -> r <> 0.
-Proof. intros hq h hr. apply hq. rewrite <- h, hr. ring. Qed.
+Lemma eu_fracr a q n e r : q <> 0 -> e * r = q -> a - n * r = 0 -> a / q = n / e.
+Proof.
+  intros hq h ha. subst q.
+  assert (e <> 0) by (intro z; apply hq; rewrite z; ring).
+  assert (r <> 0) by (intro z; apply hq; rewrite z; ring).
+  replace a with (n * r) by lra. field. auto.
+Qed.
 Lemma eu_num x p q : x = p / q -> x <> 0 -> p <> 0.
 Proof. intros h hx hp. apply hx. rewrite h, hp. unfold Rdiv. ring. Qed.
 Lemma eu_nump x p : x = p -> x <> 0 -> p <> 0.
@@ -55,6 +63,28 @@ Lemma eu_nzr x y : x * y <> 0 -> y <> 0.
 Proof. intros h e. apply h. rewrite e. ring. Qed.
 Lemma eu_nzpow x n : x ^ S n <> 0 -> x <> 0.
 Proof. intros h e. apply h. rewrite e. simpl. ring. Qed.
+(* a polynomial as a fraction, and the arithmetic of fractions on atoms: the steps
+   combine fractions with these instead of normalising large terms with field *)
+Lemma eu_f x p : x = p -> x = p / 1.
+Proof. intros h. rewrite h. field. Qed.
+Lemma eu_mulq a b c d : b <> 0 -> d <> 0 -> a / b * (c / d) = (a * c) / (b * d).
+Proof. intros. field. auto. Qed.
+Lemma eu_addq a b c d : b <> 0 -> d <> 0 -> a / b + c / d = (a * d + c * b) / (b * d).
+Proof. intros. field. auto. Qed.
+Lemma eu_subq a b c d : b <> 0 -> d <> 0 -> a / b - c / d = (a * d - c * b) / (b * d).
+Proof. intros. field. auto. Qed.
+Lemma eu_oppq a b : - (a / b) = (- a) / b.
+Proof. unfold Rdiv. ring. Qed.
+Lemma eu_zaddq a b : 0 + a / b = a / b.
+Proof. ring. Qed.
+Lemma eu_zsubq a b : 0 - a / b = (- a) / b.
+Proof. unfold Rdiv. ring. Qed.
+Lemma eu_divq a b c d : b <> 0 -> c <> 0 -> d <> 0 -> a / b / (c / d) = (a * d) / (b * c).
+Proof. intros. field. auto. Qed.
+Lemma eu_powq a b n : b <> 0 -> (a / b) ^ n = a ^ n / b ^ n.
+Proof. intros. unfold Rdiv. rewrite Rpow_mult_distr, pow_inv. reflexivity. Qed.
+Lemma eu_ipowq a b n : a <> 0 -> b <> 0 -> / ((a / b) ^ n) = b ^ n / a ^ n.
+Proof. intros. rewrite eu_powq by auto. field. split; apply pow_nonzero; auto. Qed.
 (* every factor of a nonzero product is nonzero *)
 Ltac nzsat := repeat match goal with
   | H : ?x * ?y <> 0 |- _ =>
@@ -63,8 +93,21 @@ Ltac nzsat := repeat match goal with
   | H : ?x ^ S ?n <> 0 |- _ =>
       lazymatch goal with _ : x <> 0 |- _ => fail | _ => pose proof (eu_nzpow _ _ H) end
   end.
-Ltac nzs := nzsat; repeat split; first [assumption | lra].
-Ltac nzp := nzsat; repeat apply Rmult_integral_contrapositive_currified; first [assumption | lra].
+Ltac nzp := nzsat;
+  repeat first [apply Rmult_integral_contrapositive_currified | apply pow_nonzero];
+  first [assumption | lra].
+(* an operation on fractions as one fraction, innermost first *)
+Ltac eu_comb := repeat match goal with
+  | |- context [?a / ?b * (?c / ?d)] => rewrite (eu_mulq a b c d) by nzp
+  | |- context [0 + ?a / ?b] => rewrite (eu_zaddq a b)
+  | |- context [0 - ?a / ?b] => rewrite (eu_zsubq a b)
+  | |- context [?a / ?b + ?c / ?d] => rewrite (eu_addq a b c d) by nzp
+  | |- context [?a / ?b - ?c / ?d] => rewrite (eu_subq a b c d) by nzp
+  | |- context [- (?a / ?b)] => rewrite (eu_oppq a b)
+  | |- context [?a / ?b / (?c / ?d)] => rewrite (eu_divq a b c d) by nzp
+  | |- context [/ ((?a / ?b) ^ ?n)] => rewrite (eu_ipowq a b n) by nzp
+  | |- context [(?a / ?b) ^ ?n] => rewrite (eu_powq a b n) by nzp
+  end.
 ";
 
 /// The prefixes of the names the script gives; a symbol may not start with one.
@@ -142,11 +185,16 @@ fn comment(text: &str) -> String {
 }
 
 /// A value as the script writes it: a numerator over a product of denominators (an
-/// empty product is 1).
+/// empty product is 1), the product written `dt` as the steps of [`PREAMBLE`] build it
+/// (empty for a polynomial).  The numerator is written expanded, or, for a node
+/// without a normal form, as the steps build it (`nt`), which spares expanding it
+/// twice.
 #[derive(Clone)]
 struct Val {
     num: Poly,
     den: Vec<Poly>,
+    dt: String,
+    nt: Option<String>,
 }
 
 /// One parsed `node` line.
@@ -163,6 +211,9 @@ struct Section {
     vals: HashMap<usize, Val>,
     /// A nonzero denominator (as written) → the hypothesis or lemma that states it.
     facts: HashMap<String, String>,
+    /// The nodes that divide (a divisor or the base of a negative power): their
+    /// numerator is written expanded, as the lemma of their nonzero numerator states it.
+    divisors: BTreeSet<usize>,
     decls: String,
     body: String,
 }
@@ -173,6 +224,7 @@ fn section(lines: &[&str], name: &str, theorem: &str) -> Result<String, String> 
     let nodes = parse_nodes(lines)?;
     let claims = parse_claims(lines)?;
     let needed = reachable(&nodes, &claims);
+    s.divisors = divisors(&nodes);
     for (id, node) in &nodes {
         if needed.contains(id) {
             s.node(*id, node)?;
@@ -245,6 +297,18 @@ fn node_args(body: &[String]) -> Vec<usize> {
         .collect()
 }
 
+/// The nodes that divide: a divisor of `/` or the base of a negative power.
+fn divisors(nodes: &BTreeMap<usize, NodeLine>) -> BTreeSet<usize> {
+    let arg = |t: &String| t.strip_prefix('t').and_then(|n| n.parse().ok());
+    (nodes.values())
+        .filter_map(|n| match n.body.as_slice() {
+            [_, op, c] if op == "/" => arg(c),
+            [a, op, e] if op == "^" && e.starts_with('-') => arg(a),
+            _ => None,
+        })
+        .collect()
+}
+
 /// The nodes the claims depend on, in the script's definitions.
 fn reachable(nodes: &BTreeMap<usize, NodeLine>, claims: &[(usize, usize)]) -> BTreeSet<usize> {
     let mut seen = BTreeSet::new();
@@ -278,6 +342,7 @@ impl Section {
             bases: HashMap::new(),
             vals: HashMap::new(),
             facts: HashMap::new(),
+            divisors: BTreeSet::new(),
             decls: String::new(),
             body: String::new(),
         };

@@ -105,3 +105,39 @@ fn an_unwritable_coq_path_fails_before_the_proof() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("--coq needs one claim"), "{err}");
 }
+
+#[test]
+fn the_steps_combine_fractions_by_lemmas_and_reduce_by_ring_with_the_relations() {
+    let path = temp("ws.v");
+    let p = path.to_str().unwrap();
+    let (code, _, err) = run(&["prove", "sec5.ws.w1-w3", "--coq", p]);
+    assert_eq!(code, 0, "{err}");
+    let coq = std::fs::read_to_string(&path).expect("script written");
+    let _ = std::fs::remove_file(&path);
+    // the preamble's lemmas on atoms, and the tactic that applies them
+    assert!(
+        coq.contains("Lemma eu_addq a b c d : b <> 0 -> d <> 0 ->"),
+        "{coq}"
+    );
+    assert!(
+        coq.contains("Ltac eu_comb := repeat match goal with"),
+        "{coq}"
+    );
+    let (_, body) = coq
+        .split_once("\nModule Claim.")
+        .expect("the claim's module");
+    // a step on fractions: eu_comb, then the normal form by ring with the relations
+    // it uses as rewriting rules; never field on the derivation's terms
+    assert!(body.contains("  eu_comb.\n"), "{body}");
+    assert!(body.contains("ring [rel_"), "{body}");
+    assert!(
+        body.contains("apply (eu_fracr _ _ _ _ (sn_1)); [nzp | ring | ]."),
+        "{body}"
+    );
+    assert!(!body.contains("field"), "{body}");
+    // a constant's or a symbol's node is its definition
+    assert!(
+        body.contains("Lemma e_4 : t_4 = (sn_1).\nProof.\n  unfold t_4.\n  reflexivity.\nQed."),
+        "{body}"
+    );
+}

@@ -30,23 +30,69 @@ impl Section {
         self.sym.constant(&Integer::from(1))
     }
 
-    /// A value as a Coq term: `(num)` for a polynomial, else `(num) / (den)`.
+    /// A value as a Coq term: `(num)` for a polynomial, else `(num) / den`.
     fn text(&self, v: &Val) -> String {
         if v.den.is_empty() {
-            return self.sym.coq(&v.num);
+            return self.ntext(v);
         }
-        self.frac_text(v)
+        format!("{} / {}", self.ntext(v), v.dt)
     }
 
-    /// A value as a Coq term `(num) / (den)` (`/ 1` for a polynomial).
-    fn frac_text(&self, v: &Val) -> String {
-        let den: Vec<String> = v.den.iter().map(|d| self.sym.coq(d)).collect();
-        let den = match den.len() {
-            0 => "1".to_string(),
-            1 => den[0].clone(),
-            _ => format!("({})", den.join(" * ")),
-        };
-        format!("{} / {den}", self.sym.coq(&v.num))
+    /// The numerator of a value as its lemma states it.
+    fn ntext(&self, v: &Val) -> String {
+        v.nt.clone().unwrap_or_else(|| self.sym.coq(&v.num))
+    }
+
+    /// The numerator `eu_comb` makes of operation `b` on the arguments' fractions (the
+    /// lemmas `eu_addq`, `eu_mulq`, … of the preamble), or `None` for an operation whose
+    /// numerator is better written expanded.
+    fn structural(&self, b: &[&str]) -> Option<String> {
+        let v = |t: &str| arg(t).ok().and_then(|a| self.vals.get(&a));
+        let nd = |t: &str| v(t).map(|x| (self.ntext(x), Self::dt(x).to_string()));
+        match b {
+            ["-", a] => Some(format!("(- {})", nd(a)?.0)),
+            ["dot", rest @ ..] => {
+                let mut acc: Option<(String, String)> = None;
+                for t in rest.chunks(3) {
+                    let [sg, a, c] = t else { return None };
+                    let ((na, da), (nc, dc)) = (nd(a)?, nd(c)?);
+                    let (n, d) = (format!("({na} * {nc})"), format!("({da} * {dc})"));
+                    acc = Some(match acc {
+                        None if *sg == "-" => (format!("(- {n})"), d),
+                        None => (n, d),
+                        Some((an, ad)) => (
+                            format!("({an} * {d} {sg} {n} * {ad})"),
+                            format!("({ad} * {d})"),
+                        ),
+                    });
+                }
+                acc.map(|(n, _)| n)
+            }
+            [a, "^", e] => {
+                let (na, da) = nd(a)?;
+                let n = e.trim_start_matches('-');
+                Some(format!(
+                    "({} ^ {n})",
+                    if e.starts_with('-') { da } else { na }
+                ))
+            }
+            [a, op, c] => {
+                let ((na, da), (nc, dc)) = (nd(a)?, nd(c)?);
+                match *op {
+                    "+" | "-" => Some(format!("({na} * {dc} {op} {nc} * {da})")),
+                    "*" => Some(format!("({na} * {nc})")),
+                    "/" => Some(format!("({na} * {dc})")),
+                    _ => None,
+                }
+            }
+            _ => None,
+        }
+    }
+
+    /// The denominator of a value as the steps write it (`1` for a polynomial, which
+    /// the steps write as `p / 1`).
+    fn dt(v: &Val) -> &str {
+        if v.den.is_empty() { "1" } else { &v.dt }
     }
 
     /// The value of node `id` (an earlier node).
@@ -69,8 +115,14 @@ impl Section {
                 self.facts.insert(t, format!("nz_{id}"));
             }
         }
+        let dt = self.sym.coq(&den);
         let den = if den.is_one() { vec![] } else { vec![den] };
-        Ok(Val { num, den })
+        Ok(Val {
+            num,
+            den,
+            dt,
+            nt: None,
+        })
     }
 
     /// The `pose proof` of every lemma that states a denominator of `vals` nonzero (the
@@ -107,38 +159,26 @@ impl Section {
         Ok(format!("  {apply}\n  {}\n", self.cofactor_proof(&f)?))
     }
 
-    /// The proof of `op(arguments) = to` through the value `from` with denominators: by
-    /// `field`, `from` is `P / (D·R)` when the product `Q` of its denominators is the
-    /// denominator `D` of `to` times `R`, and then `P − N·R` is the combination of the
-    /// relations (smaller than `P·D − N·Q`); otherwise `P / Q` and [`Self::frac_steps`].
-    fn reduce_steps(&self, from: &Val, to: &Val) -> Result<String, String> {
+    /// The proof of `P / Q = to` once `eu_comb` has made the operation on the
+    /// arguments' values one fraction `P / Q` of value `from`: for a node without a
+    /// normal form (`to` is `from`, written alike) the numerators agree by `ring`;
+    /// when the product `Q` of `from`'s denominators is the denominator `D` of `to`
+    /// times `R`, `P − N·R` is the combination of the relations (smaller than
+    /// `P·D − N·Q`); otherwise [`Self::frac_steps`].
+    fn reduce_steps(&self, from: &Val, to: &Val, raw: bool) -> Result<String, String> {
+        if raw {
+            return Ok("  apply eu_same.\n  ring.\n".into());
+        }
         let q = product(&from.den, self.one());
         let d = product(&to.den, self.one());
         let r = match (to.den.is_empty(), q.divides(&d)) {
             (false, Ok(Some(r))) => r,
-            _ => {
-                let t = format!(
-                    "  transitivity ({}); [field; nzs | ].\n",
-                    self.frac_text(from)
-                );
-                return Ok(t + &self.frac_steps(from, to)?);
-            }
+            _ => return self.frac_steps(from, to),
         };
-        let p = self.sym.coq(&from.num);
-        let dt = self.sym.coq(&d);
-        if r.is_one() {
-            let f = from.num.sub(&to.num);
-            return Ok(format!(
-                "  transitivity ({p} / {dt}); [field; nzs | ].\n  apply eu_same.\n  {}\n",
-                self.cofactor_proof(&f)?
-            ));
-        }
-        let rt = self.sym.coq(&r);
-        let qt: Vec<String> = from.den.iter().map(|f| self.sym.coq(f)).collect();
         let f = from.num.sub(&to.num.mul(&r));
         Ok(format!(
-            "  assert ({rt} <> 0) by (apply (eu_nzq ({}) {dt}); [nzp | ring]).\n  transitivity ({p} / ({dt} * {rt})); [field; nzs | ].\n  apply eu_fracq; [nzp | nzp | ].\n  {}\n",
-            qt.join(" * "),
+            "  apply (eu_fracr _ _ _ _ {}); [nzp | ring | ].\n  {}\n",
+            self.sym.coq(&r),
             self.cofactor_proof(&f)?
         ))
     }
@@ -155,44 +195,35 @@ impl Section {
         Ok(())
     }
 
-    /// The proof of `f = 0` from the root relations: `ring` on `f = Σ qᵢ (rᵢ² − aᵢ)`,
-    /// then each relation.
+    /// The proof of `f = 0` from the root relations: the cofactors `qᵢ` with
+    /// `f = Σ qᵢ (rᵢ² − aᵢ)` show which relations it uses, and `ring [rel_i …]`
+    /// normalises `f` with those relations as rewriting rules `rᵢ² → aᵢ` (much
+    /// cheaper than proving the cofactor identity with `ring`).
     fn cofactor_proof(&self, f: &Poly) -> Result<String, String> {
         let qs = self.sym.cofactors(f)?;
-        let terms: usize = qs.iter().map(Poly::len).sum();
-        if terms > MAX_TERMS {
-            return Err(format!(
-                "a step's cofactors have {terms} terms, too many for the Coq export"
-            ));
-        }
-        let mut terms = Vec::new();
-        let mut rewrites = Vec::new();
-        for (q, (v, rad)) in qs.iter().zip(&self.sym.roots) {
-            if q.is_zero() {
-                continue;
-            }
-            let name = &self.sym.names[*v];
-            let rel = format!("({name} ^ 2 - {})", self.sym.coq(rad));
-            terms.push(format!("{} * {rel}", self.sym.coq(q)));
-            rewrites.push(format!("(Rminus_diag_eq _ _ rel_{name})"));
-        }
-        if terms.is_empty() {
+        let rels: Vec<String> = (qs.iter().zip(&self.sym.roots))
+            .filter(|(q, _)| !q.is_zero())
+            .map(|(_, (v, _))| format!("rel_{}", self.sym.names[*v]))
+            .collect();
+        if rels.is_empty() {
             return Ok("ring.".into());
         }
-        Ok(format!(
-            "transitivity ({}); [ring | rewrite {}; ring].",
-            terms.join(" + "),
-            rewrites.join(", ")
-        ))
+        Ok(format!("ring [{}].", rels.join(" ")))
     }
 
     /// Writes `Definition t_id`, the lemma `e_id` and records the value.
     fn define(&mut self, id: usize, def: &str, target: Val, proof: &str) -> Result<(), String> {
         Self::guard(id, &target)?;
+        let text = self.text(&target);
+        // a value written as its definition (a symbol, a constant): nothing to prove
+        let proof = if def.trim_matches(['(', ')']) == text.trim_matches(['(', ')']) {
+            "  reflexivity.\n"
+        } else {
+            proof
+        };
         let _ = writeln!(
             self.body,
-            "Definition t_{id} := {def}.\nLemma e_{id} : t_{id} = {}.\nProof.\n  unfold t_{id}.\n{proof}Qed.",
-            self.text(&target)
+            "Definition t_{id} := {def}.\nLemma e_{id} : t_{id} = {text}.\nProof.\n  unfold t_{id}.\n{proof}Qed."
         );
         self.vals.insert(id, target);
         Ok(())
@@ -200,6 +231,20 @@ impl Section {
 
     /// The rewriting of the arguments by their values.
     fn rewrite_args(args: &[usize]) -> String {
+        Self::rewrite_with(args, |a| format!("e_{a}"))
+    }
+
+    /// The rewriting of the arguments by their values as fractions (`p / 1` for a
+    /// polynomial), for `eu_comb`.
+    fn rewrite_fracs(&self, args: &[usize]) -> String {
+        Self::rewrite_with(args, |a| match self.vals.get(&a) {
+            Some(v) if v.den.is_empty() => format!("(eu_f _ _ e_{a})"),
+            _ => format!("e_{a}"),
+        })
+    }
+
+    /// `rewrite` with the equation `eq(a)` of every argument `a` (each once).
+    fn rewrite_with(args: &[usize], eq: impl Fn(usize) -> String) -> String {
         let mut seen: Vec<usize> = Vec::new();
         for a in args {
             if !seen.contains(a) {
@@ -209,7 +254,7 @@ impl Section {
         if seen.is_empty() {
             return String::new();
         }
-        let list: Vec<String> = seen.iter().map(|a| format!("e_{a}")).collect();
+        let list: Vec<String> = seen.into_iter().map(eq).collect();
         format!("  rewrite {}.\n", list.join(", "))
     }
 
@@ -238,14 +283,23 @@ impl Section {
         }
     }
 
-    /// A rational operation (or a symbol or constant): `field` from the arguments'
-    /// values, then the reduction to the normal form, if the node has one.
+    /// A rational operation (or a symbol or constant): `ring` on the arguments' values
+    /// when they are polynomials, else `eu_comb` on them as fractions; then the
+    /// reduction to the normal form, if the node has one.
     fn rational(&mut self, id: usize, b: &[&str], nf: Option<&str>) -> Result<(), String> {
         let (def, args, val) = self.operation(id, b)?;
         Self::guard(id, &val)?;
+        // a node without a normal form, not a divisor: its numerator as eu_comb makes it
+        let nt = match nf.is_none() && !val.den.is_empty() && !self.divisors.contains(&id) {
+            true => self.structural(b),
+            false => None,
+        };
         let target = match nf {
             Some(t) => self.nf_val(id, t)?,
-            None => val.clone(),
+            None => Val {
+                nt: nt.clone(),
+                ..val.clone()
+            },
         };
         let arg_vals: Vec<Val> = args
             .iter()
@@ -253,15 +307,18 @@ impl Section {
             .collect::<Result<_, _>>()?;
         let mut all: Vec<&Val> = arg_vals.iter().collect();
         all.extend([&val, &target]);
-        let mut proof = Self::rewrite_args(&args) + &self.poses(&all)?;
-        // a polynomial value: the operation on the arguments is that polynomial (ring)
-        if val.den.is_empty() {
-            proof.push_str(&self.frac_steps(&val, &target)?);
-        } else if nf.is_some() {
-            proof.push_str(&self.reduce_steps(&val, &target)?);
+        // a polynomial value: the operation on the arguments is that polynomial (ring);
+        // else the arguments as fractions, combined into one by eu_comb
+        let proof = if val.den.is_empty() {
+            Self::rewrite_args(&args) + &self.poses(&all)? + &self.frac_steps(&val, &target)?
         } else {
-            proof.push_str("  field; nzs.\n");
-        }
+            let rewrite = self.rewrite_fracs(&args);
+            let finish = match nt {
+                Some(_) => "  reflexivity.\n".to_string(),
+                None => self.reduce_steps(&val, &target, nf.is_none())?,
+            };
+            rewrite + &self.poses(&all)? + "  eu_comb.\n" + &finish
+        };
         self.define(id, &def, target, &proof)
     }
 
@@ -275,6 +332,8 @@ impl Section {
                 let val = Val {
                     num: v.num.neg(),
                     den: v.den,
+                    dt: v.dt,
+                    nt: None,
                 };
                 Ok((format!("- t_{}", arg(a)?), vec![arg(a)?], val))
             }
@@ -284,6 +343,7 @@ impl Section {
                 let (x, y) = (arg(a)?, arg(c)?);
                 let def = format!("t_{x} {op} t_{y}");
                 let (va, vc) = (self.val(x)?, self.val(y)?);
+                let dt = format!("({} * {})", Self::dt(&va), Self::dt(&vc));
                 let val = match *op {
                     "+" | "-" => {
                         let l = va.num.mul(&product(&vc.den, one.clone()));
@@ -292,11 +352,15 @@ impl Section {
                         Val {
                             num,
                             den: [va.den, vc.den].concat(),
+                            dt,
+                            nt: None,
                         }
                     }
                     "*" => Val {
                         num: va.num.mul(&vc.num),
                         den: [va.den, vc.den].concat(),
+                        dt,
+                        nt: None,
                     },
                     "/" => self.divide(id, y, &va, &vc)?,
                     _ => return Err(format!("unknown operation '{op}' in node t{id}")),
@@ -317,6 +381,8 @@ impl Section {
         Ok(Val {
             num,
             den: [va.den.clone(), vec![vc.num.clone()]].concat(),
+            dt: format!("({} * {})", Self::dt(va), self.sym.coq(&vc.num)),
+            nt: None,
         })
     }
 
@@ -356,12 +422,16 @@ impl Section {
             let val = Val {
                 num: pow(&va.num)?,
                 den: rep(&va.den),
+                dt: format!("({} ^ {n})", Self::dt(&va)),
+                nt: None,
             };
             return Ok((format!("t_{a} ^ {n}"), vec![a], val));
         }
         self.nonzero_divisor(id, a, &va)?;
         let val = Val {
             num: pow(&product(&va.den, self.one()))?,
+            dt: format!("({} ^ {n})", self.sym.coq(&va.num)),
+            nt: None,
             den: rep(&[va.num]),
         };
         Ok((format!("/ (t_{a} ^ {n})"), vec![a], val))
@@ -379,9 +449,12 @@ impl Section {
         let vals: Vec<Val> = (terms.iter())
             .map(|&(_, a, b)| {
                 let (va, vb) = (self.val(a)?, self.val(b)?);
+                let dt = format!("({} * {})", Self::dt(&va), Self::dt(&vb));
                 Ok(Val {
                     num: va.num.mul(&vb.num),
                     den: [va.den, vb.den].concat(),
+                    dt,
+                    nt: None,
                 })
             })
             .collect::<Result<_, String>>()?;
@@ -400,7 +473,16 @@ impl Section {
             .collect();
         let def = format!("0 {}", def.join(" "));
         let args = terms.iter().flat_map(|&(_, a, b)| [a, b]).collect();
-        Ok((def, args, Val { num, den }))
+        // eu_comb: 0 ± F₁ is F₁'s denominator, then each further term multiplies it
+        let first = vals.first().ok_or("a dot node without terms")?.dt.clone();
+        let dt = (vals.iter().skip(1)).fold(first, |acc, v| format!("({acc} * {})", v.dt));
+        let val = Val {
+            num,
+            den,
+            dt,
+            nt: None,
+        };
+        Ok((def, args, val))
     }
 
     /// A symbol or a rational constant.
@@ -415,6 +497,7 @@ impl Section {
             } else {
                 vec![self.sym.constant(&d)]
             };
+            let dt = self.sym.coq(&self.sym.constant(&d));
             let num = self.sym.coq(&self.sym.constant(&n));
             let def = if d == 1 {
                 num
@@ -426,6 +509,8 @@ impl Section {
                 Val {
                     num: self.sym.constant(&n),
                     den,
+                    dt,
+                    nt: None,
                 },
             ));
         }
@@ -435,6 +520,8 @@ impl Section {
             Val {
                 num: v,
                 den: vec![],
+                dt: String::new(),
+                nt: None,
             },
         ))
     }
@@ -453,19 +540,16 @@ impl Section {
         let square = Val {
             num: target.num.mul(&target.num),
             den: [target.den.clone(), target.den.clone()].concat(),
+            dt: String::new(),
+            nt: None,
         };
         let mut proof = Self::rewrite_args(&[a]) + &self.poses(&[&va, &target, &square])?;
         let _ = writeln!(proof, "  apply eu_sqrt; [exact br_{id} | ].");
-        if square.den.is_empty() {
-            proof.push_str(&self.frac_steps(&square, &va)?);
-        } else {
-            let _ = writeln!(
-                proof,
-                "  transitivity ({}); [field; nzs | ].",
-                self.frac_text(&square)
-            );
-            proof.push_str(&self.frac_steps(&square, &va)?);
+        if !square.den.is_empty() {
+            // y·y for the fraction y = n/d: the fraction (n·n)/(d·d)
+            proof.push_str("  eu_comb.\n");
         }
+        proof.push_str(&self.frac_steps(&square, &va)?);
         self.define(id, &format!("sqrt t_{a}"), target, &proof)
     }
 
@@ -514,6 +598,8 @@ impl Section {
             Val {
                 num: self.sym.var(value)?,
                 den: vec![],
+                dt: String::new(),
+                nt: None,
             }
         };
         let target = self.nf_val(id, nf)?;
