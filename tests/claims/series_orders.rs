@@ -181,3 +181,24 @@ fn the_papers_sign_hypotheses_hold_for_small_h() {
         );
     }
 }
+
+#[test]
+fn existence_for_small_h_needs_an_exact_solution_at_h_zero() {
+    let cat = with_catalogue(String::new());
+    let run = |id: &str| {
+        let c = cat.claims.iter().find(|c| c.id == id).expect("claim");
+        run_claim(&cat, c, &Options::default())
+    };
+    // M̂ = M at h = 0, the Jacobian I: the implicit function theorem applies
+    let r = run("sec3.impl-map.existence");
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+    assert!(
+        r.reason.contains("implicit function theorem"),
+        "{}",
+        r.reason
+    );
+    // the set condition |λ·J₁ − 1| < 1/2 needs the sign of an O(h) term that changes on
+    // the domain: not decided, so the sampled verdict stays
+    let r = run("sec8.roots.positive.tri");
+    assert_eq!(r.verdict, Verdict::Holds, "{}", r.reason);
+}
