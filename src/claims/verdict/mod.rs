@@ -238,54 +238,75 @@ fn judge(ctx: Ctx<'_>, opts: &Options) -> Result<Evidence, Failure> {
             h0,
             steps,
             slope_tol,
-        } => {
-            let spec = asymptotic::Spec {
+        } => asymptotic_verdict(
+            ctx,
+            opts,
+            asymptotic::Spec {
                 expr,
                 var,
                 order: *order,
                 h0: *h0,
                 steps: *steps,
                 slope_tol: *slope_tol,
-            };
-            let mut ev = asymptotic::run(ctx, spec, bits)?;
-            if opts.exact {
-                let order = symbolic::Order {
-                    expr,
-                    var,
-                    order: *order,
-                };
-                symbolic::judge_order(ctx, order, &mut ev);
-            }
-            Ok(ev)
-        }
+            },
+        ),
         Body::Existence {
             unknowns,
             equations,
             start,
             in_set,
             tries,
-        } => {
-            let spec = existence::Spec {
+        } => existence_verdict(
+            ctx,
+            opts,
+            existence::Spec {
                 unknowns,
                 equations,
                 start,
                 in_set: in_set.as_ref(),
                 tries: *tries,
-            };
-            let mut ev = existence::run(ctx, spec, bits)?;
-            if opts.exact {
-                let sys = symbolic::System {
-                    unknowns,
-                    equations,
-                    start,
-                    in_set: in_set.as_ref(),
-                };
-                symbolic::judge_existence(ctx, sys, &mut ev);
-            }
-            Ok(ev)
-        }
+            },
+        ),
         Body::Negation(inner) => Ok(negation::judge(&run_claim(ctx.cat, inner, opts))),
     }
+}
+
+/// An asymptotic claim: the slopes, then the power series ([`symbolic::judge_order`]).
+fn asymptotic_verdict(
+    ctx: Ctx<'_>,
+    opts: &Options,
+    spec: asymptotic::Spec<'_>,
+) -> Result<Evidence, Failure> {
+    let mut ev = asymptotic::run(ctx, spec, &opts.bits)?;
+    if opts.exact {
+        let order = symbolic::Order {
+            expr: spec.expr,
+            var: spec.var,
+            order: spec.order,
+        };
+        symbolic::judge_order(ctx, order, &mut ev);
+    }
+    Ok(ev)
+}
+
+/// An existence claim: Newton's method at the samples, then the implicit function
+/// theorem for small h ([`symbolic::judge_existence`]).
+fn existence_verdict(
+    ctx: Ctx<'_>,
+    opts: &Options,
+    spec: existence::Spec<'_>,
+) -> Result<Evidence, Failure> {
+    let mut ev = existence::run(ctx, spec, &opts.bits)?;
+    if opts.exact {
+        let sys = symbolic::System {
+            unknowns: spec.unknowns,
+            equations: spec.equations,
+            start: spec.start,
+            in_set: spec.in_set,
+        };
+        symbolic::judge_existence(ctx, sys, &mut ev);
+    }
+    Ok(ev)
 }
 
 /// Labels → claim ids with verdicts, for `--coverage`.

@@ -76,6 +76,38 @@ pub(super) fn role_of(p: &PExpr) -> (Role, usize) {
     }
 }
 
+/// The sampled variables of a proof's domain: each with its definition, its role (and
+/// for a case variable the number of its values), and the domain's parametrization for
+/// proving signs.
+pub(super) struct Domain<'c> {
+    /// Name and definition, in the sampler's order.
+    pub(super) vars: Vec<(String, &'c PExpr)>,
+    /// Name, role and the number of values of a case variable.
+    pub(super) plain: Vec<(String, (Role, usize))>,
+    /// Name, role and definition.
+    pub(super) roles: Vec<(String, Role, &'c PExpr)>,
+    /// The domain's parametrization by positive parameters, where there is one.
+    pub(super) positivity: Option<std::sync::Arc<crate::algebra::positivity::Parametrization>>,
+}
+
+/// The claim's proof domain ([`Domain`]); `Err` when it cannot be sampled.
+pub(super) fn domain<'c>(ctx: Ctx<'c>) -> Result<Domain<'c>, String> {
+    let sampler = ctx.sampler(Stream::Proof).map_err(|c| c.to_string())?;
+    let vars: Vec<(String, &'c PExpr)> = sampler.variables().to_vec();
+    let plain: Vec<(String, (Role, usize))> =
+        vars.iter().map(|(n, p)| (n.clone(), role_of(p))).collect();
+    let roles = (vars.iter().zip(&plain))
+        .map(|((n, p), (_, (r, _)))| (n.clone(), r.clone(), *p))
+        .collect();
+    let positivity = crate::claims::verdict::positivity::parametrization(&vars);
+    Ok(Domain {
+        vars,
+        plain,
+        roles,
+        positivity,
+    })
+}
+
 /// The points of each case, keyed by the case values.
 pub(super) type Cases = BTreeMap<Vec<String>, Vec<Point>>;
 

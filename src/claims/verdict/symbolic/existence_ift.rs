@@ -9,7 +9,7 @@
 //! every comparison is decided by a leading coefficient of proved sign, so it holds for
 //! every small enough `h`.  Otherwise the claim keeps its sampled verdict.
 
-use super::cases::{Role, case_points, role_of};
+use super::cases::{Role, case_points};
 use super::series::{scope, symbols};
 use super::{ProofInfo, ProofMethod, merge};
 use crate::algebra::series::{Series, with_precision};
@@ -19,7 +19,7 @@ use crate::claims::ast::{BinOp, Expr, ExprKind};
 use crate::claims::catalogue::PExpr;
 use crate::claims::eval::Evaluator;
 use crate::claims::kind::Verdict;
-use crate::claims::sampler::{Point, Stream};
+use crate::claims::sampler::Point;
 use crate::claims::value::Value;
 use crate::claims::verdict::context::Ctx;
 use crate::claims::verdict::result::Evidence;
@@ -68,37 +68,30 @@ pub fn judge_existence(ctx: Ctx<'_>, sys: System<'_>, ev: &mut Evidence) {
 /// The proof attempt over every case of the claim's domain.
 pub fn prove_existence(ctx: Ctx<'_>, sys: System<'_>) -> ProofInfo {
     let t0 = Instant::now();
-    let Ok(sampler) = ctx.sampler(Stream::Proof) else {
-        return ProofInfo::none("the domain cannot be sampled");
+    let dom = match super::cases::domain(ctx) {
+        Ok(d) => d,
+        Err(m) => return ProofInfo::none(m),
     };
-    let plain: Vec<(String, (Role, usize))> = (sampler.variables().iter())
-        .map(|(n, p)| (n.clone(), role_of(p)))
-        .collect();
-    if !plain.iter().any(|(n, (r, _))| n == "h" && *r == Role::Free) {
+    if !(dom.plain.iter()).any(|(n, (r, _))| n == "h" && *r == Role::Free) {
         return ProofInfo::none("no free variable h to take to 0");
     }
-    let roles: Vec<(String, Role, &PExpr)> = (sampler.variables().iter())
-        .zip(&plain)
-        .map(|((n, p), (_, (r, _)))| (n.clone(), r.clone(), *p))
-        .collect();
-    let cases = match case_points(ctx, &plain) {
+    let cases = match case_points(ctx, &dom.plain) {
         Ok(c) if !c.is_empty() => c,
         Ok(_) => return ProofInfo::none("no case of the domain has enough points"),
         Err(m) => return ProofInfo::none(m),
     };
-    let positivity = crate::claims::verdict::positivity::parametrization(sampler.variables());
     let mut info = ProofInfo::none("");
     info.reason = None;
     info.method = ProofMethod::Series;
     for (key, points) in &cases {
         let opts = RingOptions {
             points: points.len(),
-            positivity: positivity.clone(),
+            positivity: dom.positivity.clone(),
             ..RingOptions::default()
         };
         let p: Proof = prove_components(opts, &ctx.claim.id, |ring| {
             with_precision(PRECISION, || {
-                in_set_for_small_h(ctx, ring, (&roles, points), sys)
+                in_set_for_small_h(ctx, ring, (&dom.roles, points), sys)
             })
         });
         let stop = !p.is_proved();

@@ -58,10 +58,10 @@ use super::result::Evidence;
 use crate::algebra::{Outcome, Proof};
 use crate::claims::catalogue::PExpr;
 use crate::claims::kind::Verdict;
-use crate::claims::sampler::{Point, Stream};
+use crate::claims::sampler::Point;
 use crate::claims::value::Value;
 use case::{Signs, prove_case};
-use cases::{Cases, Role, case_points, role_of};
+use cases::{Cases, Role, case_points};
 pub use existence_ift::{System, judge_existence, prove_existence};
 use scope::{evaluates_pi, iteration, not_analytic, states_condition};
 pub use series::{Order, judge_order, prove_order};
@@ -71,42 +71,32 @@ use std::time::Instant;
 pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> ProofInfo {
     let t0 = Instant::now();
     let condition = states_condition(ctx, &[lhs, rhs]);
-    let sampler = match ctx.sampler(Stream::Proof) {
-        Ok(s) => s,
-        Err(c) => return ProofInfo::none(c.to_string()),
+    let dom = match cases::domain(ctx) {
+        Ok(d) => d,
+        Err(m) => return ProofInfo::none(m),
     };
-    if let Some(why) = not_analytic(ctx, sampler.variables(), &[lhs, rhs]) {
+    if let Some(why) = not_analytic(ctx, &dom.vars, &[lhs, rhs]) {
         return ProofInfo::none(why);
     }
     if let Some(why) = iteration(ctx, &[lhs, rhs]).or_else(|| evaluates_pi(ctx, &[lhs, rhs])) {
         return ProofInfo::none(why);
     }
     let signs = Signs {
-        positivity: super::positivity::parametrization(sampler.variables()),
+        positivity: dom.positivity.clone(),
     };
     if let (Some(why), None) = (&condition, &signs.positivity) {
         return ProofInfo::none(format!(
             "{why} (no variable of its domain can be parametrized to prove signs)"
         ));
     }
-    let plain: Vec<(String, (Role, usize))> = sampler
-        .variables()
-        .iter()
-        .map(|(n, p)| (n.clone(), role_of(p)))
-        .collect();
-    let roles: Vec<(String, Role, &PExpr)> = sampler
-        .variables()
-        .iter()
-        .zip(&plain)
-        .map(|((n, p), (_, (r, _)))| (n.clone(), r.clone(), *p))
-        .collect();
-    let cases = match case_points(ctx, &plain) {
+    let (plain, roles) = (&dom.plain, &dom.roles);
+    let cases = match case_points(ctx, plain) {
         Ok(c) if !c.is_empty() => c,
         Ok(_) => return ProofInfo::none("no case of the domain has enough points"),
         Err(m) => return ProofInfo::none(m),
     };
     if let Some(mut joint) =
-        prove_signs_jointly(ctx, &roles, &cases, (lhs, rhs), (certificate, &signs))
+        prove_signs_jointly(ctx, roles, &cases, (lhs, rhs), (certificate, &signs))
     {
         small_h(ctx, &mut joint);
         joint.ms = t0.elapsed().as_secs_f64() * 1e3;
@@ -118,7 +108,7 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
     let mut hints = Vec::new();
     let input = split::CaseInput {
         ctx,
-        roles: &roles,
+        roles,
         sides: (lhs, rhs),
         certificate,
         signs: &signs,

@@ -13,7 +13,7 @@
 
 use super::binding::bind_one;
 use super::case::Signs;
-use super::cases::{Role, case_points, role_of};
+use super::cases::{Role, case_points};
 use super::{ProofInfo, ProofMethod, merge};
 use crate::algebra::series::{Series, with_precision};
 use crate::algebra::{AlgResult, AlgebraError, Proof, Ring, RingOptions, Sym, prove_components};
@@ -22,7 +22,7 @@ use crate::claims::catalogue::PExpr;
 use crate::claims::catalogue::claim::HypothesisKind;
 use crate::claims::eval::Evaluator;
 use crate::claims::kind::Verdict;
-use crate::claims::sampler::{Point, Stream};
+use crate::claims::sampler::Point;
 use crate::claims::value::Value;
 use crate::claims::verdict::context::{Ctx, eval};
 use crate::claims::verdict::result::Evidence;
@@ -51,24 +51,18 @@ pub struct Order<'a> {
 /// of it).
 pub fn prove_order(ctx: Ctx<'_>, claim: Order<'_>) -> ProofInfo {
     let t0 = Instant::now();
-    let sampler = match ctx.sampler(Stream::Proof) {
-        Ok(s) => s,
-        Err(c) => return ProofInfo::none(c.to_string()),
+    let dom = match super::cases::domain(ctx) {
+        Ok(d) => d,
+        Err(m) => return ProofInfo::none(m),
     };
-    if let Some(why) = super::scope::not_analytic(ctx, sampler.variables(), &[claim.expr]) {
+    if let Some(why) = super::scope::not_analytic(ctx, &dom.vars, &[claim.expr]) {
         return ProofInfo::none(why);
     }
     let signs = Signs {
-        positivity: crate::claims::verdict::positivity::parametrization(sampler.variables()),
+        positivity: dom.positivity.clone(),
     };
-    let plain: Vec<(String, (Role, usize))> = (sampler.variables().iter())
-        .map(|(n, p)| (n.clone(), role_of(p)))
-        .collect();
-    let roles: Vec<(String, Role, &PExpr)> = (sampler.variables().iter())
-        .zip(&plain)
-        .map(|((n, p), (_, (r, _)))| (n.clone(), r.clone(), *p))
-        .collect();
-    let cases = match case_points(ctx, &plain) {
+    let (plain, roles) = (&dom.plain, &dom.roles);
+    let cases = match case_points(ctx, plain) {
         Ok(c) if !c.is_empty() => c,
         Ok(_) => return ProofInfo::none("no case of the domain has enough points"),
         Err(m) => return ProofInfo::none(m),
@@ -77,7 +71,7 @@ pub fn prove_order(ctx: Ctx<'_>, claim: Order<'_>) -> ProofInfo {
     info.reason = None;
     info.method = ProofMethod::Series;
     for (key, points) in &cases {
-        let p = prove_case(ctx, &roles, points, claim, &signs);
+        let p = prove_case(ctx, roles, points, claim, &signs);
         let stop = !p.is_proved();
         merge(ctx, &mut info, key, p);
         if stop {
@@ -307,32 +301,25 @@ pub(super) fn small_h_signs(ctx: Ctx<'_>) -> Vec<String> {
             HypothesisKind::Branch(_) => None,
         })
         .collect();
-    let Ok(sampler) = ctx.sampler(Stream::Proof) else {
+    let Ok(dom) = super::cases::domain(ctx) else {
         return Vec::new();
     };
-    let plain: Vec<(String, (Role, usize))> = (sampler.variables().iter())
-        .map(|(n, p)| (n.clone(), role_of(p)))
-        .collect();
-    if signs.is_empty() || !plain.iter().any(|(n, (r, _))| n == "h" && *r == Role::Free) {
+    let free_h = (dom.plain.iter()).any(|(n, (r, _))| n == "h" && *r == Role::Free);
+    if signs.is_empty() || !free_h {
         return Vec::new();
     }
-    let roles: Vec<(String, Role, &PExpr)> = (sampler.variables().iter())
-        .zip(&plain)
-        .map(|((n, p), (_, (r, _)))| (n.clone(), r.clone(), *p))
-        .collect();
-    let Ok(cases) = case_points(ctx, &plain) else {
+    let Ok(cases) = case_points(ctx, &dom.plain) else {
         return Vec::new();
     };
-    let positivity = crate::claims::verdict::positivity::parametrization(sampler.variables());
     let mut holds = vec![!cases.is_empty(); signs.len()];
     for points in cases.values() {
         let ring = Ring::new(RingOptions {
             points: points.len(),
-            positivity: positivity.clone(),
+            positivity: dom.positivity.clone(),
             ..RingOptions::default()
         });
         with_precision(4, || {
-            let ev = bind(ctx, &ring, &roles, points, ("h", Series::var(&ring))).ok();
+            let ev = bind(ctx, &ring, &dom.roles, points, ("h", Series::var(&ring))).ok();
             for (ok, (_, condition, sign)) in holds.iter_mut().zip(&signs) {
                 *ok &= ev
                     .as_ref()
