@@ -169,6 +169,13 @@ impl Series {
         }
     }
 
+    /// `O(h^v)` for this value's valuation `v`: what is known of `|self|` when the sign
+    /// of its leading coefficient is not decided.
+    pub(crate) fn bound(&self) -> Series {
+        let v = self.lo;
+        Series::from_coefficients(&self.ring, v, Vec::new(), v)
+    }
+
     /// `self ± o`.
     pub fn try_add(&self, o: &Series, sub: bool) -> AlgResult<Series> {
         let lo = self.lo.min(o.lo);

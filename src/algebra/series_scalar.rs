@@ -140,6 +140,11 @@ impl Scalar for Series {
     fn is_finite(&self) -> bool {
         !self.ring().is_poisoned()
     }
+    /// `abs(x)` of the expression language: [`Real::abs`] (so `O(h^v)` where the sign
+    /// of the leading coefficient is not decided).
+    fn stated_abs(&self) -> Result<Self, String> {
+        Ok(Real::abs(self))
+    }
     fn to_decimal(&self, _digits: usize) -> String {
         self.render_short(60)
     }
@@ -183,10 +188,14 @@ impl Real for Series {
         }
         self.clone() * self.lift(self.ring().rational(&q))
     }
+    /// `|x|`: `±x` where the leading coefficient's sign is proved; otherwise only
+    /// `|x| = O(h^v)` for `x` of valuation `v` is known, and that is the value (no
+    /// coefficient of it is known).
     fn abs(&self) -> Self {
         match self.sign() {
             Ok(s) if s < 0 => -self.clone(),
             Ok(_) => self.clone(),
+            Err(AlgebraError::CannotDecide(_)) => self.bound(),
             Err(e) => self.poisoned(e),
         }
     }
