@@ -9,12 +9,12 @@
 //! every comparison is decided by a leading coefficient of proved sign, so it holds for
 //! every small enough `h`.  Otherwise the claim keeps its sampled verdict.
 
-use super::cases::{Role, case_points};
-use super::series::{scope, symbols};
-use super::{ProofInfo, ProofMethod, merge};
+use super::ProofInfo;
+use super::cases::Role;
+use super::series::{each_case, scope, symbols};
 use crate::algebra::series::{Series, with_precision};
 use crate::algebra::series_solve::solve;
-use crate::algebra::{AlgResult, AlgebraError, Proof, Ring, RingOptions, prove_components};
+use crate::algebra::{AlgResult, AlgebraError, Ring, RingOptions, prove_components};
 use crate::claims::ast::{BinOp, Expr, ExprKind};
 use crate::claims::catalogue::PExpr;
 use crate::claims::eval::Evaluator;
@@ -75,31 +75,18 @@ pub fn prove_existence(ctx: Ctx<'_>, sys: System<'_>) -> ProofInfo {
     if !(dom.plain.iter()).any(|(n, (r, _))| n == "h" && *r == Role::Free) {
         return ProofInfo::none("no free variable h to take to 0");
     }
-    let cases = match case_points(ctx, &dom.plain) {
-        Ok(c) if !c.is_empty() => c,
-        Ok(_) => return ProofInfo::none("no case of the domain has enough points"),
-        Err(m) => return ProofInfo::none(m),
-    };
-    let mut info = ProofInfo::none("");
-    info.reason = None;
-    info.method = ProofMethod::Series;
-    for (key, points) in &cases {
+    let mut info = each_case(ctx, &dom.plain, |points| {
         let opts = RingOptions {
             points: points.len(),
             positivity: dom.positivity.clone(),
             ..RingOptions::default()
         };
-        let p: Proof = prove_components(opts, &ctx.claim.id, |ring| {
+        prove_components(opts, &ctx.claim.id, |ring| {
             with_precision(PRECISION, || {
                 in_set_for_small_h(ctx, ring, (&dom.roles, points), sys)
             })
-        });
-        let stop = !p.is_proved();
-        merge(ctx, &mut info, key, p);
-        if stop {
-            break;
-        }
-    }
+        })
+    });
     info.ms = t0.elapsed().as_secs_f64() * 1e3;
     info
 }

@@ -62,6 +62,26 @@ pub fn prove_order(ctx: Ctx<'_>, claim: Order<'_>) -> ProofInfo {
         positivity: dom.positivity.clone(),
     };
     let (plain, roles) = (&dom.plain, &dom.roles);
+    let mut info = each_case(ctx, plain, |points| {
+        prove_case(ctx, roles, points, claim, &signs)
+    });
+    if info.is_proved() {
+        info.notes.push(format!(
+            "the coefficients of {}^e for e < {} of the power series are 0",
+            claim.var, claim.order
+        ));
+    }
+    info.ms = t0.elapsed().as_secs_f64() * 1e3;
+    info
+}
+
+/// A series proof over every case of the domain (each case's points drawn by
+/// [`case_points`]), stopping at the first case not proved; method `series`.
+pub(super) fn each_case(
+    ctx: Ctx<'_>,
+    plain: &[(String, (Role, usize))],
+    mut prove: impl FnMut(&[Point]) -> Proof,
+) -> ProofInfo {
     let cases = match case_points(ctx, plain) {
         Ok(c) if !c.is_empty() => c,
         Ok(_) => return ProofInfo::none("no case of the domain has enough points"),
@@ -71,20 +91,13 @@ pub fn prove_order(ctx: Ctx<'_>, claim: Order<'_>) -> ProofInfo {
     info.reason = None;
     info.method = ProofMethod::Series;
     for (key, points) in &cases {
-        let p = prove_case(ctx, roles, points, claim, &signs);
+        let p = prove(points);
         let stop = !p.is_proved();
         merge(ctx, &mut info, key, p);
         if stop {
             break;
         }
     }
-    if info.is_proved() {
-        info.notes.push(format!(
-            "the coefficients of {}^e for e < {} of the power series are 0",
-            claim.var, claim.order
-        ));
-    }
-    info.ms = t0.elapsed().as_secs_f64() * 1e3;
     info
 }
 
