@@ -9,14 +9,20 @@
 //!   lies in a box of relative half-width 10⁻⁹ around the solver's `v`, and it lies in the
 //!   returned enclosure.  That solution is the solver's (the one it converged to lies in
 //!   the box): the branch the function selects.
+//! * The steps of (impl spec) with γ₀, γ₁, γ₂ (`step_gamma0`, …): the solver's `M̂` is
+//!   certified in the same way on the map's own equations ([`residual`]).
+//! * The elliptic coordinates (`ell_coords`, `ell_inverse`) and the parameters `k`, `ν`:
+//!   evaluated as written; the elliptic functions they call are Arb's enclosures (see
+//!   [`Ball`]), and every comparison they make is decided or recorded.
 //! * Every other function is refused: its numerical algorithms (iterations stopped at a
-//!   tolerance, the elliptic functions) do not enclose.
+//!   tolerance) do not enclose.
 
 use super::euler_top::{ModelFn, err, inertia, v3};
 use crate::claims::registry::{GenericFunction, NO_BALLS};
 use crate::claims::value::Value;
 use crate::linalg::krawczyk::{BallSystem, krawczyk};
 use crate::linalg::{Mat3, Vec3};
+use crate::model::discretization::{Gamma, residual, step};
 use crate::model::veselov_moser::{
     cayley, hat, j_diag, omega_residual_diag, vm_conjugate, vm_step,
 };
@@ -74,12 +80,86 @@ fn vm_cayley(a: &[Value<Ball>]) -> Result<Vec3<Ball>, String> {
     Ok(Vec3([x, y, z]))
 }
 
+/// (impl spec 1–3) in `M̂` for given `M`, `h` and inertia, as balls.
+struct StepSystem {
+    inertia: crate::model::Inertia<Ball>,
+    gamma: Gamma,
+    m: Vec3<Ball>,
+    h: Ball,
+}
+
+impl StepSystem {
+    fn at<R: Real>(&self, x: &[R], lift: impl Fn(&Ball) -> R) -> Result<Vec3<R>, String> {
+        let i = crate::model::Inertia::new(
+            lift(&self.inertia.a),
+            lift(&self.inertia.b),
+            lift(&self.inertia.c),
+        )
+        .map_err(err)?;
+        let m = Vec3(self.m.0.clone().map(|c| lift(&c)));
+        let mh = Vec3(std::array::from_fn(|k| x[k].clone()));
+        residual(&i, self.gamma, &m, &mh, &lift(&self.h)).map_err(err)
+    }
+}
+
+impl BallSystem for StepSystem {
+    fn residual(&mut self, x: &[Ball]) -> Result<Vec<Ball>, String> {
+        Ok(self.at(x, Ball::clone)?.0.to_vec())
+    }
+    fn jacobian(&mut self, x: &[Ball]) -> Result<Vec<Vec<Ball>>, String> {
+        let mut jac = vec![vec![x[0].zero(); 3]; 3];
+        for col in 0..3 {
+            let xd: Vec<Dual<Ball>> = (0..3)
+                .map(|k| {
+                    let d = if k == col { x[k].one() } else { x[k].zero() };
+                    Dual::new(x[k].clone(), d)
+                })
+                .collect();
+            let r = self.at(&xd, |b| Dual::constant(b.clone()))?;
+            for (row, j) in jac.iter_mut().enumerate() {
+                j[col] = r.0[row].d.clone();
+            }
+        }
+        Ok(jac)
+    }
+}
+
+/// The certified step `M̂` of (impl spec) with `gamma` at `(M, h, A, B, C)`: the solver's
+/// `M̂` (in `f64`, at the midpoints) certified by the Krawczyk test on [`residual`].
+fn certified_step(gamma: Gamma, a: &[Value<Ball>]) -> Result<Vec3<Ball>, String> {
+    let mid: Vec<Value<f64>> = a
+        .iter()
+        .map(|v| v.map(&mut |b: &Ball| b.mid_f64()))
+        .collect();
+    let solved = step(&inertia(&mid, 2)?, gamma, &v3(&mid[0])?, &mid[1].as_real()?).map_err(err)?;
+    let h = a[1].as_real()?;
+    let mut sys = StepSystem {
+        inertia: inertia(a, 2)?,
+        gamma,
+        m: v3(&a[0])?,
+        h: h.clone(),
+    };
+    let center = solved.0.to_vec();
+    let radius: Vec<f64> = center.iter().map(|x| 1e-9 * x.abs().max(1e-3)).collect();
+    let cert = krawczyk(&mut sys, &center, &radius, Real::prec(&h))
+        .map_err(|e| format!("(impl spec) is not certified in balls: {e}"))?;
+    let [x, y, z]: [Ball; 3] = cert
+        .enclosure
+        .try_into()
+        .map_err(|_| "a step of three components".to_string())?;
+    Ok(Vec3([x, y, z]))
+}
+
 /// A model function in ball arithmetic (see the module), or why it has no enclosure.
 pub(super) fn call(f: ModelFn, a: &[Value<Ball>]) -> Result<Value<Ball>, String> {
     if f.spec().algebraic {
         return f.call_algebraic(a);
     }
     match f {
+        ModelFn::EllCoords | ModelFn::EllInverse | ModelFn::Kmod | ModelFn::Nu => f.call(a),
+        ModelFn::StepGamma0 => Ok(Value::Vec3(certified_step(Gamma::G0, a)?)),
+        ModelFn::StepGamma1 => Ok(Value::Vec3(certified_step(Gamma::G1, a)?)),
+        ModelFn::StepGamma2 => Ok(Value::Vec3(certified_step(Gamma::G2, a)?)),
         ModelFn::VmOmega => Ok(Value::Mat3(cayley(&vm_cayley(a)?))),
         ModelFn::StepVm => {
             let w = cayley(&vm_cayley(a)?);

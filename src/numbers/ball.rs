@@ -11,8 +11,10 @@
 //!   where the answer would differ is **undecided**: it answers `false` (or a wide ball)
 //!   and is recorded, per thread ([`Decisions`]).  An evaluation with an undecided
 //!   comparison proves nothing;
-//! * the elliptic functions are refused ([`Real::BY_RULE`]: no numerical iteration, whose
-//!   truncation error the balls would not see, ever runs on balls).
+//! * no numerical iteration of [`crate::special`], whose truncation error the balls would
+//!   not see, ever runs on balls ([`Real::BY_RULE`]): K, F, sn, cn, dn and their inverse
+//!   are Arb's own enclosures (module `ball_elliptic`), every other elliptic function is
+//!   refused.
 //!
 //! ```
 //! use eulertop::numbers::{Ball, Decisions, Real, Scalar};
@@ -168,6 +170,19 @@ impl Ball {
         let mut r = Ball::new_zero(prec);
         // SAFETY: every ball is initialised; Arb allows aliasing.
         unsafe { f(&mut r.b, &self.b, &o.b, slong(prec)) };
+        r
+    }
+
+    /// The Arb ball itself, for the Arb functions of this module's siblings.
+    pub(super) fn arb(&self) -> &arb_struct {
+        &self.b
+    }
+
+    /// A copy of an Arb ball, with working precision `prec`.
+    pub(super) fn from_arb(x: &arb_struct, prec: u32) -> Ball {
+        let mut r = Ball::new_zero(prec);
+        // SAFETY: both balls are initialised.
+        unsafe { arb_set(&mut r.b, x) };
         r
     }
 
@@ -394,9 +409,22 @@ macro_rules! unary {
 
 impl Real for Ball {
     const FIXED: bool = false;
-    // no numerical iteration (elliptic functions) may run on balls
+    // no numerical iteration may run on balls: the elliptic functions are Arb's
+    // enclosures (module `ball_elliptic`)
     const BY_RULE: bool = true;
     const ENCLOSES: bool = true;
+    fn sncndn_by_rule(u: &Self, k: &Self) -> Result<(Self, Self, Self), String> {
+        super::ball_elliptic::sncndn(u, k)
+    }
+    fn quarter_period_by_rule(k: &Self, complementary: bool) -> Result<Self, String> {
+        super::ball_elliptic::ellipk(k, complementary)
+    }
+    fn ellipf_by_rule(phi: &Self, k: &Self) -> Result<Self, String> {
+        super::ball_elliptic::ellipf(phi, k)
+    }
+    fn jacobi_inverse_by_rule(sn: &Self, cn: &Self, dn: &Self, k: &Self) -> Result<Self, String> {
+        super::ball_elliptic::jacobi_inverse(sn, cn, dn, k)
+    }
     fn as_ball(&self) -> Option<&Ball> {
         Some(self)
     }

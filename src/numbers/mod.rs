@@ -24,6 +24,7 @@
 //! ```
 
 mod ball;
+mod ball_elliptic;
 mod complex;
 mod dual;
 mod float64;

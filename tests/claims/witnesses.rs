@@ -102,3 +102,49 @@ fn a_true_claim_outside_the_provers_field_has_no_witness_in_balls() {
         assert!(r.proof.witness.is_none(), "{id}");
     }
 }
+
+/// A negation of "`expr` does not depend on `v`" over `u`, `v`, `k`.
+fn not_independent(id: &str, expr: &str) -> String {
+    format!(
+        r#"
+[[claim]]
+id = "{id}"
+environment = "Section 2"
+role = "statement"
+labels = []
+location = "control: {expr} depends on v"
+printed = 'x'
+kind = "negation"
+expect = "holds"
+vars = [["u", "uniform(-1, 1)"], ["v", "uniform(0.2, 1.5)"], ["k", "uniform(0.1, 0.9)"]]
+[claim.inner]
+kind = "independence"
+expr = "{expr}"
+wrt = "v"
+"#
+    )
+}
+
+#[test]
+fn a_dependence_through_the_elliptic_functions_is_proved_by_two_points_in_balls() {
+    // sn(u + e^v) changes with v: exp is outside the prover's field, and the balls of sn
+    // at two sampled v (Jacobi's theta functions in Arb) are disjoint
+    let cat = controls_only(not_independent("dep", "sn(u + exp(v), k) * dn(u, k)"));
+    let r = run(&cat, "dep");
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+    assert_eq!(r.proof.method, ProofMethod::Witness, "{}", r.reason);
+    let w = r.proof.witness.as_deref().unwrap_or_default();
+    assert!(
+        w.contains("the same point with v =") && w.contains("excludes 0"),
+        "{w}"
+    );
+}
+
+#[test]
+fn an_expression_constant_in_the_variable_gets_no_witness() {
+    // sn² + cn² = 1 for every v: the negation is refuted, whatever the balls give
+    let cat = controls_only(not_independent("const", "sn(u * v, k)^2 + cn(u * v, k)^2"));
+    let r = run(&cat, "const");
+    assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
+    assert!(r.proof.witness.is_none(), "{:?}", r.proof.witness);
+}

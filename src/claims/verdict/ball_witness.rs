@@ -54,9 +54,19 @@ fn show_point(p: &Point) -> String {
 
 /// lhs − rhs in balls at `p`: a witness, undecided, or why it cannot be evaluated.
 fn at_point(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, p: &Point) -> Result<AtPoint, String> {
+    at_points(ctx, (lhs, p), (rhs, p))
+}
+
+/// lhs at `p` − rhs at `q` in balls: a witness, undecided, or why it cannot be
+/// evaluated (the witness names `p`; see [`refine_independence`] for two points).
+fn at_points(
+    ctx: Ctx<'_>,
+    (lhs, p): (&PExpr, &Point),
+    (rhs, q): (&PExpr, &Point),
+) -> Result<AtPoint, String> {
     let span = Decisions::start();
-    let ev = ctx.setup(p, Ball::exact(0.0, BITS))?;
-    let (l, r) = (eval(&ev, lhs)?, eval(&ev, rhs)?);
+    let l = eval(&ctx.setup(p, Ball::exact(0.0, BITS))?, lhs)?;
+    let r = eval(&ctx.setup(q, Ball::exact(0.0, BITS))?, rhs)?;
     let d = l.sub(&r)?;
     if !span.all_decided() {
         return Ok(AtPoint::Undecided);
@@ -69,9 +79,16 @@ fn at_point(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, p: &Point) -> Result<AtPoint
         1 => String::new(),
         _ => format!(" (component {})", i + 1),
     };
+    let at = match std::ptr::eq(p, q) {
+        true => format!("at the sampled point {}: lhs − rhs{which}", show_point(p)),
+        false => format!(
+            "between the sampled point {} and the same point with {}: the difference{which}",
+            show_point(q),
+            show_point(&changed(p, q))
+        ),
+    };
     let witness = format!(
-        "at the sampled point {}: lhs − rhs{which} ∈ {} (Arb ball arithmetic, every comparison decided), which excludes 0",
-        show_point(p),
+        "{at} ∈ {} (Arb ball arithmetic, every comparison decided), which excludes 0",
         b.show(15)
     );
     let counterexample = Counterexample {
@@ -82,6 +99,14 @@ fn at_point(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, p: &Point) -> Result<AtPoint
         log2_residual: Some(d.log2_magnitude()),
     };
     Ok(AtPoint::Witness(witness, counterexample))
+}
+
+/// The variables of `p` whose values differ from those of `q`.
+fn changed(p: &Point, q: &Point) -> Point {
+    let mut out = p.clone();
+    out.vars
+        .retain(|(n, v)| q.get(n).is_none_or(|w| w.components() != v.components()));
+    out
 }
 
 /// A witness from the claim's sample stream, or why there is none: the first `skip`
@@ -151,6 +176,64 @@ pub fn refine(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, ev: &mut Evidence) {
         Verdict::Refuted => format!("{}; certified: lhs − rhs ≠ 0 {w}", ev.reason),
         _ => format!("certified: lhs − rhs ≠ 0 {w} (numerically: {})", ev.reason),
     };
+    ev.verdict = Verdict::Refuted;
+    ev.proof = Some(info);
+    if ev.counterexample.is_none() {
+        ev.counterexample = Some(counterexample);
+    }
+}
+
+/// Refutes an independence claim that is refuted or inconclusive at its samples, or
+/// tries one that holds, by a witness in ball arithmetic: a base point of the claim's
+/// sample stream and one of its redraws of `wrt` (the other variables equal) at which
+/// the balls of `expr` are disjoint, so that `expr` changes with `wrt`.  The same
+/// conditions as [`refine`]; `(wrt, redraws)` as the claim states them.
+pub fn refine_independence(
+    ctx: Ctx<'_>,
+    expr: &PExpr,
+    (wrt, redraws): (&str, usize),
+    ev: &mut Evidence,
+) {
+    let method = ev.proof.as_ref().map_or(ProofMethod::None, |p| p.method);
+    let open = matches!(
+        ev.verdict,
+        Verdict::Refuted | Verdict::Inconclusive | Verdict::Holds
+    );
+    if method != ProofMethod::None || !open || !ctx.claim.hypotheses.is_empty() {
+        return;
+    }
+    let n = ctx.claim.samples.max(1);
+    let count = match ev.verdict {
+        Verdict::Holds => n,
+        _ => 4 * n,
+    };
+    let found = (|| -> Result<Option<(String, Counterexample)>, String> {
+        let mut sampler = ctx.sampler(Stream::Samples).map_err(|c| c.to_string())?;
+        let mut alts = ctx.sampler(Stream::Redraws).map_err(|c| c.to_string())?;
+        for _ in 0..count {
+            let Ok((base, others)) =
+                super::independence::draw(&mut sampler, &mut alts, wrt, redraws)
+            else {
+                break;
+            };
+            for alt in &others {
+                if let AtPoint::Witness(w, c) = at_points(ctx, (expr, alt), (expr, &base))? {
+                    return Ok(Some((w, c)));
+                }
+            }
+        }
+        Ok(None)
+    })();
+    let Ok(Some((w, counterexample))) = found else {
+        return;
+    };
+    let mut info = ev.proof.take().unwrap_or_else(|| ProofInfo::none(""));
+    info.method = ProofMethod::Witness;
+    info.witness = Some(w.clone());
+    ev.reason = format!(
+        "certified: expr depends on {wrt}: {w} (numerically: {})",
+        ev.reason
+    );
     ev.verdict = Verdict::Refuted;
     ev.proof = Some(info);
     if ev.counterexample.is_none() {

@@ -45,7 +45,7 @@ impl AtRung for At<'_> {
 
 /// A base point and `redraws` points that differ from it only in `wrt`, all inside the
 /// domain.
-fn draw(
+pub(super) fn draw(
     sampler: &mut Sampler<'_>,
     alt_sampler: &mut Sampler<'_>,
     wrt: &str,

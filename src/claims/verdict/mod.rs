@@ -228,6 +228,7 @@ fn judge(ctx: Ctx<'_>, opts: &Options) -> Result<Evidence, Failure> {
             let mut ev = independence::run(ctx, expr, wrt, *redraws, bits)?;
             if opts.exact {
                 independence::judge_symbolically(ctx, expr, wrt, &mut ev);
+                ball_witness::refine_independence(ctx, expr, (wrt, *redraws), &mut ev);
             }
             Ok(ev)
         }
