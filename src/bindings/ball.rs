@@ -150,13 +150,33 @@ fn certified_step(gamma: Gamma, a: &[Value<Ball>]) -> Result<Vec3<Ball>, String>
     Ok(Vec3([x, y, z]))
 }
 
+/// The functions evaluated as written in ball arithmetic (see the module).
+fn as_written(f: ModelFn) -> bool {
+    f.spec().algebraic
+        || matches!(
+            f,
+            ModelFn::EllCoords | ModelFn::EllInverse | ModelFn::Kmod | ModelFn::Nu
+        )
+}
+
+/// A model function on duals over balls: the functions evaluated as written (their
+/// derivatives by the rules of [`Dual`], the elliptic ones by the exact formulas), or
+/// why it has no enclosure (the implicit steps are certified as values only).
+pub(super) fn call_dual(f: ModelFn, a: &[Value<Dual<Ball>>]) -> Result<Value<Dual<Ball>>, String> {
+    match f {
+        f if f.spec().algebraic => f.call_algebraic(a),
+        f if as_written(f) => f.call(a),
+        _ => Err(format!("{}: {NO_BALLS}", f.name())),
+    }
+}
+
 /// A model function in ball arithmetic (see the module), or why it has no enclosure.
 pub(super) fn call(f: ModelFn, a: &[Value<Ball>]) -> Result<Value<Ball>, String> {
     if f.spec().algebraic {
         return f.call_algebraic(a);
     }
     match f {
-        ModelFn::EllCoords | ModelFn::EllInverse | ModelFn::Kmod | ModelFn::Nu => f.call(a),
+        f if as_written(f) => f.call(a),
         ModelFn::StepGamma0 => Ok(Value::Vec3(certified_step(Gamma::G0, a)?)),
         ModelFn::StepGamma1 => Ok(Value::Vec3(certified_step(Gamma::G1, a)?)),
         ModelFn::StepGamma2 => Ok(Value::Vec3(certified_step(Gamma::G2, a)?)),

@@ -261,6 +261,13 @@ impl GenericFunction for ModelFn {
         super::ball::call(*self, a)
     }
 
+    fn call_dual_ball(
+        &self,
+        a: &[Value<crate::numbers::Dual<crate::numbers::Ball>>],
+    ) -> Result<Value<crate::numbers::Dual<crate::numbers::Ball>>, String> {
+        super::ball::call_dual(*self, a)
+    }
+
     fn name_for_proofs(&self) -> &str {
         self.name()
     }

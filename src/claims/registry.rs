@@ -81,6 +81,11 @@ pub trait GenericFunction: Send + Sync {
     fn call_ball(&self, _args: &[Value<Ball>]) -> Result<Value<Ball>, String> {
         Err(NO_BALLS.into())
     }
+    /// Evaluates on duals over balls (a derivative enclosed as well as the value); by
+    /// default refused (see [`NO_BALLS`]).
+    fn call_dual_ball(&self, _args: &[Value<Dual<Ball>>]) -> Result<Value<Dual<Ball>>, String> {
+        Err(NO_BALLS.into())
+    }
     /// Evaluates with field operations only, on any backend (exact rationals, and any
     /// backend without transcendental functions); by default an error (the function is
     /// not rational).
@@ -128,6 +133,9 @@ impl<G: GenericFunction> ExtFunction for G {
     }
     fn call_ball(&self, a: &[Value<Ball>]) -> Result<Value<Ball>, String> {
         GenericFunction::call_ball(self, a)
+    }
+    fn call_dual_ball(&self, a: &[Value<Dual<Ball>>]) -> Result<Value<Dual<Ball>>, String> {
+        GenericFunction::call_dual_ball(self, a)
     }
     fn call_sym(&self, a: &[Value<Sym>]) -> Result<Value<Sym>, String> {
         if self.implicit().is_some()

@@ -425,6 +425,12 @@ impl Real for Ball {
     fn jacobi_inverse_by_rule(sn: &Self, cn: &Self, dn: &Self, k: &Self) -> Result<Self, String> {
         super::ball_elliptic::jacobi_inverse(sn, cn, dn, k)
     }
+    fn ellipe_by_rule(k: &Self, complementary: bool) -> Result<Self, String> {
+        super::ball_elliptic::ellipe(k, complementary)
+    }
+    fn ellipeinc_by_rule(phi: &Self, k: &Self) -> Result<Self, String> {
+        super::ball_elliptic::ellipeinc(phi, k)
+    }
     fn as_ball(&self) -> Option<&Ball> {
         Some(self)
     }

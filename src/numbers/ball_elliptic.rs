@@ -7,7 +7,8 @@
 //!   with `τ = iK'/K` and `z = u/(2K)` (Arb's `θⱼ(z, τ)` is DLMF's `θⱼ(πz | τ)`),
 //!   `sn = θ₃(0)θ₁(z) / (θ₂(0)θ₄(z))`, `cn = θ₄(0)θ₂(z) / (θ₂(0)θ₄(z))`,
 //!   `dn = θ₄(0)θ₃(z) / (θ₃(0)θ₄(z))`, by `acb_modular_theta`;
-//! * `F(φ, k)`: `acb_elliptic_f` (DLMF 19.2.4, quasi-periodic continuation in `φ`);
+//! * `F(φ, k)` and `E(φ, k)`: `acb_elliptic_f`, `acb_elliptic_e_inc` (DLMF 19.2.4–5,
+//!   quasi-periodic continuation in `φ`); `E(k)`, `E'(k)`: `acb_elliptic_e`;
 //! * the real `u ∈ (−2K, 2K]` with given `sn, cn, dn`: `F(atan2(sn, cn), k)`, the branch
 //!   of [`crate::special::jacobi_inverse`].
 //!
@@ -28,7 +29,7 @@
 
 use super::{Ball, Real, Scalar};
 use flint_sys::acb::*;
-use flint_sys::acb_elliptic::{acb_elliptic_f, acb_elliptic_k};
+use flint_sys::acb_elliptic::{acb_elliptic_e, acb_elliptic_e_inc, acb_elliptic_f, acb_elliptic_k};
 use flint_sys::acb_modular::acb_modular_theta;
 use flint_sys::acb_types::acb_struct;
 use std::mem::MaybeUninit;
@@ -106,6 +107,35 @@ pub(super) fn ellipk(k: &Ball, complementary: bool) -> Result<Ball, String> {
     let m = if complementary { m.one() - m } else { m };
     let prec = k.prec_bits();
     Ok(k_of_parameter(&m, prec + GUARD).re(prec))
+}
+
+/// `E(k)`, or `E'(k) = E(√(1 − k²))` when `complementary` (see the module).
+pub(super) fn ellipe(k: &Ball, complementary: bool) -> Result<Ball, String> {
+    let m = parameter(k)?;
+    let m = if complementary { m.one() - m } else { m };
+    let prec = k.prec_bits();
+    let mut r = Acb::zero();
+    // SAFETY: both values are initialised.
+    unsafe { acb_elliptic_e(&mut r.0, &Acb::real(&m).0, i64::from(prec + GUARD)) };
+    Ok(r.re(prec))
+}
+
+/// `E(φ, k)` (see the module).
+pub(super) fn ellipeinc(phi: &Ball, k: &Ball) -> Result<Ball, String> {
+    let prec = phi.prec_bits().max(k.prec_bits());
+    let m = parameter(k)?;
+    let mut r = Acb::zero();
+    // SAFETY: every value is initialised.
+    unsafe {
+        acb_elliptic_e_inc(
+            &mut r.0,
+            &Acb::real(phi).0,
+            &Acb::real(&m).0,
+            0,
+            i64::from(prec + GUARD),
+        )
+    };
+    Ok(r.re(prec))
 }
 
 /// `θ₁, θ₂, θ₃, θ₄ (z, τ)` (Arb's normalization, see the module).
@@ -241,10 +271,7 @@ mod tests {
         ] {
             let (s, c, d) = sncndn(&Ball::exact(u, 200), &Ball::exact(k, 200)).unwrap();
             for (b, x) in [s, c, d].iter().zip(want) {
-                assert!(
-                    (b.mid_f64() - x).abs() <= 4e-16 * x.abs(),
-                    "{u} {k}: {b:?}"
-                );
+                assert!((b.mid_f64() - x).abs() <= 4e-16 * x.abs(), "{u} {k}: {b:?}");
                 assert!(b.rad_f64() < 1e-20 * x.abs(), "{u} {k}: {b:?}");
             }
         }

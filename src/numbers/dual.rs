@@ -141,11 +141,37 @@ impl<S: Scalar> Scalar for Dual<S> {
     }
 }
 
+/// Refuses an elliptic rule of dual numbers over a type that does not enclose.
+fn enclosing<R: Real>(what: &str) -> Result<(), String> {
+    match R::ENCLOSES {
+        true => Ok(()),
+        false => Err(format!("{what} have no rule for this type")),
+    }
+}
+
 impl<R: Real> Real for Dual<R> {
     // a dual over a type that evaluates by rules must not run numerical iterations either
     const BY_RULE: bool = R::BY_RULE;
     const FIXED: bool = R::FIXED;
     const ENCLOSES: bool = R::ENCLOSES;
+    // the elliptic rules of duals over enclosures (module `dual_elliptic`); the prover
+    // differentiates its symbols by its own rules
+    fn sncndn_by_rule(u: &Self, k: &Self) -> Result<(Self, Self, Self), String> {
+        enclosing::<R>("sn, cn, dn")?;
+        super::dual_elliptic::sncndn(u, k)
+    }
+    fn quarter_period_by_rule(k: &Self, complementary: bool) -> Result<Self, String> {
+        enclosing::<R>("K")?;
+        super::dual_elliptic::quarter_period(k, complementary)
+    }
+    fn ellipf_by_rule(phi: &Self, k: &Self) -> Result<Self, String> {
+        enclosing::<R>("F")?;
+        super::dual_elliptic::ellipf(phi, k)
+    }
+    fn jacobi_inverse_by_rule(sn: &Self, cn: &Self, dn: &Self, k: &Self) -> Result<Self, String> {
+        enclosing::<R>("the inverse of sn, cn, dn")?;
+        super::dual_elliptic::jacobi_inverse(sn, cn, dn, k)
+    }
     fn prec(&self) -> u32 {
         self.v.prec()
     }

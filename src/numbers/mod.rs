@@ -27,6 +27,7 @@ mod ball;
 mod ball_elliptic;
 mod complex;
 mod dual;
+mod dual_elliptic;
 mod float64;
 pub mod gmp_kernels;
 mod mpfr;
@@ -353,6 +354,17 @@ pub trait Real: Scalar + PartialOrd {
     /// when [`Real::BY_RULE`]).
     fn ellipf_by_rule(_phi: &Self, _k: &Self) -> Result<Self, String> {
         Err("F has no rule for this type".into())
+    }
+    /// The complete integral `E(k)` (or `E'(k) = E(√(1−k²))` when `complementary`) by
+    /// the type's own rule (only called when [`Real::BY_RULE`]); used by the derivatives
+    /// of the rules in `k`.
+    fn ellipe_by_rule(_k: &Self, _complementary: bool) -> Result<Self, String> {
+        Err("E has no rule for this type".into())
+    }
+    /// The incomplete integral `E(φ, k)` by the type's own rule (only called when
+    /// [`Real::BY_RULE`]); used by the derivatives of the rules in `k`.
+    fn ellipeinc_by_rule(_phi: &Self, _k: &Self) -> Result<Self, String> {
+        Err("E(phi, k) has no rule for this type".into())
     }
     /// The argument `u` with `(sn, cn, dn)(u, k) = (sn, cn, dn)` by the type's own rule
     /// (only called when [`Real::BY_RULE`]).
