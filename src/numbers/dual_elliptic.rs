@@ -44,11 +44,11 @@ fn dam_dk<R: Real>(u: &R, k: &R, (s, c, d): (&R, &R, &R)) -> Result<R, String> {
     Ok((k.clone() * s.clone() * c.clone() - d.clone() * z / k.clone()) / kp2)
 }
 
+/// `(sn, cn, dn)` as dual numbers.
+type Triple<R> = (Dual<R>, Dual<R>, Dual<R>);
+
 /// `(sn, cn, dn)(u, k)` of dual numbers (see the module).
-pub(super) fn sncndn<R: Real>(
-    u: &Dual<R>,
-    k: &Dual<R>,
-) -> Result<(Dual<R>, Dual<R>, Dual<R>), String> {
+pub(super) fn sncndn<R: Real>(u: &Dual<R>, k: &Dual<R>) -> Result<Triple<R>, String> {
     let (s, c, d) = R::sncndn_by_rule(&u.v, &k.v)?;
     let k2 = k.v.sqr();
     // the k-parts are formed even where k's derivative is 0: a test for 0 of a ball
