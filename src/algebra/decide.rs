@@ -274,16 +274,26 @@ impl Sym {
         None
     }
 
-    /// The proved sign of `self / h`.
+    /// The proved sign of `self / h`, or of `self · h` (the same sign where `h ≠ 0`, as
+    /// on a part of the domain where `h` has a strict sign): `2/p` by the hypothesis
+    /// `p/2 > 0`, whose quotient `4/p²` would need the sign of `2/p` itself.
     fn ratio_sign(&self, h: &Sym) -> Option<i32> {
         if h.is_exact_zero() {
             return None;
         }
+        let exact = |q: &Sym| q.as_rational().map(|r| r.cmp0() as i32).filter(|&s| s != 0);
         let q = self.try_div(h).ok()?;
-        if let Some(r) = q.as_rational() {
-            return (r != 0).then(|| if r < 0 { -1 } else { 1 });
+        if let Some(s) = exact(&q) {
+            return Some(s);
         }
-        q.proved_sign_of_quotient()
+        if let Some(s) = q.proved_sign_of_quotient() {
+            return Some(s);
+        }
+        let p = self.clone() * h.clone();
+        if crate::numbers::Real::failure(&p).is_some() {
+            return None;
+        }
+        exact(&p).or_else(|| p.proved_sign_of_quotient())
     }
 
     /// The context variable of the one indeterminate of which this value is a constant

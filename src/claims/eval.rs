@@ -473,12 +473,56 @@ impl<'r, T: Backend> Evaluator<'r, T> {
         {
             return Ok(Value::Mat3(v));
         }
+        if let Some(v) = self.extremum_comparison(op, a, b, sp)? {
+            return Ok(v);
+        }
         let x = self.eval(a)?;
         let y = self.eval(b)?;
         match (x, y) {
             (Value::Real(p), Value::Real(q)) => wrap(real_binary(op, p, q)),
             (x, y) => wrap(binary(op, &x, &y)),
         }
+    }
+
+    /// A comparison of `min(x₁, …)` or `max(x₁, …)` with `b`, argument by argument:
+    /// `min(xs) > b` iff every `xᵢ > b`, `min(xs) < b` iff some `xᵢ < b` (and the same
+    /// with `max`, the quantifiers exchanged).  The value is that of the comparison as
+    /// written, but no argument is compared with another: an exact backend need not
+    /// decide which argument is the least, only how each compares with `b`.  `None`
+    /// when `a` is not such a call (or the operator is not `<`, `<=`, `>`, `>=`).
+    fn extremum_comparison(
+        &self,
+        op: BinOp,
+        a: &Expr,
+        b: &Expr,
+        sp: Span,
+    ) -> Result<Option<Value<T>>, EvalError> {
+        let ExprKind::Call(f, xs) = &a.kind else {
+            return Ok(None);
+        };
+        let is_min = f == "min";
+        let comparison = matches!(op, BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge);
+        if !comparison || !(is_min || f == "max") || xs.len() < 2 || self.shadowed(f) {
+            return Ok(None);
+        }
+        // min > b, max < b: all; min < b, max > b: some
+        let above = matches!(op, BinOp::Gt | BinOp::Ge);
+        let all = above == is_min;
+        let y = self.eval(b)?;
+        for x in xs {
+            let v = binary(op, &self.eval(x)?, &y).map_err(|m| EvalError::at(m, sp))?;
+            let t = v.as_bool().map_err(|m| EvalError::at(m, sp))?;
+            if t != all {
+                return Ok(Some(Value::Bool(t)));
+            }
+        }
+        Ok(Some(Value::Bool(all)))
+    }
+
+    /// Is `name` a function of the catalogue or of a `let` (which a built-in's name
+    /// would then stand for)?
+    fn shadowed(&self, name: &str) -> bool {
+        self.local_fns.iter().any(|f| f.def.name == name) || self.reg.user(name).is_some()
     }
 
     /// `X * P * transpose(X)` or `transpose(X) * P * X` (`a * b`), with `X` a name and

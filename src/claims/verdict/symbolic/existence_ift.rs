@@ -10,11 +10,15 @@
 //! every small enough `h`.  Otherwise the claim keeps its sampled verdict.
 
 use super::ProofInfo;
+use super::cases::Domain;
 use super::cases::Role;
-use super::series::{each_case, scope, symbols};
+use super::series::{each_case_parts, scope, symbols};
+use super::split::{MAX_SPLITS, draw_part};
 use crate::algebra::series::{Series, with_precision};
 use crate::algebra::series_solve::solve;
+use crate::algebra::split::SignSplit;
 use crate::algebra::{AlgResult, AlgebraError, Ring, RingOptions, prove_components};
+use crate::algebra::{Outcome, Proof};
 use crate::claims::ast::{BinOp, Expr, ExprKind};
 use crate::claims::catalogue::PExpr;
 use crate::claims::eval::Evaluator;
@@ -75,20 +79,75 @@ pub fn prove_existence(ctx: Ctx<'_>, sys: System<'_>) -> ProofInfo {
     if !(dom.plain.iter()).any(|(n, (r, _))| n == "h" && *r == Role::Free) {
         return ProofInfo::none("no free variable h to take to 0");
     }
-    let mut info = each_case(ctx, &dom.plain, |points| {
-        let opts = RingOptions {
-            points: points.len(),
-            positivity: dom.positivity.clone(),
-            ..RingOptions::default()
-        };
-        prove_components(opts, &ctx.claim.id, |ring| {
-            with_precision(PRECISION, || {
-                in_set_for_small_h(ctx, ring, (&dom.roles, points), sys)
-            })
-        })
+    let mut info = each_case_parts(ctx, &dom.plain, |key, points| {
+        parts(ctx, (&dom, sys), key, points, Vec::new())
     });
     info.ms = t0.elapsed().as_secs_f64() * 1e3;
     info
+}
+
+/// The proof of one part of a case (the whole case when `conds` is empty): when a sign
+/// that the proof must decide differs between the part's points (the sign of `J₁ = (B + C
+/// − A)/2` in `1/|J₁|`, say), the part is split by it, each side drawn afresh and proved
+/// with that sign as its condition, at most [`MAX_SPLITS`] deep (as the identity proofs
+/// do, `super::split`).  The parts cover the domain except where the sign's value is 0.
+fn parts(
+    ctx: Ctx<'_>,
+    (dom, sys): (&Domain<'_>, System<'_>),
+    key: &[String],
+    points: Vec<Point>,
+    conds: Vec<(SignSplit, i32)>,
+) -> Vec<(Vec<String>, Proof)> {
+    let mut label = key.to_vec();
+    label.extend(
+        conds
+            .iter()
+            .map(|(c, s)| format!("{} {} 0", c.what, if *s > 0 { ">" } else { "<" })),
+    );
+    let opts = RingOptions {
+        points: points.len(),
+        positivity: dom.positivity.clone(),
+        hypotheses: conds.clone(),
+        ..RingOptions::default()
+    };
+    let p = prove_components(opts, &ctx.claim.id, |ring| {
+        with_precision(PRECISION, || {
+            in_set_for_small_h(ctx, ring, (&dom.roles, &points), sys)
+        })
+    });
+    let split = match &p.split {
+        Some(s)
+            if !p.is_proved()
+                && conds.len() < MAX_SPLITS
+                && !conds.iter().any(|(c, _)| c.same(s)) =>
+        {
+            s.clone()
+        }
+        _ => return vec![(label, p)],
+    };
+    let mut out = Vec::new();
+    for sign in [1, -1] {
+        let mut c = conds.clone();
+        c.push((split.clone(), sign));
+        let side = match draw_part(ctx, &dom.roles, key, &c) {
+            Ok(pts) => parts(ctx, (dom, sys), key, pts, c),
+            Err(why) => {
+                let mut q = p.clone();
+                q.outcome = Outcome::NotProved(format!(
+                    "the part where {} {} 0 is not reached ({why}), so it is neither proved nor refuted",
+                    split.what,
+                    if sign > 0 { ">" } else { "<" }
+                ));
+                vec![(label.clone(), q)]
+            }
+        };
+        let stop = side.iter().any(|(_, q)| !q.is_proved());
+        out.extend(side);
+        if stop {
+            break;
+        }
+    }
+    out
 }
 
 /// The series solution and its `in` condition: `Ok` with nothing left to test when the

@@ -82,6 +82,18 @@ pub(super) fn each_case(
     plain: &[(String, (Role, usize))],
     mut prove: impl FnMut(&[Point]) -> Proof,
 ) -> ProofInfo {
+    each_case_parts(ctx, plain, |key, points| {
+        vec![(key.to_vec(), prove(&points))]
+    })
+}
+
+/// [`each_case`] for a proof that may split a case into parts: `prove` gives each part's
+/// labels and proof, from the case's key and points.
+pub(super) fn each_case_parts(
+    ctx: Ctx<'_>,
+    plain: &[(String, (Role, usize))],
+    mut prove: impl FnMut(&[String], Vec<Point>) -> Vec<(Vec<String>, Proof)>,
+) -> ProofInfo {
     let cases = match case_points(ctx, plain) {
         Ok(c) if !c.is_empty() => c,
         Ok(_) => return ProofInfo::none("no case of the domain has enough points"),
@@ -90,12 +102,13 @@ pub(super) fn each_case(
     let mut info = ProofInfo::none("");
     info.reason = None;
     info.method = ProofMethod::Series;
-    for (key, points) in &cases {
-        let p = prove(points);
-        let stop = !p.is_proved();
-        merge(ctx, &mut info, key, p);
-        if stop {
-            break;
+    for (key, points) in cases {
+        for (label, p) in prove(&key, points) {
+            let stop = !p.is_proved();
+            merge(ctx, &mut info, &label, p);
+            if stop {
+                return info;
+            }
         }
     }
     info

@@ -122,9 +122,19 @@ pub(super) fn draw(
     case: &[String],
     conds: &[(SignSplit, i32)],
 ) -> Result<Vec<Point>, String> {
-    let sampler = || input.ctx.sampler(Stream::Proof).map_err(|c| c.to_string());
-    draw_with(input, case, conds, sampler()?).or_else(|_| {
-        draw_with(input, case, conds, sampler()?.toward_boundary()).map_err(|_| {
+    draw_part(input.ctx, input.roles, case, conds)
+}
+
+/// [`draw`] for the claim `ctx` whose variables have the roles `roles`.
+pub(super) fn draw_part(
+    ctx: Ctx<'_>,
+    roles: &[(String, Role, &PExpr)],
+    case: &[String],
+    conds: &[(SignSplit, i32)],
+) -> Result<Vec<Point>, String> {
+    let sampler = || ctx.sampler(Stream::Proof).map_err(|c| c.to_string());
+    draw_with(roles, case, conds, sampler()?).or_else(|_| {
+        draw_with(roles, case, conds, sampler()?.toward_boundary()).map_err(|_| {
             format!(
                 "no {POINTS} points of it in {} draws of the domain, nor in {} draws next to its boundary",
                 MAX_DRAWS * 4,
@@ -134,14 +144,14 @@ pub(super) fn draw(
     })
 }
 
-/// [`draw`] with one sampler.
+/// [`draw_part`] with one sampler.
 fn draw_with(
-    input: &CaseInput<'_, '_>,
+    roles: &[(String, Role, &PExpr)],
     case: &[String],
     conds: &[(SignSplit, i32)],
     mut sampler: crate::claims::sampler::Sampler<'_>,
 ) -> Result<Vec<Point>, String> {
-    let case_vars: Vec<&String> = (input.roles.iter())
+    let case_vars: Vec<&String> = (roles.iter())
         .filter(|(_, r, _)| *r == Role::Case)
         .map(|(n, _, _)| n)
         .collect();
