@@ -138,7 +138,9 @@ impl Ring {
             if ne.is_zero() {
                 continue;
             }
-            let mut t = self.poly_sym(&ne).try_mul(&square.try_powi((e / 2) as i32)?)?;
+            let mut t = self
+                .poly_sym(&ne)
+                .try_mul(&square.try_powi((e / 2) as i32)?)?;
             if e % 2 == 1 {
                 t = t.try_mul(&x)?;
             }

@@ -19,14 +19,17 @@
 //! 3. **The same initial values.**  At `x₀ = 0` every jet's argument must vanish exactly
 //!    (then `S = 0`, `C = D = 1` there); `F(0) = G(0)` and `F'(0) = G'(0)` exactly, and
 //!    the denominators of `F`, `F'`, `G`, `G'` do not vanish at `x₀` (a singular starting
-//!    point is rejected).  No root of the tower may depend on `x`.
+//!    point is rejected).  Each side must be a rational function of `x` and the jets
+//!    with coefficients independent of `x` (no root of the tower may depend on `x`), so
+//!    that it is analytic wherever its denominator does not vanish.
 //!
 //! **Why this proves `f = g`.**  `Y = (y, y')` solves the first-order system
 //! `Y' = (y', a²Φ(y))`, whose right side is a polynomial, hence locally Lipschitz; by the
 //! Picard–Lindelöf theorem two `C²` solutions on an interval `I ∋ x₀` with the same
 //! `Y(x₀)` agree on `I`.  So `f = g` on every interval containing `0` on which both
-//! sides are analytic (`C²` suffices), for each value of the other variables at which
-//! the exact initial values are defined — the hypothesis the method states.  (With
+//! sides are analytic (`C²` suffices; here: their denominators do not vanish), for each
+//! value of the other variables at which the exact initial values are defined — the
+//! scope the method states with its proof.  (With
 //! analytic sides, agreement near `x₀` extends to the connected domain of analyticity
 //! by the identity theorem.)  This is the simplest case of the zero test for
 //! D-algebraic functions of J. van der Hoeven, "A new zero-test for formal power
@@ -128,6 +131,10 @@ fn ode_of(x: &Sym, side: &Sym) -> AlgResult<Option<Ode>> {
 /// `y'' − a²Φ(y)` of `side`, reduced modulo the jets' relations, is 0; returns `y'`.
 fn satisfies(x: &Sym, ode: &Ode, side: &Sym, which: &str) -> OdeResult<Sym> {
     let alg = |e: AlgebraError| format!("{which}: {e}");
+    let ring = side.ring();
+    let ix = (x.as_field_var()).ok_or_else(|| "the variable is not a symbol".to_string())?;
+    rational_in_jets(ring, ix, &side.val.num).map_err(alg)?;
+    rational_in_jets(ring, ix, &side.val.den).map_err(alg)?;
     let d1 = side.derivative_plain(x).map_err(alg)?;
     let d2 = d1.derivative_plain(x).map_err(alg)?;
     let residual = d2.try_sub(&ode.rhs(side).map_err(alg)?).map_err(alg)?;
@@ -233,14 +240,11 @@ fn at_zero(x: &Sym, v: &Sym) -> AlgResult<Sym> {
     }
     let num = substitute(ring, &v.val.num, &zeros, &ones);
     let den = substitute(ring, &v.val.den, &zeros, &ones);
-    let singular = || {
-        AlgebraError::Domain("singular starting point: the denominator vanishes at 0".into())
-    };
+    let singular =
+        || AlgebraError::Domain("singular starting point: the denominator vanishes at 0".into());
     if den.is_zero() {
         return Err(singular());
     }
-    moving_free(ring, ix, &num)?;
-    moving_free(ring, ix, &den)?;
     let den = ring.poly_sym(&den);
     let prec = ring.precision();
     if (0..ring.points()).any(|p| den.val.sh.is_small(p, prec)) {
@@ -265,27 +269,136 @@ fn substitute(ring: &Ring, p: &Poly, zeros: &[usize], ones: &[usize]) -> Poly {
     p
 }
 
-/// Refuses a value at 0 that still depends on `x` (through a root or a symbol the
-/// substitution does not cover).
-fn moving_free(ring: &Ring, ix: usize, p: &Poly) -> AlgResult<()> {
+/// Refuses a value that depends on `x` otherwise than rationally through `x` and the
+/// jet symbols: through a root whose radicand depends on `x` (such as `√(1 − sn²)`,
+/// which is `|cn|`, not analytic where `cn` vanishes) or a symbol of another kind.
+fn rational_in_jets(ring: &Ring, ix: usize, p: &Poly) -> AlgResult<()> {
     for idx in p.used_vars() {
         let depends = match ring.inner.root_of_var(idx) {
             Some(i) => {
                 let rad = ring.state().roots[i].radicand.clone();
-                !ring.poly_sym(&rad).derivative_plain(&ring.var_sym(ix))?.is_exact_zero()
+                !ring
+                    .poly_sym(&rad)
+                    .derivative_plain(&ring.var_sym(ix))?
+                    .is_exact_zero()
             }
             None => {
                 let j = idx - ring.inner.opts.max_roots;
                 let kind = ring.state().vars[j].kind.clone();
-                !matches!(kind, VarKind::Indeterminate | VarKind::Opaque { constant: true })
+                !matches!(
+                    kind,
+                    VarKind::Indeterminate
+                        | VarKind::Jet { .. }
+                        | VarKind::Opaque { constant: true }
+                )
             }
         };
         if depends {
             return Err(AlgebraError::Domain(format!(
-                "the value at 0 depends on {} otherwise than through the ODE's variable",
+                "the side depends on {} otherwise than rationally through the variable and sn, cn, dn",
                 ring.inner.names()[idx]
             )));
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::prove_by_ode;
+    use crate::algebra::parametrization::Parametrization;
+    use crate::algebra::{Ring, RingOptions, Sym};
+
+    /// A jet ring with `u` and `k` (values in the Landen domain) and `k' = √(1 − k²)`,
+    /// `k₁ = (1 − k')/(1 + k')` (DLMF 22.7.1).
+    fn landen() -> (Ring, Sym, Sym, Sym) {
+        // the domain 0 < k < 1 as k = t/(1 + t), t > 0, so that k' > 0 is proved
+        let mut par = Parametrization::new();
+        let t = par.positive("t").unwrap();
+        let one = par.constant(&rug::Rational::from(1));
+        par.bind("k", t.div(&one.add(&t)).unwrap(), String::new());
+        let ring = Ring::new(RingOptions {
+            points: 3,
+            jets: true,
+            max_vars: 32,
+            positivity: Some(std::sync::Arc::new(par)),
+            ..Default::default()
+        });
+        let u = ring.indeterminate_f64("u", &[0.3, -1.1, 1.7]).unwrap();
+        let k = ring.indeterminate_f64("k", &[0.5, 0.8, 0.2]).unwrap();
+        let one = ring.integer(1);
+        let kp = (one.clone() - k.clone() * k.clone()).sqrt().unwrap();
+        let k1 = (one.clone() - kp.clone()) / (one + kp);
+        (ring, u, k, k1)
+    }
+
+    /// `(1 + f)·sn(w, k₁)/(1 + k₁ sn²(w, k₁))` with `w = u/(1 + k₁)`: DLMF 22.7.2 for
+    /// `f = k₁`.
+    fn gauss_rhs(ring: &Ring, u: &Sym, k1: &Sym, factor: &Sym) -> Sym {
+        let one = ring.integer(1);
+        let w = u.clone() / (one.clone() + k1.clone());
+        let (s, _, _) = ring.jet_sncndn(&w, k1).unwrap();
+        (one.clone() + factor.clone()) * s.clone() / (one + k1.clone() * s.clone() * s)
+    }
+
+    #[test]
+    fn gauss_transformation_is_proved() {
+        let (ring, u, k, k1) = landen();
+        let (lhs, _, _) = ring.jet_sncndn(&u, &k).unwrap();
+        let rhs = gauss_rhs(&ring, &u, &k1, &k1);
+        let p = prove_by_ode(&u, &lhs, &rhs).unwrap();
+        assert_eq!(p.initial, ["0".to_string(), "1".to_string()]);
+    }
+
+    #[test]
+    fn gauss_with_a_misprinted_factor_is_not_proved() {
+        // the factor 1 + k₁ replaced by 1 + k₁²
+        let (ring, u, k, k1) = landen();
+        let (lhs, _, _) = ring.jet_sncndn(&u, &k).unwrap();
+        let rhs = gauss_rhs(&ring, &u, &k1, &(k1.clone() * k1.clone()));
+        let e = prove_by_ode(&u, &lhs, &rhs).unwrap_err();
+        assert!(e.contains("does not satisfy the ODE"), "{e}");
+    }
+
+    #[test]
+    fn a_wrong_initial_value_is_rejected() {
+        // −sn u solves the ODE of sn u (Φ is odd) but y'(0) = −1, not 1
+        let (ring, u, k, _) = landen();
+        let (s, c, _) = ring.jet_sncndn(&u, &k).unwrap();
+        let e = prove_by_ode(&u, &s, &s.negate()).unwrap_err();
+        assert!(e.contains("initial values differ: y'(0)"), "{e}");
+        // cn u and −cn u: y(0) = 1 against −1
+        let e = prove_by_ode(&u, &c, &c.negate()).unwrap_err();
+        assert!(e.contains("initial values differ: y(0)"), "{e}");
+    }
+
+    #[test]
+    fn a_singular_starting_point_is_rejected() {
+        // 1/(k sn u) = sn(u + iK') solves the ODE of sn u (DLMF 22.4.3), with a pole at 0
+        let (ring, u, k, _) = landen();
+        let (s, _, _) = ring.jet_sncndn(&u, &k).unwrap();
+        let ns = ring.integer(1) / (k.clone() * s.clone());
+        let e = prove_by_ode(&u, &s, &ns).unwrap_err();
+        assert!(e.contains("singular starting point"), "{e}");
+    }
+
+    #[test]
+    fn a_root_depending_on_the_variable_is_refused() {
+        // a side with √(1 + u²): not rational in u, sn, cn, dn (the analyticity of such
+        // roots is not checked, so the method refuses them)
+        let (ring, u, k, _) = landen();
+        let (s, _, _) = ring.jet_sncndn(&u, &k).unwrap();
+        let r = (ring.integer(1) + u.clone() * u.clone()).sqrt().unwrap();
+        let e = prove_by_ode(&u, &s, &(s.clone() * r)).unwrap_err();
+        assert!(e.contains("otherwise than rationally"), "{e}");
+    }
+
+    #[test]
+    fn an_argument_not_zero_at_the_start_is_refused() {
+        let (ring, u, k, _) = landen();
+        let (s, _, _) = ring.jet_sncndn(&u, &k).unwrap();
+        let (t, _, _) = ring.jet_sncndn(&(u.clone() + ring.integer(1)), &k).unwrap();
+        let e = prove_by_ode(&u, &s, &t).unwrap_err();
+        assert!(e.contains("is not 0 at 0"), "{e}");
+    }
 }

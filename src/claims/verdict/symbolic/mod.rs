@@ -140,9 +140,7 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
 /// is added to the attempt's.
 fn by_ode_if_not_proved(ctx: Ctx<'_>, (lhs, rhs): (&PExpr, &PExpr), info: ProofInfo) -> ProofInfo {
     use crate::claims::ast::ExprKind;
-    let jacobi = |p: &PExpr| {
-        matches!(&p.expr.kind, ExprKind::Call(name, _) if ["sn", "cn", "dn"].contains(&name.as_str()))
-    };
+    let jacobi = |p: &PExpr| matches!(&p.expr.kind, ExprKind::Call(name, _) if ["sn", "cn", "dn"].contains(&name.as_str()));
     if info.is_proved() || info.witness.is_some() || !(jacobi(lhs) || jacobi(rhs)) {
         return info;
     }
@@ -355,12 +353,14 @@ pub fn judge(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, ev: &mut Evidence) {
                 prove(ctx, lhs, rhs, false)
             }
         },
-        |info| match info.method {
+        |info| {
+            match info.method {
             ProofMethod::Ode => "both sides solve the same ODE with the same initial values at 0 (proved by the ODE method); holds numerically".to_string(),
             _ => format!(
                 "the symbolic normal form of lhs − rhs is 0 ({}); holds numerically",
                 info.extent()
             ),
+        }
         },
     );
 }

@@ -85,7 +85,9 @@ fn attempt(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr) -> Result<(String, OdeProof, 
     }
     let mut why = Vec::new();
     for (name, role, _) in &dom.roles {
-        let Some(Value::Real(x)) = (*role == Role::Free).then(|| bound.ev.lookup(name)).flatten()
+        let Some(Value::Real(x)) = (*role == Role::Free)
+            .then(|| bound.ev.lookup(name))
+            .flatten()
         else {
             continue;
         };
@@ -119,7 +121,7 @@ fn proved(var: &str, p: &OdeProof, ring: &Ring) -> ProofInfo {
         "y'' = Phi(y) with Phi polynomial is locally Lipschitz as a first-order system: by Picard-Lindelöf the solution with these initial values is unique (van der Hoeven's zero test for D-algebraic functions, ISSAC 2002)".into(),
     );
     info.notes.push(format!(
-        "scope: lhs = rhs on every interval of {var} containing 0 on which both sides are analytic, for every value of the other variables at which the initial values are defined"
+        "scope: lhs = rhs on every interval of {var} containing 0 on which both sides are analytic (rational in {var}, sn, cn, dn: their denominators do not vanish), for every value of the other variables at which the initial values are defined"
     ));
     info
 }
