@@ -167,7 +167,6 @@ fn satisfies(x: &Sym, ode: &Ode, side: &Sym, which: &str) -> OdeResult<Sym> {
 /// let rhs = q.clone() * s.clone() / (one.clone() + m.clone() * m.clone() * s.clone() * s.clone());
 /// let proof = prove_by_ode(&u, &lhs, &rhs).unwrap();
 /// assert_eq!(proof.initial[0], "0");
-/// println!("{proof:?}");
 /// // the factor 1 + m² replaced by 1 + m⁴: not proved
 /// let m4 = m.try_powi(4).unwrap();
 /// let wrong = (one.clone() + m4) * s.clone() / (one + m.clone() * m * s.clone() * s);
