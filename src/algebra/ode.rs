@@ -14,7 +14,7 @@
 //!    symbols (module `jets`: `S, C, D` per argument and modulus, with the derivation
 //!    `S' = C·D·a'`, …); for each side `F`, `F'' − a²Φ(F)` is computed exactly by the
 //!    prover's derivation and its numerator reduced modulo `C² = 1 − S²`,
-//!    `D² = 1 − κ²S²` ([`Ring::reduce_jets`]).  The reduction is 0, or the method fails.
+//!    `D² = 1 − κ²S²` (module `jets`).  The reduction is 0, or the method fails.
 //!    The check is exact also for the side the ODE was taken from.
 //! 3. **The same initial values.**  At `x₀ = 0` every jet's argument must vanish exactly
 //!    (then `S = 0`, `C = D = 1` there); `F(0) = G(0)` and `F'(0) = G'(0)` exactly, and
