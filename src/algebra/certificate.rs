@@ -74,6 +74,7 @@ fn kind_tag(k: &VarKind) -> &'static str {
         QuarterKp { .. } => "Kp",
         Opaque { constant: true } => "constant",
         Opaque { constant: false } => "opaque",
+        Jet { .. } => "jet",
     }
 }
 

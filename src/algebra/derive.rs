@@ -177,7 +177,34 @@ impl Ring {
             }
             VarKind::Sn { table, base } => self.sn_derivative(table, base, jx, false),
             VarKind::Zeta { table, base } => self.sn_derivative(table, base, jx, true),
+            VarKind::Jet { f, s, arg, k } => self.jet_derivative(f, s, (&arg, &k), jx),
         }
+    }
+
+    /// `S' = C·D·a'`, `C' = −S·D·a'`, `D' = −κ²·S·C·a'` of a jet trio (module `jets`,
+    /// DLMF 22.13.1–3), for a modulus `κ` that does not depend on `x`.
+    fn jet_derivative(&self, f: u8, s: usize, (arg, k): (&Val, &Val), jx: usize) -> AlgResult<Val> {
+        let inner = &self.inner;
+        if !self.val_derivative(k, jx)?.num.is_zero() {
+            return Err(AlgebraError::Derivative(
+                "of a jet symbol whose modulus varies".into(),
+            ));
+        }
+        let da = self.val_derivative(arg, jx)?;
+        let v = |i: usize| self.var_sym(s + i).into_val();
+        let (a, b, sign) = match f {
+            0 => (v(1), v(2), 1),
+            1 => (v(0), v(2), -1),
+            _ => (v(0), v(1), -1),
+        };
+        let mut t = inner.v_mul(&inner.v_mul(&a, &b)?, &da)?;
+        if f == 2 {
+            t = inner.v_mul(&t, &inner.v_mul(k, k)?)?;
+        }
+        if sign < 0 {
+            t = inner.v_neg(&t);
+        }
+        Ok(t)
     }
 
     /// `v'` of an opaque symbol: known when its sn, cn, dn are prescribed at a modulus

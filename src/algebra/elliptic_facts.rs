@@ -123,6 +123,9 @@ impl Ring {
             }
             VarKind::QuarterK { table } | VarKind::QuarterKp { table } => self.real_modulus(table),
             VarKind::Opaque { .. } => self.state().signs.real_opaque.contains(&j),
+            VarKind::Jet { ref arg, ref k, .. } => {
+                self.is_real(arg, depth + 1) && self.is_real(k, depth + 1)
+            }
         }
     }
 

@@ -42,8 +42,10 @@
 //! the lattice of arguments; the derivation DAG of certificates and the elliptic
 //! tables' data; the ring's state (`ring`: options, symbol table, assumptions and its
 //! plumbing); [`Sym`] and its arithmetic; then square roots ([`roots`]), comparisons,
-//! the claim's symbols, the addition theorems, [`elliptic`], derivatives and the change
-//! of variables, opaque functions, [`certificate`], the scalar traits; and proofs on top.
+//! the claim's symbols, the addition theorems, [`elliptic`], the jet symbols of the ODE
+//! method (module `jets`), derivatives and the change of variables, opaque functions,
+//! [`certificate`], the scalar traits; and proofs on top: normal forms (module `proof`)
+//! and the uniqueness of the solution of an ODE ([`ode`]).
 //! `Ring` has `impl` blocks in the module of each concept ([`Ring::i`] in [`roots`],
 //! [`Ring::quarter_period`] in [`elliptic`], …), so no lower file needs a higher one.
 //!
@@ -117,8 +119,10 @@ pub mod elliptic;
 mod elliptic_facts;
 mod error;
 pub mod flint;
+mod jets;
 mod lattice;
 mod node;
+pub mod ode;
 mod opaque;
 mod order;
 pub mod parametrization;

@@ -53,6 +53,9 @@ pub struct RingOptions {
     pub sign_folds: Vec<super::sign_state::SignSplit>,
     /// The time and memory the attempt may take (see [`super::Budget`]).
     pub budget: super::budget::Budget,
+    /// Jacobi functions as jet symbols (module `jets`, for the ODE method of
+    /// [`super::ode`]) instead of expansions by the addition theorems.
+    pub jets: bool,
 }
 
 /// The largest numerator plus denominator, in terms, that the prover works with at
@@ -73,6 +76,7 @@ impl Default for RingOptions {
             expand_named: false,
             max_terms: MAX_TERMS,
             base_hints: Vec::new(),
+            jets: false,
             positivity: None,
             hypotheses: Vec::new(),
             sign_folds: Vec::new(),
@@ -130,7 +134,18 @@ pub(crate) enum VarKind {
     QuarterKp { table: usize },
     /// A symbol the prover cannot expand (constant: derivative 0, else unknown).
     Opaque { constant: bool },
+    /// Jet symbol `f` (0: sn, 1: cn, 2: dn) of an argument at a modulus (module `jets`):
+    /// the trio's sn is field variable `s`, its cn `s + 1`, its dn `s + 2`.
+    Jet {
+        f: u8,
+        s: usize,
+        arg: Box<Val>,
+        k: Box<Val>,
+    },
 }
+
+/// The functions of a jet trio, in the order of [`VarKind::Jet`]'s `f`.
+pub(crate) const JET_NAMES: [&str; 3] = ["sn", "cn", "dn"];
 
 /// What a field variable of kind `k` is, for the reader.
 pub(crate) fn describe_kind(k: &VarKind) -> String {
@@ -142,6 +157,7 @@ pub(crate) fn describe_kind(k: &VarKind) -> String {
         VarKind::QuarterK { .. } => "quarter period K(k)".into(),
         VarKind::QuarterKp { .. } => "complementary quarter period K'(k)".into(),
         VarKind::Opaque { .. } => "opaque symbol".into(),
+        VarKind::Jet { f, .. } => format!("{} of an argument (jet symbol)", JET_NAMES[*f as usize]),
     }
 }
 

@@ -217,6 +217,9 @@ impl Real for Sym {
         self.ring.error().map(|e| e.to_string())
     }
     fn sncndn_by_rule(u: &Self, k: &Self) -> Result<(Self, Self, Self), String> {
+        if u.ring.options().jets {
+            return u.ring.jet_sncndn(u, k).map_err(|e| e.to_string());
+        }
         u.sncndn(k).map_err(|e| e.to_string())
     }
     fn quarter_period_by_rule(k: &Self, complementary: bool) -> Result<Self, String> {

@@ -67,6 +67,9 @@ pub fn derivation(id: &str, printed: &str, p: &ProofInfo) -> String {
         &p.hypotheses.iter().map(|h| h.line()).collect::<Vec<_>>(),
     );
     match &p.reason {
+        None if p.method == crate::claims::verdict::ProofMethod::Ode => out.push_str(
+            "both sides solve the ODE with the same initial values: proved by the ODE method\n",
+        ),
         None => out.push_str("normal form of lhs - rhs: 0: proved\n"),
         Some(r) => out.push_str(&format!("not proved: {r}\n")),
     }

@@ -20,7 +20,8 @@ pub fn verdict_badge(v: Verdict) -> &'static str {
 /// A claim's verdict badge: as [`verdict_badge`], with a refutation certified at an
 /// exact point (proof method `witness`) marked `✗✗` apart from a sampled one, and a
 /// negation proved by such a point marked `proved (witness)`, a claim proved by exact
-/// power series marked `proved (power series)`, and an existence claim whose sampled
+/// power series marked `proved (power series)`, one proved by the ODE method marked
+/// `proved (ODE)`, and an existence claim whose sampled
 /// solutions are certified by the Krawczyk test marked `holds (roots certified at the
 /// samples)`.
 pub fn result_badge(r: &ClaimResult) -> &'static str {
@@ -32,6 +33,7 @@ pub fn result_badge(r: &ClaimResult) -> &'static str {
         Verdict::Proved if r.proof.method == ProofMethod::Series => {
             return "✓✓ proved (power series)";
         }
+        Verdict::Proved if r.proof.method == ProofMethod::Ode => return "✓✓ proved (ODE)",
         Verdict::Holds if r.proof.method == ProofMethod::Interval => {
             return "✓ holds (roots certified at the samples)";
         }

@@ -51,6 +51,11 @@ pub fn certified_line(results: &[ClaimResult]) -> String {
         by("proved", ProofMethod::Witness),
     );
     let refuted = by("refuted", ProofMethod::Witness);
+    let ode = by("proved", ProofMethod::Ode);
+    let by_ode = match ode {
+        0 => String::new(),
+        n => format!(", {n} proved by the uniqueness of the solution of an ODE"),
+    };
     let interval = by("holds", ProofMethod::Interval);
     let judged = results.len() - g("defined");
     let sampled_roots = match interval {
@@ -59,8 +64,8 @@ pub fn certified_line(results: &[ClaimResult]) -> String {
         n => format!("; of the verdicts that hold, {n} existence claims have the solution at every sample certified by a Krawczyk test (existence and uniqueness in a box), which certifies the samples, not the whole domain"),
     };
     format!(
-        "certified: {} of the {judged} verdicts that are not definitions ({symbolic} proved symbolically, {series} proved by exact power series (orders, and existence for small h), {negations} negations proved, and {refuted} claims refuted at a point where lhs − rhs or a power-series coefficient below the claimed order is certified nonzero); the other verdicts rest on sampling or, for the {} by construction, on the model's definitions{sampled_roots}",
-        symbolic + series + negations + refuted,
+        "certified: {} of the {judged} verdicts that are not definitions ({symbolic} proved symbolically, {series} proved by exact power series (orders, and existence for small h){by_ode}, {negations} negations proved, and {refuted} claims refuted at a point where lhs − rhs or a power-series coefficient below the claimed order is certified nonzero); the other verdicts rest on sampling or, for the {} by construction, on the model's definitions{sampled_roots}",
+        symbolic + series + ode + negations + refuted,
         g("construction"),
     )
 }

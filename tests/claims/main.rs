@@ -15,6 +15,7 @@ mod implicit_proofs;
 mod intervals;
 mod iterations;
 mod lemmas;
+mod ode_proofs;
 mod partials;
 mod perturbations;
 mod proof_hints;

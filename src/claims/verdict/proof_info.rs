@@ -14,6 +14,10 @@ pub enum ProofMethod {
     /// An asymptotic claim proved by exact power series: every coefficient below the
     /// claimed order has normal form 0.
     Series,
+    /// An identity in one variable proved by the uniqueness of the solution of an
+    /// algebraic ODE that both sides satisfy, with the same initial values
+    /// ([`crate::algebra::ode`]).
+    Ode,
     /// Existence certified at the sampled points by the Krawczyk test in ball arithmetic
     /// (one solution in a box around each sampled solution); not a proof on the whole
     /// domain, so the verdict stays `holds`.
@@ -110,7 +114,10 @@ impl ProofInfo {
 
     /// Was the claim proved?
     pub fn is_proved(&self) -> bool {
-        matches!(self.method, ProofMethod::Symbolic | ProofMethod::Series)
+        matches!(
+            self.method,
+            ProofMethod::Symbolic | ProofMethod::Series | ProofMethod::Ode
+        )
     }
 
     /// What the proof rests on, in a few words: "12 symbols, 4 relations, 3 assumptions"

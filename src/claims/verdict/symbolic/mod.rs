@@ -48,6 +48,7 @@ mod case;
 mod cases;
 mod existence_ift;
 mod linear;
+mod ode;
 mod scope;
 mod series;
 mod split;
@@ -131,7 +132,31 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
     }
     small_h(ctx, &mut info);
     info.ms = t0.elapsed().as_secs_f64() * 1e3;
-    with_lemmas(ctx, info)
+    with_lemmas(ctx, by_ode_if_not_proved(ctx, (lhs, rhs), info))
+}
+
+/// The ODE method ([`ode`]) where the normal form does not prove the claim and a side
+/// is a call of sn, cn or dn: its proof replaces the attempt, and otherwise its reason
+/// is added to the attempt's.
+fn by_ode_if_not_proved(ctx: Ctx<'_>, (lhs, rhs): (&PExpr, &PExpr), info: ProofInfo) -> ProofInfo {
+    use crate::claims::ast::ExprKind;
+    let jacobi = |p: &PExpr| matches!(&p.expr.kind, ExprKind::Call(name, _) if ["sn", "cn", "dn"].contains(&name.as_str()));
+    if info.is_proved() || info.witness.is_some() || !(jacobi(lhs) || jacobi(rhs)) {
+        return info;
+    }
+    let ms = info.ms;
+    let by_ode = ode::prove(ctx, lhs, rhs);
+    if by_ode.is_proved() {
+        return ProofInfo {
+            ms: ms + by_ode.ms,
+            ..by_ode
+        };
+    }
+    let reason = match (&info.reason, &by_ode.reason) {
+        (Some(a), Some(b)) => Some(format!("{a}; {b}")),
+        (a, _) => a.clone(),
+    };
+    ProofInfo { reason, ..info }
 }
 
 /// Marks the proof's sign hypotheses that hold for every small enough `h > 0`
@@ -329,10 +354,13 @@ pub fn judge(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, ev: &mut Evidence) {
             }
         },
         |info| {
-            format!(
+            match info.method {
+            ProofMethod::Ode => "both sides solve the same ODE with the same initial values at 0 (proved by the ODE method); holds numerically".to_string(),
+            _ => format!(
                 "the symbolic normal form of lhs − rhs is 0 ({}); holds numerically",
                 info.extent()
-            )
+            ),
+        }
         },
     );
 }
