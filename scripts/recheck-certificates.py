@@ -119,7 +119,7 @@ from sympy.polys.rings import ring  # noqa: E402
 assert GROUND_TYPES != "flint", "the recheck must not run on FLINT"
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from certcheck import binding, domain, formula  # noqa: E402
+from certcheck import binding, domain, formula, hypothesis  # noqa: E402
 
 
 class CheckError(Exception):
@@ -307,6 +307,7 @@ class Cert:
         self.assumes = []  # (kind, name, statement) of the `assume` lines
         self.conditions = []  # the `part` lines: the conditions of this part of the domain
         self.sign_lines = set()  # node ids with a proved sign > 0
+        self.hyp_signs = []  # (node, hypothesis, value, factor, its sign, stated sign or None): by a hypothesis
         self.ops = {}  # node id -> its operation, as tokens
         self.elliptic_nodes = []  # (sn|cn|dn, argument, modulus, value): the evaluator's
         self.charts = {}  # implicit map -> [(arguments' components, value's components)]
@@ -1141,16 +1142,7 @@ class Cert:
             self.need(self.kinds.get(rest.strip()) == "root", f"posroot of a non-root {rest[:40]}")
             self.posroots[rest.strip()] = None
         elif word == "sign":
-            t, rel, zero = rest.split()
-            self.need(rel in "<>" and zero == "0", f"bad sign line {rest[:40]}")
-            f = self.vals[t]
-            want = 1 if rel == ">" else -1
-            ok = self.frac_sign(f) == want or (self.alt_lines and self.alt_sign(f) == want)
-            self.need(ok, f"sign {t} {rel} 0 is not proved by the parametrization")
-            self.checked += 1
-            self.proved_signs.append((f, 1 if rel == ">" else -1))
-            if rel == ">":
-                self.sign_lines.add(t)
+            self.sign_line(rest)
         elif word == "claim":
             a, b = [s.strip() for s in rest.split("=")]
             self.need(self.eq(self.vals[a], self.vals[b]), f"claim {a} = {b} fails")
@@ -1172,6 +1164,36 @@ class Cert:
         else:
             raise CheckError(f"unknown statement '{word}'")
         return 0
+
+    def sign_line(self, rest):
+        """`sign tN > 0`, proved here by the parametrization; or, with evidence,
+        `sign tN > 0 [square (A)/(B)] [hypothesis LABEL factor (F)/(G)]`: tN is (A/B)**2
+        with A/B of a proved nonzero sign, and the value (or A/B) is the stated
+        hypothesis' value times F/G, whose sign is proved here.  The hypothesis'
+        value is checked once the claim is read (certcheck.hypothesis)."""
+        m = re.fullmatch(r"(t\d+) ([<>]) 0(?: square (.+?))?(?: hypothesis (\S+) factor (.+))?", rest.strip())
+        self.need(m is not None, f"bad sign line {rest[:40]}")
+        t, rel, square, label, factor = m.groups()
+        want = 1 if rel == ">" else -1
+        value = self.vals[t]
+        base = value if square is None else self.frac(square)
+        if square is not None:
+            self.need(want == 1 and self.eq(value, self.mul(base, base)),
+                      f"sign {t} {rel} 0: {t} is not the square of {square[:60]}")
+        if label is None:
+            got = self.frac_sign(base) or (self.alt_lines and self.alt_sign(base))
+            self.need(got == want or (square is not None and got in (1, -1)),
+                      f"sign {t} {rel} 0 is not proved by the parametrization")
+        else:
+            f = self.frac(factor)
+            r = self.rational(f)
+            fsign = (r > 0) - (r < 0) if r is not None else (self.frac_sign(f) or (self.alt_lines and self.alt_sign(f)))
+            self.need(fsign in (1, -1), f"sign {t} {rel} 0: the sign of the factor {factor[:60]} is not proved")
+            self.hyp_signs.append((t, label, base, f, fsign, None if square is not None else want))
+        self.checked += 1
+        self.proved_signs.append((value, want))
+        if want == 1:
+            self.sign_lines.add(t)
 
     def run(self, text, first_line=1):
         self.declare(text)
@@ -1421,7 +1443,7 @@ def check_text(name, text, catalogue=None):
         src, claim = {}, None
         if catalogue is not None:
             res.claim, claim, src = binding.bind(text, catalogue)
-        assumes, modes, charts = [], set(), [0, 0]
+        assumes, modes, charts, used = [], set(), [0, 0], {}
         for first, part in parts(text):
             cert = Cert(name)
             claims += cert.run(part, first)
@@ -1432,13 +1454,16 @@ def check_text(name, text, catalogue=None):
                 domain.check(cert, src)
                 modes.add(formula.check(cert, src, catalogue))
                 charts = [a + b for a, b in zip(charts, cert.chart_counts)]
-        res.premises = check_premises(text, claim, catalogue, assumes)
+            used.update(hypothesis.check(cert, src, catalogue, claim, binding.premises(text)))
+        res.premises = [(k, s, f"{used[s]['when']}: {st} (paper: {used[s]['paper']})" if s in used else st)
+                        for k, s, st in check_premises(text, claim, catalogue, assumes)]
         res.lemmas = [s for k, s, _ in res.premises if k == "lemma"]
         res.binding = "unbound" if catalogue is None else (
             "evaluated" if modes == {"evaluated"} else sorted(m for m in modes if m != "evaluated")[0])
-    except (CheckError, binding.BindError, formula.FormulaMismatch, domain.DomainMismatch, KeyError, ValueError,
-            IndexError) as e:
-        known = (CheckError, binding.BindError, formula.FormulaMismatch, domain.DomainMismatch)
+    except (CheckError, binding.BindError, formula.FormulaMismatch, domain.DomainMismatch,
+            hypothesis.HypothesisMismatch, KeyError, ValueError, IndexError) as e:
+        known = (CheckError, binding.BindError, formula.FormulaMismatch, domain.DomainMismatch,
+                 hypothesis.HypothesisMismatch)
         res.why = f"{type(e).__name__ + ' ' if not isinstance(e, known) else ''}{e}"
         return res
     res.charts = charts if catalogue is not None else [0, 0]

@@ -218,6 +218,53 @@ class Cases:
             self.expect(f"--self-test {cid}: each corruption is rejected",
                         recheck([], "--self-test", path), True, "self-test passes")
 
+    def hypothesis_signs(self):
+        """Lemma 2: a square-root branch decided by the stated hypothesis
+        omega-near-identity (tr omega > 1), and the corruptions of that evidence."""
+        t = self.tmp
+        lem = prove("sec8.lemma2.model", t)
+        self.expect("Lemma 2's branch by its stated hypothesis rechecks, printed as a premise with its condition",
+                    recheck([write(t, "l2.cert", lem)]), True,
+                    "premise [sign: hypothesis.omega-near-identity] tr(vm_omega(M, h, A, B, C)) > 1: ")
+        label = "hypothesis.omega-near-identity"
+        m = re.search(rf"^sign (t\d+) > 0 hypothesis {re.escape(label)} factor \(1\)/\(2\)$", lem, re.M)
+        line = m.group(0)
+        cases = [
+            ("the hypothesis deleted from the premises", without(lem, rf"premise sign {re.escape(label)}"),
+             "is no premise of the theorem"),
+            ("the hypothesis' condition altered in the certificate",
+             lem.replace('"when":"tr(vm_omega(M, h, A, B, C)) > 1"', '"when":"tr(vm_omega(M, h, A, B, C)) > 0"'),
+             "differs"),
+            ("the evidence naming a hypothesis the claim does not state",
+             lem.replace(line, line.replace(label, "hypothesis.W-small")), "the claim does not state hypothesis W-small"),
+            ("the evidence with a factor of the wrong sign", lem.replace(line, line.replace("(1)/(2)", "(-1)/(2)")),
+             "times the stated factor"),
+            ("the evidence stating the opposite sign", lem.replace(line, line.replace("> 0", "< 0")),
+             "square-root branch has no evidence"),
+            ("the evidence with a wrong factor", lem.replace(line, line.replace("(1)/(2)", "(1)/(3)")),
+             "times the stated factor"),
+            ("the evidence line deleted", lem.replace(line + "\n", ""), "square-root branch has no evidence"),
+            ("a square's quotient changed", re.sub(r"^(sign t\d+ > 0 square \()v1\*\*2", r"\g<1>2*v1**2", lem,
+                                                    count=1, flags=re.M), "is not the square of"),
+        ]
+        for what, text, why in cases:
+            self.expect(f"Lemma 2: {what} is rejected", recheck([write(t, "l2-bad.cert", text)]), False, why)
+        cat = changed_catalogue(t, set())
+        path = os.path.join(cat, "hypotheses.toml")
+        with open(path, encoding="utf-8") as fh:
+            text = fh.read()
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write(text.replace('when = "tr(vm_omega(M, h, A, B, C)) > 1"', 'when = "tr(vm_omega(M, h, A, B, C)) > 2"'))
+        self.expect("Lemma 2 against a catalogue whose hypothesis says tr omega > 2 is rejected",
+                    recheck([write(t, "l2.cert", lem)], "--catalogue", cat), False,
+                    "hypothesis.omega-near-identity differs")
+        both = lem.replace('"when":"tr(vm_omega(M, h, A, B, C)) > 1"', '"when":"tr(vm_omega(M, h, A, B, C)) > 2"')
+        self.expect("Lemma 2 with tr omega > 2 in both the catalogue and the certificate is rejected",
+                    recheck([write(t, "l2-both.cert", both)], "--catalogue", cat), False, "times the stated factor")
+        self.expect("a sign by a hypothesis is not accepted without the catalogue",
+                    recheck([os.path.join(DATA, "hypothesis-sign.cert")], "--unbound"), False,
+                    "checked against the catalogue only")
+
     def all_changed(self, cert_dir):
         certs = [f for f in os.listdir(cert_dir) if f.endswith(".cert")]
         cat = changed_catalogue(self.tmp)
@@ -234,6 +281,7 @@ def main(argv):
     with tempfile.TemporaryDirectory() as tmp:
         cases = Cases(tmp)
         cases.run()
+        cases.hypothesis_signs()
         if argv[1:2] == ["--all"] and len(argv) == 3:
             cases.all_changed(argv[2])
     print(f"{cases.count - len(cases.failures)} of {cases.count} recheck tests pass")
