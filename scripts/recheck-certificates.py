@@ -32,7 +32,15 @@ This script:
   * square roots: the stated root squared equals the radicand, and its branch has
     evidence: a proved `sign tN > 0` line, a nonnegative constant, a sign proved here from
     the parametrization, or c*r for a root symbol r whose branch is otherwise free (no
-    posroot, no sign symbol; the same r never needed with both signs);
+    posroot, no sign symbol; the same r never needed with both signs; c free of r, a
+    constant or of a sign proved here), or c*r with c > 0 and r a posroot;
+  * a sign decided by a hypothesis the claim states (`sign tN > 0 [square (A)/(B)]
+    hypothesis hypothesis.NAME factor (F)/(G)`): the value (or A/B, whose square it is)
+    is the hypothesis' value a - b, read from the catalogue's `when = "a > b"` and
+    evaluated here in the claim's scope, times F/G, whose sign is proved here; the
+    hypothesis must be the catalogue's table, stated by the claim and a premise, and the
+    sign it gives the one stated (module certcheck.hypothesis); its condition and the
+    paper's words are printed with the premise;
   * sn, cn, dn: recomputed from the base symbols with the addition theorems
     (DLMF 22.8.1-3), the quarter-period shifts (DLMF 22.4.3) and the half-period values,
     and the argument is checked to be the stated combination of the bases;
@@ -1244,29 +1252,38 @@ class Cert:
             if r is not None:
                 self.need(r >= 0, f"{tid}: the square root is stated as {r} < 0")
                 continue
-            if self.pring is not None:
+            # c * r first: its factor c is smaller than the value
+            one = self.single_root(val)
+            if one is None and self.pring is not None:
                 if self.frac_sign(val) == 1 or (self.alt_lines and self.alt_sign(val) == 1):
                     continue
-            one = self.single_root(val)
             self.need(one is not None, f"{tid}: the square-root branch has no evidence: its stated value "
                       f"{val.num.as_expr()}/{val.den.as_expr()} has no proved sign")
             name, s = one
+            if name in self.posroots and s == 1:
+                continue  # c * r with c > 0 and r the positive root
             self.need(name not in self.posroots and free.get(name, s) == s,
                       f"{tid}: the square-root branch needs {name} of sign {s}, which the certificate contradicts")
             free[name] = s
 
     def single_root(self, val):
-        """(root name, sign of c) when val = c * r with c a nonzero constant and r a root
-        symbol that is no sign symbol, else None."""
-        c = self.rational(Frac(self.ring.one, val.den))
-        if c is None or len(val.num.terms()) != 1:
-            return None
-        (mono, coef), = val.num.terms()
-        used = [i for i, e in enumerate(mono) if e]
-        if len(used) != 1 or mono[used[0]] != 1:
-            return None
-        name = next((n for n, i, a in self.roots if i == used[0] and a != self.ring.one), None)
-        return None if name is None else (name, 1 if coef * c > 0 else -1)
+        """(root name, sign of c) when val = c * r with r a root symbol that is no sign
+        symbol and c free of r, a nonzero constant or of a sign proved here, else None."""
+        for name, i, a in self.roots:
+            if a == self.ring.one or val.den.degree(i) > 0 or val.num.degree(i) != 1:
+                continue
+            x = self.ring.gens[i]
+            rest = val.num - val.num.coeff_wrt(x, 1) * x
+            if rest:
+                continue
+            c = Frac(val.num.coeff_wrt(x, 1), val.den)
+            r = self.rational(c)
+            s = ((r > 0) - (r < 0)) if r is not None else (
+                self.frac_sign(c) if self.pring is not None else None) or (
+                self.alt_lines and self.alt_sign(c)) or None
+            if s in (1, -1):
+                return name, s
+        return None
 
 
 PRIME = 2147483647  # 2**31 - 1

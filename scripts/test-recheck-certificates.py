@@ -265,6 +265,18 @@ class Cases:
                     recheck([os.path.join(DATA, "hypothesis-sign.cert")], "--unbound"), False,
                     "checked against the catalogue only")
 
+    def multiples_of_roots(self):
+        """A square root c * r (r a root symbol of one sign throughout, c of a sign proved
+        here): accepted, and rejected where r would need both signs or c has no proved sign."""
+        self.expect("sqrt(x^2 y) = x r with x > 0 proved by the parametrization is accepted",
+                    recheck([os.path.join(DATA, "sqrt-multiple.cert")], "--unbound"), True, "1 of 1")
+        self.expect("c * r where r would need both signs is rejected",
+                    recheck([os.path.join(DATA, "sqrt-multiple-contradiction.cert")], "--unbound"), False,
+                    "which the certificate contradicts")
+        self.expect("c * r where the sign of c is not proved is rejected",
+                    recheck([os.path.join(DATA, "sqrt-multiple-unsigned.cert")], "--unbound"), False,
+                    "square-root branch has no evidence")
+
     def all_changed(self, cert_dir):
         certs = [f for f in os.listdir(cert_dir) if f.endswith(".cert")]
         cat = changed_catalogue(self.tmp)
@@ -282,6 +294,7 @@ def main(argv):
         cases = Cases(tmp)
         cases.run()
         cases.hypothesis_signs()
+        cases.multiples_of_roots()
         if argv[1:2] == ["--all"] and len(argv) == 3:
             cases.all_changed(argv[2])
     print(f"{cases.count - len(cases.failures)} of {cases.count} recheck tests pass")

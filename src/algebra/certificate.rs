@@ -243,8 +243,8 @@ impl Ring {
         // the parametrization too
         let factors = (evidence.iter())
             .any(|e| e.factor.num.as_constant().is_none() || e.factor.den.as_constant().is_none());
-        let Some(par) = (self.inner.opts.positivity.as_ref())
-            .filter(|_| !signs.is_empty() || factors)
+        let Some(par) =
+            (self.inner.opts.positivity.as_ref()).filter(|_| !signs.is_empty() || factors)
         else {
             return hypothesis_sign_lines(&evidence, em);
         };

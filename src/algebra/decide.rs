@@ -124,7 +124,9 @@ impl Sym {
         };
         if self.ring.certifying() {
             let recorded = match &decision {
-                Decision::Hypothesis(_, label) => self.record_hypothesis_sign(1, label, Some(&base)),
+                Decision::Hypothesis(_, label) => {
+                    self.record_hypothesis_sign(1, label, Some(&base))
+                }
                 _ => false,
             };
             if !recorded {
@@ -280,12 +282,40 @@ impl Sym {
         None
     }
 
+    /// Adds a sign's evidence to the certificate's, once per value and hypothesis.
+    fn push_evidence(
+        &self,
+        node: std::sync::Arc<super::node::Node>,
+        sign: i32,
+        square: Option<(Poly, Poly)>,
+        label: &str,
+        factor: super::val::Val,
+    ) {
+        let mut st = self.ring.state();
+        let known = (st.signs.evidence.iter())
+            .any(|e| std::sync::Arc::ptr_eq(&e.node, &node) && e.label == label);
+        if !known {
+            st.signs.evidence.push(super::sign_state::SignEvidence {
+                node,
+                sign,
+                square,
+                label: label.to_string(),
+                factor,
+            });
+        }
+    }
+
     /// Records, for a certificate, the evidence that the stated hypothesis `label`
     /// decides this value's sign `sign`: the value (or `base`, whose square the value
     /// is) is the hypothesis' value times a factor of proved sign.  False where it cannot
     /// (a value without a derivation, a hypothesis of a part of the domain, a factor of
     /// no proved sign): the proof then has no certificate.
-    pub(crate) fn record_hypothesis_sign(&self, sign: i32, label: &str, base: Option<&Sym>) -> bool {
+    pub(crate) fn record_hypothesis_sign(
+        &self,
+        sign: i32,
+        label: &str,
+        base: Option<&Sym>,
+    ) -> bool {
         let Some(node) = self.node.clone() else {
             return false;
         };
@@ -293,14 +323,7 @@ impl Sym {
             return false;
         };
         let square = base.map(|b| (b.val.num.clone(), b.val.den.clone()));
-        let evidence = super::sign_state::SignEvidence {
-            node,
-            sign,
-            square,
-            label: label.to_string(),
-            factor,
-        };
-        self.ring.state().signs.evidence.push(evidence);
+        self.push_evidence(node, sign, square, label, factor);
         true
     }
 

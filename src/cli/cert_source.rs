@@ -246,6 +246,21 @@ impl RawCatalogue {
 /// A sign hypothesis that the prover finds to hold for every small enough `h` is still
 /// the catalogue's sign hypothesis, with the catalogue's statement: the recheck takes it
 /// as a premise as stated.
+///
+/// ```
+/// use eulertop::claims::verdict::HypothesisUse;
+/// use eulertop::claims::verdict::proof_info::SMALL_H_NOTE;
+/// use eulertop::cli::cert_source::premise_lines;
+/// let h = HypothesisUse {
+///     kind: "small h",
+///     statement: format!("tr omega > 1{SMALL_H_NOTE}"),
+///     source: "hypothesis.omega-near-identity".into(),
+/// };
+/// assert_eq!(
+///     premise_lines(&[h]),
+///     "premise sign hypothesis.omega-near-identity \"tr omega > 1\"\n"
+/// );
+/// ```
 pub fn premise_lines(hypotheses: &[HypothesisUse]) -> String {
     hypotheses
         .iter()

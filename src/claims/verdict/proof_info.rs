@@ -28,6 +28,11 @@ pub const NO_INTERVAL: &str = "no interval certificate: ";
 
 /// What a `small h` hypothesis use adds to the catalogue's statement: the sign
 /// condition holds for every small enough `h > 0`.
+///
+/// ```
+/// use eulertop::claims::verdict::proof_info::SMALL_H_NOTE;
+/// assert!(SMALL_H_NOTE.starts_with(" (holds for every small enough h > 0"));
+/// ```
 pub const SMALL_H_NOTE: &str = " (holds for every small enough h > 0: the leading coefficient of its power series in h is proved positive on the domain)";
 
 /// A fact a proof rests on besides algebra.
