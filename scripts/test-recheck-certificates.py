@@ -149,6 +149,11 @@ class Cases:
         self.expect("a chart parameter with a false derivative is rejected",
                     recheck([os.path.join(DATA, "param-derivative.cert")], "--unbound"), False,
                     "chart parameter y")
+        self.bound()
+
+    def bound(self):
+        """Certificates the prover writes, bound to the catalogue, and their corruptions."""
+        t = self.tmp
         et = prove("sec2.ET-v.corrected", t)
         self.expect("a certificate as written rechecks, its formulas evaluated",
                     recheck([write(t, "et.cert", et)]), True, "formulas: evaluated")
@@ -194,6 +199,11 @@ class Cases:
                     recheck([write(t, "m-stated.cert", master.replace(
                         "premise branch hypothesis.branch-delta1", "premise branch hypothesis.branch-delta2"))]),
                     False, "the claim does not state hypothesis branch-delta2")
+        self.charts_and_lemmas(et)
+
+    def charts_and_lemmas(self, et):
+        """Charts of implicit maps, lemmas, and the self-test corruptions."""
+        t = self.tmp
         step = prove("sec3.int.g2", t)
         self.expect("a chart of an implicit map is verified against the map's equations in the catalogue",
                     recheck([write(t, "int.cert", step)]), True, "equation(s) of the catalogue verified")
