@@ -23,7 +23,7 @@ command -v coqc >/dev/null 2>&1 || { echo "check-coq: coqc missing (scripts/ensu
 [ -x "$bin" ] || cargo build --release --quiet
 rm -rf "$out" && mkdir -p "$out"
 SECONDS=0
-# the families (Lemma 2, sec8.lemma2.model, has no certificate: see README.md)
+# the families
 families="bg.dlmf-22.8.1.sn-addition bg.dlmf-22.8.2.cn-addition bg.dlmf-22.8.3.dn-addition
 sec5.ws.w1-w3 sec5.ws.w1-w2 sec5.ident1.123 sec5.ident1.132 sec5.ident1.213 sec5.ident1.231
 sec5.ident1.312 sec5.ident1.321 sec5.ident2.123.corrected sec5.ident2.132.corrected

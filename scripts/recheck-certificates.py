@@ -32,7 +32,15 @@ This script:
   * square roots: the stated root squared equals the radicand, and its branch has
     evidence: a proved `sign tN > 0` line, a nonnegative constant, a sign proved here from
     the parametrization, or c*r for a root symbol r whose branch is otherwise free (no
-    posroot, no sign symbol; the same r never needed with both signs);
+    posroot, no sign symbol; the same r never needed with both signs; c free of r, a
+    constant or of a sign proved here), or c*r with c > 0 and r a posroot;
+  * a sign decided by a hypothesis the claim states (`sign tN > 0 [square (A)/(B)]
+    hypothesis hypothesis.NAME factor (F)/(G)`): the value (or A/B, whose square it is)
+    is the hypothesis' value a - b, read from the catalogue's `when = "a > b"` and
+    evaluated here in the claim's scope, times F/G, whose sign is proved here; the
+    hypothesis must be the catalogue's table, stated by the claim and a premise, and the
+    sign it gives the one stated (module certcheck.hypothesis); its condition and the
+    paper's words are printed with the premise;
   * sn, cn, dn: recomputed from the base symbols with the addition theorems
     (DLMF 22.8.1-3), the quarter-period shifts (DLMF 22.4.3) and the half-period values,
     and the argument is checked to be the stated combination of the bases;
@@ -119,7 +127,7 @@ from sympy.polys.rings import ring  # noqa: E402
 assert GROUND_TYPES != "flint", "the recheck must not run on FLINT"
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from certcheck import binding, domain, formula  # noqa: E402
+from certcheck import binding, domain, formula, hypothesis  # noqa: E402
 
 
 class CheckError(Exception):
@@ -307,6 +315,7 @@ class Cert:
         self.assumes = []  # (kind, name, statement) of the `assume` lines
         self.conditions = []  # the `part` lines: the conditions of this part of the domain
         self.sign_lines = set()  # node ids with a proved sign > 0
+        self.hyp_signs = []  # (node, hypothesis, value, factor, its sign, stated sign or None): by a hypothesis
         self.ops = {}  # node id -> its operation, as tokens
         self.elliptic_nodes = []  # (sn|cn|dn, argument, modulus, value): the evaluator's
         self.charts = {}  # implicit map -> [(arguments' components, value's components)]
@@ -1141,16 +1150,7 @@ class Cert:
             self.need(self.kinds.get(rest.strip()) == "root", f"posroot of a non-root {rest[:40]}")
             self.posroots[rest.strip()] = None
         elif word == "sign":
-            t, rel, zero = rest.split()
-            self.need(rel in "<>" and zero == "0", f"bad sign line {rest[:40]}")
-            f = self.vals[t]
-            want = 1 if rel == ">" else -1
-            ok = self.frac_sign(f) == want or (self.alt_lines and self.alt_sign(f) == want)
-            self.need(ok, f"sign {t} {rel} 0 is not proved by the parametrization")
-            self.checked += 1
-            self.proved_signs.append((f, 1 if rel == ">" else -1))
-            if rel == ">":
-                self.sign_lines.add(t)
+            self.sign_line(rest)
         elif word == "claim":
             a, b = [s.strip() for s in rest.split("=")]
             self.need(self.eq(self.vals[a], self.vals[b]), f"claim {a} = {b} fails")
@@ -1172,6 +1172,36 @@ class Cert:
         else:
             raise CheckError(f"unknown statement '{word}'")
         return 0
+
+    def sign_line(self, rest):
+        """`sign tN > 0`, proved here by the parametrization; or, with evidence,
+        `sign tN > 0 [square (A)/(B)] [hypothesis LABEL factor (F)/(G)]`: tN is (A/B)**2
+        with A/B of a proved nonzero sign, and the value (or A/B) is the stated
+        hypothesis' value times F/G, whose sign is proved here.  The hypothesis'
+        value is checked once the claim is read (certcheck.hypothesis)."""
+        m = re.fullmatch(r"(t\d+) ([<>]) 0(?: square (.+?))?(?: hypothesis (\S+) factor (.+))?", rest.strip())
+        self.need(m is not None, f"bad sign line {rest[:40]}")
+        t, rel, square, label, factor = m.groups()
+        want = 1 if rel == ">" else -1
+        value = self.vals[t]
+        base = value if square is None else self.frac(square)
+        if square is not None:
+            self.need(want == 1 and self.eq(value, self.mul(base, base)),
+                      f"sign {t} {rel} 0: {t} is not the square of {square[:60]}")
+        if label is None:
+            got = self.frac_sign(base) or (self.alt_lines and self.alt_sign(base))
+            self.need(got == want or (square is not None and got in (1, -1)),
+                      f"sign {t} {rel} 0 is not proved by the parametrization")
+        else:
+            f = self.frac(factor)
+            r = self.rational(f)
+            fsign = (r > 0) - (r < 0) if r is not None else (self.frac_sign(f) or (self.alt_lines and self.alt_sign(f)))
+            self.need(fsign in (1, -1), f"sign {t} {rel} 0: the sign of the factor {factor[:60]} is not proved")
+            self.hyp_signs.append((t, label, base, f, fsign, None if square is not None else want))
+        self.checked += 1
+        self.proved_signs.append((value, want))
+        if want == 1:
+            self.sign_lines.add(t)
 
     def run(self, text, first_line=1):
         self.declare(text)
@@ -1222,29 +1252,38 @@ class Cert:
             if r is not None:
                 self.need(r >= 0, f"{tid}: the square root is stated as {r} < 0")
                 continue
-            if self.pring is not None:
+            # c * r first: its factor c is smaller than the value
+            one = self.single_root(val)
+            if one is None and self.pring is not None:
                 if self.frac_sign(val) == 1 or (self.alt_lines and self.alt_sign(val) == 1):
                     continue
-            one = self.single_root(val)
             self.need(one is not None, f"{tid}: the square-root branch has no evidence: its stated value "
                       f"{val.num.as_expr()}/{val.den.as_expr()} has no proved sign")
             name, s = one
+            if name in self.posroots and s == 1:
+                continue  # c * r with c > 0 and r the positive root
             self.need(name not in self.posroots and free.get(name, s) == s,
                       f"{tid}: the square-root branch needs {name} of sign {s}, which the certificate contradicts")
             free[name] = s
 
     def single_root(self, val):
-        """(root name, sign of c) when val = c * r with c a nonzero constant and r a root
-        symbol that is no sign symbol, else None."""
-        c = self.rational(Frac(self.ring.one, val.den))
-        if c is None or len(val.num.terms()) != 1:
-            return None
-        (mono, coef), = val.num.terms()
-        used = [i for i, e in enumerate(mono) if e]
-        if len(used) != 1 or mono[used[0]] != 1:
-            return None
-        name = next((n for n, i, a in self.roots if i == used[0] and a != self.ring.one), None)
-        return None if name is None else (name, 1 if coef * c > 0 else -1)
+        """(root name, sign of c) when val = c * r with r a root symbol that is no sign
+        symbol and c free of r, a nonzero constant or of a sign proved here, else None."""
+        for name, i, a in self.roots:
+            if a == self.ring.one or val.den.degree(i) > 0 or val.num.degree(i) != 1:
+                continue
+            x = self.ring.gens[i]
+            rest = val.num - val.num.coeff_wrt(x, 1) * x
+            if rest:
+                continue
+            c = Frac(val.num.coeff_wrt(x, 1), val.den)
+            r = self.rational(c)
+            s = ((r > 0) - (r < 0)) if r is not None else (
+                self.frac_sign(c) if self.pring is not None else None) or (
+                self.alt_lines and self.alt_sign(c)) or None
+            if s in (1, -1):
+                return name, s
+        return None
 
 
 PRIME = 2147483647  # 2**31 - 1
@@ -1421,7 +1460,7 @@ def check_text(name, text, catalogue=None):
         src, claim = {}, None
         if catalogue is not None:
             res.claim, claim, src = binding.bind(text, catalogue)
-        assumes, modes, charts = [], set(), [0, 0]
+        assumes, modes, charts, used = [], set(), [0, 0], {}
         for first, part in parts(text):
             cert = Cert(name)
             claims += cert.run(part, first)
@@ -1432,13 +1471,16 @@ def check_text(name, text, catalogue=None):
                 domain.check(cert, src)
                 modes.add(formula.check(cert, src, catalogue))
                 charts = [a + b for a, b in zip(charts, cert.chart_counts)]
-        res.premises = check_premises(text, claim, catalogue, assumes)
+            used.update(hypothesis.check(cert, src, catalogue, claim, binding.premises(text)))
+        res.premises = [(k, s, f"{used[s]['when']}: {st} (paper: {used[s]['paper']})" if s in used else st)
+                        for k, s, st in check_premises(text, claim, catalogue, assumes)]
         res.lemmas = [s for k, s, _ in res.premises if k == "lemma"]
         res.binding = "unbound" if catalogue is None else (
             "evaluated" if modes == {"evaluated"} else sorted(m for m in modes if m != "evaluated")[0])
-    except (CheckError, binding.BindError, formula.FormulaMismatch, domain.DomainMismatch, KeyError, ValueError,
-            IndexError) as e:
-        known = (CheckError, binding.BindError, formula.FormulaMismatch, domain.DomainMismatch)
+    except (CheckError, binding.BindError, formula.FormulaMismatch, domain.DomainMismatch,
+            hypothesis.HypothesisMismatch, KeyError, ValueError, IndexError) as e:
+        known = (CheckError, binding.BindError, formula.FormulaMismatch, domain.DomainMismatch,
+                 hypothesis.HypothesisMismatch)
         res.why = f"{type(e).__name__ + ' ' if not isinstance(e, known) else ''}{e}"
         return res
     res.charts = charts if catalogue is not None else [0, 0]

@@ -149,6 +149,11 @@ class Cases:
         self.expect("a chart parameter with a false derivative is rejected",
                     recheck([os.path.join(DATA, "param-derivative.cert")], "--unbound"), False,
                     "chart parameter y")
+        self.bound()
+
+    def bound(self):
+        """Certificates the prover writes, bound to the catalogue, and their corruptions."""
+        t = self.tmp
         et = prove("sec2.ET-v.corrected", t)
         self.expect("a certificate as written rechecks, its formulas evaluated",
                     recheck([write(t, "et.cert", et)]), True, "formulas: evaluated")
@@ -194,6 +199,11 @@ class Cases:
                     recheck([write(t, "m-stated.cert", master.replace(
                         "premise branch hypothesis.branch-delta1", "premise branch hypothesis.branch-delta2"))]),
                     False, "the claim does not state hypothesis branch-delta2")
+        self.charts_and_lemmas(et)
+
+    def charts_and_lemmas(self, et):
+        """Charts of implicit maps, lemmas, and the self-test corruptions."""
+        t = self.tmp
         step = prove("sec3.int.g2", t)
         self.expect("a chart of an implicit map is verified against the map's equations in the catalogue",
                     recheck([write(t, "int.cert", step)]), True, "equation(s) of the catalogue verified")
@@ -218,6 +228,65 @@ class Cases:
             self.expect(f"--self-test {cid}: each corruption is rejected",
                         recheck([], "--self-test", path), True, "self-test passes")
 
+    def hypothesis_signs(self):
+        """Lemma 2: a square-root branch decided by the stated hypothesis
+        omega-near-identity (tr omega > 1), and the corruptions of that evidence."""
+        t = self.tmp
+        lem = prove("sec8.lemma2.model", t)
+        self.expect("Lemma 2's branch by its stated hypothesis rechecks, printed as a premise with its condition",
+                    recheck([write(t, "l2.cert", lem)]), True,
+                    "premise [sign: hypothesis.omega-near-identity] tr(vm_omega(M, h, A, B, C)) > 1: ")
+        label = "hypothesis.omega-near-identity"
+        m = re.search(rf"^sign (t\d+) > 0 hypothesis {re.escape(label)} factor \(1\)/\(2\)$", lem, re.M)
+        line = m.group(0)
+        cases = [
+            ("the hypothesis deleted from the premises", without(lem, rf"premise sign {re.escape(label)}"),
+             "is no premise of the theorem"),
+            ("the hypothesis' condition altered in the certificate",
+             lem.replace('"when":"tr(vm_omega(M, h, A, B, C)) > 1"', '"when":"tr(vm_omega(M, h, A, B, C)) > 0"'),
+             "differs"),
+            ("the evidence naming a hypothesis the claim does not state",
+             lem.replace(line, line.replace(label, "hypothesis.W-small")), "the claim does not state hypothesis W-small"),
+            ("the evidence with a factor of the wrong sign", lem.replace(line, line.replace("(1)/(2)", "(-1)/(2)")),
+             "times the stated factor"),
+            ("the evidence stating the opposite sign", lem.replace(line, line.replace("> 0", "< 0")),
+             "square-root branch has no evidence"),
+            ("the evidence with a wrong factor", lem.replace(line, line.replace("(1)/(2)", "(1)/(3)")),
+             "times the stated factor"),
+            ("the evidence line deleted", lem.replace(line + "\n", ""), "square-root branch has no evidence"),
+            ("a square's quotient changed", re.sub(r"^(sign t\d+ > 0 square \()v1\*\*2", r"\g<1>2*v1**2", lem,
+                                                    count=1, flags=re.M), "is not the square of"),
+        ]
+        for what, text, why in cases:
+            self.expect(f"Lemma 2: {what} is rejected", recheck([write(t, "l2-bad.cert", text)]), False, why)
+        cat = changed_catalogue(t, set())
+        path = os.path.join(cat, "hypotheses.toml")
+        with open(path, encoding="utf-8") as fh:
+            text = fh.read()
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write(text.replace('when = "tr(vm_omega(M, h, A, B, C)) > 1"', 'when = "tr(vm_omega(M, h, A, B, C)) > 2"'))
+        self.expect("Lemma 2 against a catalogue whose hypothesis says tr omega > 2 is rejected",
+                    recheck([write(t, "l2.cert", lem)], "--catalogue", cat), False,
+                    "hypothesis.omega-near-identity differs")
+        both = lem.replace('"when":"tr(vm_omega(M, h, A, B, C)) > 1"', '"when":"tr(vm_omega(M, h, A, B, C)) > 2"')
+        self.expect("Lemma 2 with tr omega > 2 in both the catalogue and the certificate is rejected",
+                    recheck([write(t, "l2-both.cert", both)], "--catalogue", cat), False, "times the stated factor")
+        self.expect("a sign by a hypothesis is not accepted without the catalogue",
+                    recheck([os.path.join(DATA, "hypothesis-sign.cert")], "--unbound"), False,
+                    "checked against the catalogue only")
+
+    def multiples_of_roots(self):
+        """A square root c * r (r a root symbol of one sign throughout, c of a sign proved
+        here): accepted, and rejected where r would need both signs or c has no proved sign."""
+        self.expect("sqrt(x^2 y) = x r with x > 0 proved by the parametrization is accepted",
+                    recheck([os.path.join(DATA, "sqrt-multiple.cert")], "--unbound"), True, "1 of 1")
+        self.expect("c * r where r would need both signs is rejected",
+                    recheck([os.path.join(DATA, "sqrt-multiple-contradiction.cert")], "--unbound"), False,
+                    "which the certificate contradicts")
+        self.expect("c * r where the sign of c is not proved is rejected",
+                    recheck([os.path.join(DATA, "sqrt-multiple-unsigned.cert")], "--unbound"), False,
+                    "square-root branch has no evidence")
+
     def all_changed(self, cert_dir):
         certs = [f for f in os.listdir(cert_dir) if f.endswith(".cert")]
         cat = changed_catalogue(self.tmp)
@@ -234,6 +303,8 @@ def main(argv):
     with tempfile.TemporaryDirectory() as tmp:
         cases = Cases(tmp)
         cases.run()
+        cases.hypothesis_signs()
+        cases.multiples_of_roots()
         if argv[1:2] == ["--all"] and len(argv) == 3:
             cases.all_changed(argv[2])
     print(f"{cases.count - len(cases.failures)} of {cases.count} recheck tests pass")

@@ -102,11 +102,18 @@ def chart_variables(cert, src, env):
     return env
 
 
-def sides(cert, src):
-    """The components of (lhs, rhs) of the claim, evaluated here."""
+def claim_scope(cert, src):
+    """(evaluator, environment) of the claim: its variables as the certificate's
+    symbols and its `let` names bound, the definitions its formulas call."""
     ev = Evaluator(cert, [v for k, v in sorted(src.items()) if k.startswith("define.")])
     env = environment(cert, src)
     ev.let(src.get("claim.let"), env, own=own_symbols(cert, src, env))
+    return ev, env
+
+
+def sides(cert, src):
+    """The components of (lhs, rhs) of the claim, evaluated here."""
+    ev, env = claim_scope(cert, src)
     kind = src.get("claim.kind")
     if kind == "identity":
         lhs = ev.eval(Parser(src["claim.lhs"]).whole(), env)

@@ -16,6 +16,8 @@
 //! alt param t2_A positive          # the same for a second parametrization of the domain
 //! posroot r_1                      # a root whose radicand the checker proves positive
 //! sign t7 > 0                      # a sign the checker proves with a parametrization
+//! sign t8 > 0 hypothesis hypothesis.H factor (1)/(2)   # t8 = (H's value)·(1/2): by H
+//! sign t9 > 0 square (a)/(b) hypothesis hypothesis.H factor (F)/(G)  # t9 = (a/b)²
 //! node t3 = t1 * t2 -> (N)/(D)     # an operation and, where it reduces, its normal form
 //! node t9 = sqrt t8 -> +1 (N)/(D)  # a square root: nf² = t8; the sign is an assumption
 //! node t12 = sn b_1:2,b_2:-1 K:1 iKp:0 k=(…) -> …  # sn(2b₁ − b₂ + K/2) by DLMF 22.8, 22.4, 22.5
@@ -237,14 +239,15 @@ impl Ring {
                 .collect();
             (st.signs.proved_signs.clone(), vars, roots)
         };
-        let Some(par) = self
-            .inner
-            .opts
-            .positivity
-            .as_ref()
-            .filter(|_| !signs.is_empty())
+        let evidence = self.state().signs.evidence.clone();
+        // a factor of a hypothesis' value that is no constant has its sign proved with
+        // the parametrization too
+        let factors = (evidence.iter())
+            .any(|e| e.factor.num.as_constant().is_none() || e.factor.den.as_constant().is_none());
+        let Some(par) =
+            (self.inner.opts.positivity.as_ref()).filter(|_| !signs.is_empty() || factors)
         else {
-            return String::new();
+            return hypothesis_sign_lines(&evidence, em);
         };
         let mut out = par.certificate_lines(&vars);
         for r in roots {
@@ -256,6 +259,7 @@ impl Ring {
                 let _ = writeln!(out, "sign t{id} {} 0", if s > 0 { ">" } else { "<" });
             }
         }
+        out.push_str(&hypothesis_sign_lines(&evidence, em));
         out
     }
 
@@ -378,6 +382,30 @@ impl Ring {
         }
         out
     }
+}
+
+/// The `sign tN > 0 [square (A)/(B)] hypothesis LABEL factor (F)/(G)` lines: a sign a
+/// stated hypothesis decides, with its evidence (the value, or the quotient `A/B` whose
+/// square it is, equals the hypothesis' value times `F/G`, whose sign is proved).
+fn hypothesis_sign_lines(
+    evidence: &[super::sign_state::SignEvidence],
+    em: &mut Emitter<'_>,
+) -> String {
+    let mut out = String::new();
+    for e in evidence {
+        let id = em.visit(&e.node);
+        let square = (e.square.as_ref())
+            .map(|(a, b)| format!(" square {}", nf_text(a, b, em.names)))
+            .unwrap_or_default();
+        let _ = writeln!(
+            out,
+            "sign t{id} {} 0{square} hypothesis {} factor {}",
+            if e.sign > 0 { ">" } else { "<" },
+            e.label,
+            nf_text(&e.factor.num, &e.factor.den, em.names)
+        );
+    }
+    out
 }
 
 /// The lines of elliptic table `ti`: its bases and, where used, its quarter-period data.

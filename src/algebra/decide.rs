@@ -123,8 +123,16 @@ impl Sym {
             _ => return None,
         };
         if self.ring.certifying() {
-            self.ring
-                .mark_uncertified("the sign of a square a²/b² from the sign of a/b");
+            let recorded = match &decision {
+                Decision::Hypothesis(_, label) => {
+                    self.record_hypothesis_sign(1, label, Some(&base))
+                }
+                _ => false,
+            };
+            if !recorded {
+                self.ring
+                    .mark_uncertified("the sign of a square a²/b² from the sign of a/b");
+            }
         }
         Some(decision)
     }
@@ -272,6 +280,69 @@ impl Sym {
             }
         }
         None
+    }
+
+    /// Adds a sign's evidence to the certificate's, once per value and hypothesis.
+    fn push_evidence(
+        &self,
+        node: std::sync::Arc<super::node::Node>,
+        sign: i32,
+        square: Option<(Poly, Poly)>,
+        label: &str,
+        factor: super::val::Val,
+    ) {
+        let mut st = self.ring.state();
+        let known = (st.signs.evidence.iter())
+            .any(|e| std::sync::Arc::ptr_eq(&e.node, &node) && e.label == label);
+        if !known {
+            st.signs.evidence.push(super::sign_state::SignEvidence {
+                node,
+                sign,
+                square,
+                label: label.to_string(),
+                factor,
+            });
+        }
+    }
+
+    /// Records, for a certificate, the evidence that the stated hypothesis `label`
+    /// decides this value's sign `sign`: the value (or `base`, whose square the value
+    /// is) is the hypothesis' value times a factor of proved sign.  False where it cannot
+    /// (a value without a derivation, a hypothesis of a part of the domain, a factor of
+    /// no proved sign): the proof then has no certificate.
+    pub(crate) fn record_hypothesis_sign(
+        &self,
+        sign: i32,
+        label: &str,
+        base: Option<&Sym>,
+    ) -> bool {
+        let Some(node) = self.node.clone() else {
+            return false;
+        };
+        let Some(factor) = base.unwrap_or(self).hypothesis_factor(label) else {
+            return false;
+        };
+        let square = base.map(|b| (b.val.num.clone(), b.val.den.clone()));
+        self.push_evidence(node, sign, square, label, factor);
+        true
+    }
+
+    /// `self / h` for the value `h` of the stated hypothesis `label`, where that factor
+    /// is a nonzero rational number or has a sign proved with the parametrization of the
+    /// domain (which a recheck proves again).
+    fn hypothesis_factor(&self, label: &str) -> Option<super::val::Val> {
+        let stated = self.ring.state().signs.stated.clone();
+        let (val, _, _) = stated.into_iter().find(|(_, _, l)| l == label)?;
+        let h = Sym::from_val(&self.ring, val, None);
+        if h.is_exact_zero() {
+            return None;
+        }
+        let q = self.try_div(&h).ok()?;
+        let signed = match q.as_rational() {
+            Some(r) => r != 0,
+            None => q.sign_of_recorded_factor().is_some(),
+        };
+        signed.then(|| (*q.val).clone())
     }
 
     /// The proved sign of `self / h`, or of `self · h` (the same sign where `h ≠ 0`, as

@@ -70,6 +70,13 @@ impl Sym {
         Some(s)
     }
 
+    /// The sign of a factor a certificate records with its value (the factor of a
+    /// hypothesis' value), proved with the parametrization of the domain, which the
+    /// recheck repeats: no note, and the certificate kept.
+    pub(crate) fn sign_of_recorded_factor(&self) -> Option<i32> {
+        self.sign_by_parametrization(&self.ring.domain())
+    }
+
     /// [`Sym::proved_sign`] as a test that leaves no trace in the proof (no proved sign
     /// recorded, the certificate kept): for checks whose result enters the proof only
     /// through a later decision, which records itself.

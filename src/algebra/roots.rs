@@ -520,8 +520,8 @@ impl Sym {
         let ring = &self.ring;
         match self.decision() {
             Decision::Proved(1) | Decision::Definition(1) => return Ok(()),
-            Decision::Hypothesis(1, _) => {
-                if ring.certifying() {
+            Decision::Hypothesis(1, label) => {
+                if ring.certifying() && !self.record_hypothesis_sign(1, &label, None) {
                     ring.mark_uncertified(
                         "a square-root branch decided by a stated hypothesis, which a certificate records only as a premise",
                     );

@@ -46,6 +46,19 @@ pub(crate) struct Folded {
     pub var: Option<(usize, i32)>,
 }
 
+/// The evidence of a sign a stated hypothesis decides, as a certificate records it: the
+/// value (by its derivation), its sign, where the value is a square `(a/b)²` the quotient
+/// `a/b` whose sign the hypothesis decides, and the hypothesis' label with the factor
+/// `f` such that the value (or `a/b`) is the hypothesis' value times `f`.
+#[derive(Clone, Debug)]
+pub(crate) struct SignEvidence {
+    pub node: Arc<Node>,
+    pub sign: i32,
+    pub square: Option<(Poly, Poly)>,
+    pub label: String,
+    pub factor: Val,
+}
+
 /// The sign-only state of a ring (see the module).
 #[derive(Default)]
 pub(crate) struct SignState {
@@ -67,4 +80,6 @@ pub(crate) struct SignState {
     pub facts: Vec<(Val, String)>,
     /// Opaque symbols declared real (by field-variable index).
     pub real_opaque: Vec<usize>,
+    /// The signs decided by a stated hypothesis, with their evidence (for certificates).
+    pub evidence: Vec<SignEvidence>,
 }

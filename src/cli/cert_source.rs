@@ -18,7 +18,7 @@
 //! symbols, where its own evaluator covers them.
 
 use super::CliError;
-use crate::claims::verdict::proof_info::HypothesisUse;
+use crate::claims::verdict::proof_info::{HypothesisUse, SMALL_H_NOTE};
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
@@ -242,12 +242,35 @@ impl RawCatalogue {
 ///     "premise lemma sec7.master12.step.up \"the step's value\"\n"
 /// );
 /// ```
+///
+/// A sign hypothesis that the prover finds to hold for every small enough `h` is still
+/// the catalogue's sign hypothesis, with the catalogue's statement: the recheck takes it
+/// as a premise as stated.
+///
+/// ```
+/// use eulertop::claims::verdict::HypothesisUse;
+/// use eulertop::claims::verdict::proof_info::SMALL_H_NOTE;
+/// use eulertop::cli::cert_source::premise_lines;
+/// let h = HypothesisUse {
+///     kind: "small h",
+///     statement: format!("tr omega > 1{SMALL_H_NOTE}"),
+///     source: "hypothesis.omega-near-identity".into(),
+/// };
+/// assert_eq!(
+///     premise_lines(&[h]),
+///     "premise sign hypothesis.omega-near-identity \"tr omega > 1\"\n"
+/// );
+/// ```
 pub fn premise_lines(hypotheses: &[HypothesisUse]) -> String {
     hypotheses
         .iter()
         .map(|h| {
-            let statement = serde_json::to_string(&h.statement).unwrap_or_default();
-            format!("premise {} {} {statement}\n", h.kind, h.source)
+            let (kind, text) = match h.kind {
+                "small h" => ("sign", h.statement.trim_end_matches(SMALL_H_NOTE)),
+                k => (k, h.statement.as_str()),
+            };
+            let statement = serde_json::to_string(text).unwrap_or_default();
+            format!("premise {kind} {} {statement}\n", h.source)
         })
         .collect()
 }

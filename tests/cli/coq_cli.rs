@@ -71,15 +71,27 @@ fn an_addition_theorem_instance_is_a_named_hypothesis() {
 
 #[test]
 fn no_script_for_a_claim_without_a_certificate_and_an_older_one_is_removed() {
-    let path = temp("lemma2.v");
+    let path = temp("period.v");
     std::fs::write(&path, "stale").unwrap();
     let p = path.to_str().unwrap();
-    let (code, _, err) = run(&["prove", "sec8.lemma2.model", "--coq", p]);
+    let (code, _, err) = run(&["prove", "bg.dlmf-22.4.period", "--coq", p]);
     assert_eq!(code, 2, "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(err.contains("no Coq script written"), "{err}");
     assert!(err.contains("was removed"), "{err}");
     assert!(!path.exists(), "a stale script was left");
+}
+
+#[test]
+fn lemma_2_has_a_script_with_its_branch_as_a_hypothesis() {
+    let path = temp("lemma2.v");
+    let p = path.to_str().unwrap();
+    let (code, _, err) = run(&["prove", "sec8.lemma2.model", "--coq", p]);
+    assert_eq!(code, 0, "{err}");
+    let coq = std::fs::read_to_string(&path).expect("script written");
+    let _ = std::fs::remove_file(&path);
+    assert!(coq.contains("Hypothesis br_"), "{coq}");
+    assert!(coq.contains("hypothesis.omega-near-identity"), "{coq}");
 }
 
 #[test]

@@ -30,11 +30,22 @@ pub enum ProofMethod {
 /// the Krawczyk test begins.
 pub const NO_INTERVAL: &str = "no interval certificate: ";
 
+/// What a `small h` hypothesis use adds to the catalogue's statement: the sign
+/// condition holds for every small enough `h > 0`.
+///
+/// ```
+/// use eulertop::claims::verdict::proof_info::SMALL_H_NOTE;
+/// assert!(SMALL_H_NOTE.starts_with(" (holds for every small enough h > 0"));
+/// ```
+pub const SMALL_H_NOTE: &str = " (holds for every small enough h > 0: the leading coefficient of its power series in h is proved positive on the domain)";
+
 /// A fact a proof rests on besides algebra.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct HypothesisUse {
     /// `branch` (the solution branch of an implicit map), `sign` (a sign condition the
-    /// claim states) or `lemma` (a step's value proved by another claim).
+    /// claim states), `small h` (one that holds for every small enough `h > 0`, its
+    /// statement followed by [`SMALL_H_NOTE`]) or `lemma` (a step's value proved by
+    /// another claim).
     pub kind: &'static str,
     /// What it says.
     pub statement: String,

@@ -171,10 +171,7 @@ fn small_h(ctx: Ctx<'_>, info: &mut ProofInfo) {
         let name = h.source.trim_start_matches("hypothesis.");
         if h.kind == "sign" && small.iter().any(|s| s == name) {
             h.kind = "small h";
-            h.statement = format!(
-                "{} (holds for every small enough h > 0: the leading coefficient of its power series in h is proved positive on the domain)",
-                h.statement
-            );
+            h.statement = format!("{}{}", h.statement, super::proof_info::SMALL_H_NOTE);
         }
     }
 }
