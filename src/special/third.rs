@@ -3,7 +3,7 @@
 
 use super::agm::complementary_sqr;
 use super::carlson::{rf, rj};
-use super::dd::Dd;
+use super::dd::{Dd, with_fma};
 use super::phase::{Amplitude, amplitude, fold};
 use super::{SpecialError, check_finite, check_modulus_below_one, refuse_by_rule, show};
 use crate::numbers::Real;
@@ -14,6 +14,7 @@ use crate::numbers::Real;
 /// cancels, `c² + (1 − N) s²` (DLMF 19.25.14 in terms of `sin θ`).  `N`, `N s²`, `p`
 /// and the combination are formed in double-double (fixed precision; see
 /// [`Dd::value`]), so that the error is that of `s`, `R_F`, `R_J` and one rounding.
+#[inline(always)]
 fn positive<R: Real>(
     nn: &Dd<R>,
     nc: &R,
@@ -44,6 +45,7 @@ fn positive<R: Real>(
 /// the cancelling sum into one of positive terms:
 /// `Π(n) = (−n)k'²/((1−n)(k²−n)) Π(N) + k²/(k²−n) F + √(−n/((k²−n)(1−n)))
 /// atan(√(−nN) s c/Δ)`, every product and quotient in double-double.
+#[inline(always)]
 pub(crate) fn reduced_pi<R: Real>(n: &R, s: &R, c2: &R, k: &R) -> Result<Dd<R>, SpecialError> {
     let one = s.one();
     let k2 = Dd::from(k.clone()).sqr();
@@ -144,10 +146,16 @@ pub fn ellippi<R: Real>(n: &R, phi: &R, k: &R) -> Result<R, SpecialError> {
             ))
         });
     }
-    let mut p = reduced_pi(&nw, &s, &c2, &kw)?.mul_r(&r.from_i64(sigma));
-    if c != 0 {
-        let whole = reduced_pi(&nw, &one, &kw.zero(), &kw)?;
-        p = p.add(&whole.mul_r(&r.from_i64(c)));
-    }
-    Ok(p.value().with_prec(prec))
+    // Π(φ) = σ Π(θ) + c Π(π/2), in double-double; in fixed precision compiled for the
+    // fused multiply-add (the two-products of the double-double steps)
+    let sum = || -> Result<R, SpecialError> {
+        let mut p = reduced_pi(&nw, &s, &c2, &kw)?.mul_r(&r.from_i64(sigma));
+        if c != 0 {
+            let whole = reduced_pi(&nw, &one, &kw.zero(), &kw)?;
+            p = p.add(&whole.mul_r(&r.from_i64(c)));
+        }
+        Ok(p.value())
+    };
+    let p = if R::FIXED { with_fma(sum)? } else { sum()? };
+    Ok(p.with_prec(prec))
 }
