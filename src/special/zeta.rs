@@ -107,7 +107,9 @@ pub fn heumanlambda<R: Real>(phi: &R, k: &R) -> Result<R, SpecialError> {
     let n = phi.prec().max(k.prec());
     let Amplitude { q, r, w } = amplitude(phi, n)?;
     let kw = k.with_prec(w);
-    if kw.is_zero() {
+    // k = 0, or in fixed precision k² below the smallest normal number, where
+    // Λ₀(θ, k) = sin θ + O(k² ln(1/k)) is sin θ to the last bit (and k² would be lost)
+    if kw.is_zero() || (R::FIXED && kw.to_f64() < 1e-154) {
         // Λ₀(·, 0) is odd, Λ₀(π/2, 0) = 1 and Λ₀(θ, 0) = sin θ on [−π/2, π/2]
         let (whole, sigma, st, _) = fold(q, &r);
         let lam = r.from_i64(whole) + r.from_i64(sigma) * st;
@@ -170,5 +172,9 @@ fn agm_pair<R: Real>(k: &R) -> Result<(Dd<R>, Dd<R>), SpecialError> {
         return Ok((Dd::from(a), Dd::from(agm(&one, k)?)));
     }
     let (m, mc) = modulus_dd(k);
+    if m.v() < 1e-290 {
+        // k² (nearly) underflows: AGM(1, k) plainly (the theta data need κ'² > 0)
+        return Ok((agm1_dd(&m, &mc), Dd::from(agm(&k.one(), k)?)));
+    }
     Ok((agm1_dd(&m, &mc), agm1_dd(&mc, &m)))
 }

@@ -374,3 +374,36 @@ fn derivatives_through_dual_numbers() {
         }
     }
 }
+
+/// Λ₀ and Z in `f64` at tiny moduli (k² near the smallest normal number, where the
+/// double-double AGM of the complement is skipped, and below it, where Λ₀ is sin θ to
+/// the last bit) against the multi-precision path at 256 bits (plain AGM), within
+/// 2.5 ε; and Λ₀(π/2) = 1.
+#[test]
+fn tiny_modulus_f64_against_mpfr() {
+    use eulertop::special::{heumanlambda, jacobizeta};
+    let cases = [
+        (1.0, 1e-150),
+        (0.3, 1e-140),
+        (-4.0, 1e-120),
+        (2.0, 1e-200),
+        (0.7, 1e-300),
+    ];
+    for (phi, k) in cases {
+        let want = heumanlambda(&Float::with_val(256, phi), &Float::with_val(256, k)).unwrap();
+        let got = heumanlambda(&phi, &k).unwrap();
+        let e = Float::with_val(256, &want - got).abs() / want.clone().abs() * 2f64.powi(52);
+        assert!(e.to_f64() <= 2.5, "Λ₀({phi}, {k}): {} ε", e.to_f64());
+        let z_want = jacobizeta(&Float::with_val(256, phi), &Float::with_val(256, k)).unwrap();
+        let z = jacobizeta(&phi, &k).unwrap();
+        if z_want.to_f64().abs() > 1e-290 && k > 1e-150 {
+            let e = Float::with_val(256, &z_want - z).abs() / z_want.abs() * 2f64.powi(52);
+            assert!(e.to_f64() <= 2.5, "Z({phi}, {k}): {} ε", e.to_f64());
+        }
+    }
+    let one = heumanlambda(&std::f64::consts::FRAC_PI_2, &1e-300).unwrap();
+    assert!(
+        (one - 1.0).abs() <= 2.0 * f64::EPSILON,
+        "Λ₀(π/2, 1e-300) = {one}"
+    );
+}
