@@ -1,6 +1,7 @@
 //! Complete elliptic integrals of the first kind by the arithmetic–geometric mean.
 
 use super::dd::{Dd, two_sum, with_value};
+use super::theta::{SERIES_MAX_M, Theta};
 use super::{GUARD, SpecialError, check_modulus_below_one};
 use crate::numbers::Real;
 
@@ -45,6 +46,59 @@ pub(crate) fn complementary_sqr<R: Real>(k: &R) -> R {
     let k2 = Dd::from(k.clone()).sqr();
     let (s, e) = two_sum(1.0, -k2.v());
     with_value(&(one - k2.hi.clone()), s) + k.from_f64(e - k2.lo)
+}
+
+/// `2/π` as a double-double.
+pub(crate) const TWO_OVER_PI: (f64, f64) =
+    (std::f64::consts::FRAC_2_PI, -3.935_735_335_036_497e-17);
+
+/// `AGM(1, κ')` for the modulus `κ` given by `m = κ²` and `mc = κ'²` (normalised
+/// double-doubles, `0 ≤ m`, `0 < mc`), to about `2⁻⁸⁵` relative, for the
+/// fixed-precision types: the scale `π/(2K)` of the theta data of the Jacobi
+/// functions (module `theta`; DLMF 19.8.5), or above `κ² = 0.81` the scale `π/(2K')`
+/// and period `πK/(2K')` at imaginary argument, whose quotient times `π/2` is
+/// `π/(2K)`.  A plain `f64` AGM is good to about one ulp, which alone used up half of
+/// the 2 ε aimed at for Z and Λ₀.
+pub(crate) fn agm1_dd<R: Real>(m: &Dd<R>, mc: &Dd<R>) -> Dd<R> {
+    let imaginary = m.v() > SERIES_MAX_M;
+    let th = Theta::with_bottom(m, mc, imaginary, true);
+    if !imaginary {
+        return th.scale;
+    }
+    let half_pi = Dd {
+        hi: m.hi.from_f64(std::f64::consts::FRAC_PI_2),
+        lo: 6.123_233_995_736_766e-17,
+    };
+    th.scale.mul(&half_pi).div(&th.period)
+}
+
+/// `(κ², κ'²)` of the modulus `k` (`0 ≤ k < 1`) as normalised double-doubles; `κ'²`
+/// is `1 − k²` with the rounding error of `k²` carried along.  Fixed precision only.
+pub(crate) fn modulus_dd<R: Real>(k: &R) -> (Dd<R>, Dd<R>) {
+    let k2 = Dd::from(k.clone()).sqr().norm();
+    let (s, e) = two_sum(1.0, -k2.v());
+    let mc = Dd {
+        hi: with_value(&(k.one() - k2.hi.clone()), s),
+        lo: e - k2.lo,
+    }
+    .norm();
+    (k2, mc)
+}
+
+/// `1/K(k) = 2 AGM(1, k')/π` (DLMF 19.8.5), `0 ≤ k < 1`: in double-double from
+/// [`agm1_dd`] for the fixed-precision types, else by [`agm`] at the precision of `k`
+/// (only `hi` is meaningful then, see [`Dd::value`]).
+pub(crate) fn inv_quarter_period_dd<R: Real>(k: &R) -> Result<Dd<R>, SpecialError> {
+    if !R::FIXED {
+        let a = agm(&k.one(), &complementary(k))?;
+        return Ok(Dd::from(a.mul_2si(1) / k.pi()));
+    }
+    let (m, mc) = modulus_dd(k);
+    let two_pi = Dd {
+        hi: k.from_f64(TWO_OVER_PI.0),
+        lo: TWO_OVER_PI.1,
+    };
+    Ok(agm1_dd(&m, &mc).mul(&two_pi))
 }
 
 /// The complete elliptic integral of the first kind `K(k)`, modulus `k` (not `m = k²`).

@@ -90,6 +90,28 @@ impl<R: Real> Dd<R> {
         self.hi.clone() + self.hi.from_f64(self.lo)
     }
 
+    /// The value in `R`: `hi + lo` rounded for the fixed-precision types; `hi` alone
+    /// for the multi-precision ones, whose `hi` carries the working precision (their
+    /// `lo`, formed from `f64` images, means nothing).  For code written once with
+    /// [`Dd`] for both.
+    #[inline(always)]
+    pub(crate) fn value(&self) -> R {
+        if R::FIXED {
+            self.to_r()
+        } else {
+            self.hi.clone()
+        }
+    }
+
+    /// `−self`.
+    #[inline(always)]
+    pub(crate) fn neg(&self) -> Self {
+        Dd {
+            hi: -self.hi.clone(),
+            lo: -self.lo,
+        }
+    }
+
     /// `hi` as an `f64`.
     #[inline(always)]
     pub(crate) fn v(&self) -> f64 {

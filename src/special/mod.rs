@@ -89,8 +89,14 @@
 //!   (two-sums) and added to the series part error-free, the last step of `R_F`,
 //!   `(1 + s)/√a`, is rounded about once, and `k'² = 1 − k²` is rounded once; that took
 //!   the worst `f64` errors of `E` and `E(φ)` from 2.3–2.8 ε to 1.4–1.8 ε and those of
-//!   `Π` from 2.7–3.1 ε to 2.2–2.9 ε (`reports/accuracy.md`).  [`ToolkitFn`] names them for callers that choose at
-//!   run time (the expression language).
+//!   `Π` from 2.7–3.1 ε to 2.2–2.9 ε.  `Π`, `Z` and `Λ₀` then combine their factors
+//!   (`sin φ`, `cos φ`, `R_F`, `R_J`, for `n < 0` the three terms) in double-double and
+//!   round once, with `AGM(1, k')` from the scale of the theta data (module `theta`, to
+//!   about `2⁻⁸⁵`) and `Λ₀` folded to `[−π/4, π/2]` by `Λ₀(φ + π) = Λ₀(φ) + 2`: worst
+//!   `Π` 1.97 ε (2.48 ε in the corner `n sin²φ → 1`, `k → 1`, where it is
+//!   ill-conditioned in `φ`), `Z` 2.18 ε, `Λ₀` 1.79 ε (`reports/accuracy.md`).
+//!   [`ToolkitFn`] names them for callers that choose at run time (the expression
+//!   language).
 //! * **Nome and θ_j** (module `jtheta`): Jacobi's series for `q` after Landen steps;
 //!   the theta series for `q ≤ 1/4`, Gaussian sums after Jacobi's imaginary
 //!   transformation above.

@@ -77,6 +77,9 @@ pub(crate) struct Theta<R> {
     pub period: Dd<R>,
     /// Is `scale` good to about `2⁻⁸⁵` (else `2⁻⁶⁴`, see [`Theta::with_bottom`])?
     pub precise: bool,
+    /// The cancellation the fast reduction accepts with the `f64`-nome scale (see
+    /// [`Theta::reduce_fast`]).
+    cancel: f64,
     /// `1/period` rounded to `f64` (quadrant choice).
     inv_period: f64,
     /// `κ'` of the evaluated modulus (odd quadrants at imaginary argument; zero for the
@@ -133,7 +136,11 @@ impl<R: Real> Theta<R> {
                 lo: PI_2.1,
             }
         };
+        // the f64-nome scale is good to about E·2⁻⁴⁸, E = 2q⁴ ≈ 2ε⁴ (test
+        // `f64_nome_scale_against_mpfr`): w keeps 2⁻⁵⁷ relative where |w| ≥ |z|·2⁹E
+        let cancel = (nome.e4.to_f64() * 1024.0).clamp(2f64.powi(-40), 2f64.powi(-8));
         Theta {
+            cancel,
             bottom: if imaginary {
                 Bottom::Imaginary
             } else {
@@ -166,9 +173,10 @@ impl<R: Real> Theta<R> {
 
     /// Fast reduction of `u + u_lo` (`|u_lo| ≤ ulp(u)`): `(w_hi, w_lo)` with
     /// `u·scale = j·period + w`, or `None` when `|j| > 256` or `w` cancelled by more
-    /// than 20 bits (with the `f64`-nome scale of the series: `|j| > 64` or 8 bits), so
-    /// that `w` keeps about 56 bits of relative accuracy; then the caller retries with
-    /// the precise scale or reduces with the 150-bit quarter period.
+    /// than 20 bits (with the `f64`-nome scale of the series: `|j| > 64` or
+    /// `|w| < |z|·2⁹E`, at most 8 bits, fewer for small moduli, whose scale is more
+    /// accurate), so that `w` keeps about 56 bits of relative accuracy; then the caller
+    /// retries with the precise scale or reduces with the 150-bit quarter period.
     #[inline(always)]
     pub(crate) fn reduce_fast(&self, u: &R, u_lo: f64, j: i64) -> Option<(R, f64)> {
         let z = self.scale.mul_r(u);
@@ -179,7 +187,7 @@ impl<R: Real> Theta<R> {
         let (j_max, cancel) = if self.precise {
             (J_FAST, 2f64.powi(-20))
         } else {
-            (64, 2f64.powi(-8))
+            (64, self.cancel)
         };
         if j.abs() > j_max {
             return None;

@@ -2,7 +2,8 @@
 //! `R_F` and `R_J`.
 
 use super::agm::complementary_sqr;
-use super::carlson::{rf, rj, sqrt0};
+use super::carlson::{rf, rj};
+use super::dd::{Dd, with_fma};
 use super::phase::{Amplitude, amplitude, fold};
 use super::{SpecialError, check_finite, check_modulus_below_one, refuse_by_rule, show};
 use crate::numbers::Real;
@@ -10,47 +11,75 @@ use crate::numbers::Real;
 /// `Π(N, θ, k)` for `0 ≤ N`, `N sin²θ < 1`, `θ ∈ [−π/4, π/2]` given by `s = sin θ`,
 /// `c² = cos² θ`, with `nc = 1 − N` given separately (no cancellation as `N → 1`):
 /// `s (R_F(c², Δ², 1) + (N s²/3) R_J(c², Δ², 1, p))`, `p = 1 − N s²` or, where that
-/// cancels, `c² + (1 − N) s²` (DLMF 19.25.14 in terms of `sin θ`).
-fn positive<R: Real>(nn: &R, nc: &R, s: &R, c2: &R, d2: &R, f: &R) -> Result<R, SpecialError> {
-    let t = s.sqr();
-    let nt = nn.clone() * t.clone();
-    if nt.is_zero() {
-        return Ok(s.clone() * f.clone());
+/// cancels, `c² + (1 − N) s²` (DLMF 19.25.14 in terms of `sin θ`).  `N`, `N s²`, `p`
+/// and the combination are formed in double-double (fixed precision; see
+/// [`Dd::value`]), so that the error is that of `s`, `R_F`, `R_J` and one rounding.
+#[inline(always)]
+fn positive<R: Real>(
+    nn: &Dd<R>,
+    nc: &R,
+    s: &R,
+    c2: &R,
+    d2: &R,
+    f: &R,
+) -> Result<Dd<R>, SpecialError> {
+    let t = Dd::from(s.clone()).sqr();
+    let nt = nn.mul(&t);
+    if nt.hi.is_zero() {
+        return Ok(Dd::from(s.clone()).mul_r(f));
     }
-    let half = s.from_ratio(1, 2);
-    let p = if nt < half {
-        s.one() - nt.clone()
+    let one = s.one();
+    let p = if nt.v() < 0.5 {
+        Dd::from(one.clone()).add(&nt.neg())
     } else {
-        c2.clone() + nc.clone() * t
+        Dd::from(c2.clone()).add(&t.mul_r(nc))
     };
-    let j = rj(c2, d2, &s.one(), &p)?;
-    Ok(s.clone() * (f.clone() + nt * j / s.from_i64(3)))
+    let j = rj(c2, d2, &one, &p.value())?;
+    let three = Dd::from(s.from_i64(3));
+    Ok(nt.mul_r(&j).div(&three).add_r(f).mul_r(s))
 }
 
 /// `Π(n, θ, k)` for `θ ∈ [−π/4, π/2]` (`s = sin θ`, `c² = cos² θ`), `n sin²θ < 1`,
-/// `0 ≤ k < 1`.  For `n < 0` the transformation Abramowitz–Stegun 17.7.15 to
-/// `N = (k² − n)/(1 − n) ∈ (k², 1)` turns the cancelling sum into one of positive terms:
+/// `0 ≤ k < 1`, as a double-double (see [`Dd::value`]).  For `n < 0` the
+/// transformation Abramowitz–Stegun 17.7.15 to `N = (k² − n)/(1 − n) ∈ (k², 1)` turns
+/// the cancelling sum into one of positive terms:
 /// `Π(n) = (−n)k'²/((1−n)(k²−n)) Π(N) + k²/(k²−n) F + √(−n/((k²−n)(1−n)))
-/// atan(√(−nN) s c/Δ)`.
-pub(crate) fn reduced_pi<R: Real>(n: &R, s: &R, c2: &R, k: &R) -> Result<R, SpecialError> {
+/// atan(√(−nN) s c/Δ)`, every product and quotient in double-double.
+#[inline(always)]
+pub(crate) fn reduced_pi<R: Real>(n: &R, s: &R, c2: &R, k: &R) -> Result<Dd<R>, SpecialError> {
     let one = s.one();
-    let k2 = k.sqr();
+    let k2 = Dd::from(k.clone()).sqr();
     let kp2 = complementary_sqr(k);
-    let d2 = c2.clone() + kp2.clone() * s.sqr();
+    let d2 = Dd::from(s.clone()).sqr().mul_r(&kp2).add_r(c2).value();
     let f = rf(c2, &d2, &one)?;
     if *n >= n.zero() {
-        return positive(n, &(one - n.clone()), s, c2, &d2, &f);
+        return positive(&Dd::from(n.clone()), &(one - n.clone()), s, c2, &d2, &f);
     }
     let m = -n.clone();
-    let (onem, k2m) = (one.clone() + m.clone(), k2.clone() + m.clone());
-    let nn = k2m.clone() / onem.clone();
-    let pi_n = positive(&nn, &(kp2.clone() / onem.clone()), s, c2, &d2, &f)?;
-    let first = m.clone() * kp2 / (onem.clone() * k2m.clone()) * pi_n;
-    let second = k2 / k2m.clone() * s.clone() * f;
-    let p2 = (m.clone() * nn).sqrt();
-    let angle = (p2 * s.clone() * sqrt0(c2) / d2.sqrt()).atan();
-    let third = (m / (k2m * onem)).sqrt() * angle;
-    Ok(first + second + third)
+    let onem = Dd::from(one).add_r(&m);
+    let k2m = k2.add_r(&m);
+    let nn = k2m.div(&onem);
+    let kp2d = Dd::from(kp2);
+    let pi_n = positive(&nn, &kp2d.div(&onem).value(), s, c2, &d2, &f)?;
+    let den = onem.mul(&k2m);
+    let first = kp2d.mul_r(&m).mul(&pi_n).div(&den);
+    let second = k2.mul_r(s).mul_r(&f).div(&k2m);
+    // atan(√(m N s² c²/Δ²)), the argument in double-double: atan(x + e) = atan x + e/(1 + x²)
+    let x2 = nn.mul_r(&m).mul(&Dd::from(s.clone()).sqr()).mul_r(c2);
+    let x = if x2.hi.is_zero() {
+        // θ = π/2 (c = 0): a zero angle, with finite derivative parts
+        x2
+    } else {
+        x2.div(&Dd::from(d2)).sqrt()
+    };
+    let angle = Dd {
+        hi: x.hi.atan(),
+        lo: x.lo / (1.0 + x.v() * x.v()),
+    };
+    let angle = if R::FIXED { angle } else { Dd::from(angle.hi) };
+    let angle = if *s < s.zero() { angle.neg() } else { angle };
+    let third = Dd::from(m).div(&den).sqrt().mul(&angle);
+    Ok(first.add(&second).add(&third))
 }
 
 /// The incomplete elliptic integral of the third kind
@@ -117,10 +146,16 @@ pub fn ellippi<R: Real>(n: &R, phi: &R, k: &R) -> Result<R, SpecialError> {
             ))
         });
     }
-    let mut p = r.from_i64(sigma) * reduced_pi(&nw, &s, &c2, &kw)?;
-    if c != 0 {
-        let whole = reduced_pi(&nw, &one, &kw.zero(), &kw)?;
-        p = p + r.from_i64(c) * whole;
-    }
+    // Π(φ) = σ Π(θ) + c Π(π/2), in double-double; in fixed precision compiled for the
+    // fused multiply-add (the two-products of the double-double steps)
+    let sum = || -> Result<R, SpecialError> {
+        let mut p = reduced_pi(&nw, &s, &c2, &kw)?.mul_r(&r.from_i64(sigma));
+        if c != 0 {
+            let whole = reduced_pi(&nw, &one, &kw.zero(), &kw)?;
+            p = p.add(&whole.mul_r(&r.from_i64(c)));
+        }
+        Ok(p.value())
+    };
+    let p = if R::FIXED { with_fma(sum)? } else { sum()? };
     Ok(p.with_prec(prec))
 }
