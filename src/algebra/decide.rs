@@ -86,6 +86,9 @@ const MAX_TERMS: usize = 400;
 /// The most polynomials one sign test of rules 1–3 examines.
 const MAX_TESTS: usize = 48;
 
+/// The most terms of a value and a hypothesis whose products `ratio_sign` forms.
+const MAX_PRODUCT_TERMS: usize = 160;
+
 impl Sym {
     /// The sign of a real value, decided as the module says; never from the points.
     pub fn decision(&self) -> Decision {
@@ -345,9 +348,10 @@ impl Sym {
         signed.then(|| (*q.val).clone())
     }
 
-    /// The proved sign of `self / h`, or of `self · h` (the same sign where `h ≠ 0`, as
-    /// on a part of the domain where `h` has a strict sign): `2/p` by the hypothesis
-    /// `p/2 > 0`, whose quotient `4/p²` would need the sign of `2/p` itself.
+    /// The proved sign of `self / h`, or of `self · h` or `self · h³` (the same sign
+    /// where `h ≠ 0`, as on a part of the domain where `h` has a strict sign): `2/p` by
+    /// the hypothesis `p/2 > 0`, whose quotient `4/p²` would need the sign of `2/p`
+    /// itself, and `q/p³` by `p > 0`.
     fn ratio_sign(&self, h: &Sym) -> Option<i32> {
         if h.is_exact_zero() {
             return None;
@@ -360,11 +364,24 @@ impl Sym {
         if let Some(s) = q.proved_sign_of_quotient() {
             return Some(s);
         }
-        let p = self.clone() * h.clone();
-        if crate::numbers::Real::failure(&p).is_some() {
+        // self·h, then self·h³ (a cube of h in a denominator): the sign of self·h^odd;
+        // only for small values, as a product beyond the term bound fails the proof
+        let size = |v: &Sym| v.val.num.len() + v.val.den.len();
+        if size(self) + size(h) > MAX_PRODUCT_TERMS {
             return None;
         }
-        exact(&p).or_else(|| p.proved_sign_of_quotient())
+        let h2 = h.clone() * h.clone();
+        let mut p = self.clone() * h.clone();
+        for _ in 0..2 {
+            if crate::numbers::Real::failure(&p).is_some() {
+                return None;
+            }
+            if let Some(s) = exact(&p).or_else(|| p.proved_sign_of_quotient()) {
+                return Some(s);
+            }
+            p = p * h2.clone();
+        }
+        None
     }
 
     /// The context variable of the one indeterminate of which this value is a constant

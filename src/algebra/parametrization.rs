@@ -188,6 +188,14 @@ impl Default for Parametrization {
     }
 }
 
+/// The most terms of a polynomial tested as `±q²` ([`Parametrization::square_sign`]).
+const MAX_SQUARE_TERMS: usize = 400;
+
+/// The exponent reported for a sign proved as that of `±q²`
+/// ([`Parametrization::square_sign`]): no Pólya exponent, a step the certificate format
+/// does not record.
+pub(crate) const SQUARE: u32 = u32::MAX;
+
 impl Parametrization {
     /// An empty parametrization.
     pub fn new() -> Parametrization {
@@ -355,8 +363,28 @@ impl Parametrization {
         if let Some(s) = self.definite_sign(&acc) {
             return Some((s * factor, 0));
         }
-        let (s, n) = self.polya(acc)?;
-        Some((s * factor, n))
+        match self.polya(acc) {
+            Some((s, n)) => Some((s * factor, n)),
+            None => self.square_sign(p, images),
+        }
+    }
+
+    /// The sign of `p = ±q²` where `q` has a proved sign on the domain (then `q ≠ 0`
+    /// there, so `q² > 0`): the Jacobian determinant of decoupled equations, say, is
+    /// `−(64ABC(A − B)(A − C)(B − C))²`, whose expanded coefficients have both signs.
+    /// Only for polynomials of at most [`MAX_SQUARE_TERMS`] terms.
+    fn square_sign(&self, p: &Poly, images: &[Image<'_>]) -> Option<(i32, u32)> {
+        if p.len() > MAX_SQUARE_TERMS || p.as_constant().is_some() {
+            return None;
+        }
+        for s in [1, -1] {
+            let signed = if s > 0 { p.clone() } else { p.neg() };
+            if let Some(q) = signed.sqrt() {
+                self.poly_sign_polya(&q, images)?;
+                return Some((s, SQUARE));
+            }
+        }
+        None
     }
 
     /// Multiplies by `1 + Σ tᵢ` (over the parameters that occur) until the coefficients

@@ -150,6 +150,12 @@ impl Ring {
     /// Records that a sign test needed the Pólya multiplier `(1 + Σ tᵢ)ᴺ` (`n > 0`),
     /// which the certificate format does not record.
     pub(crate) fn note_polya(&self, n: u32) {
+        if n == super::parametrization::SQUARE && self.certifying() {
+            self.mark_uncertified(
+                "a sign proved as that of ±q² with q of proved sign, which the certificate format does not record",
+            );
+            return;
+        }
         if n > 0 && self.certifying() {
             self.mark_uncertified(
                 "a sign proved after a Pólya multiplication by (1 + Σ t)^N, which the certificate format does not record",

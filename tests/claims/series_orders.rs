@@ -201,7 +201,16 @@ fn existence_for_small_h_needs_an_exact_solution_at_h_zero() {
     // O(h), below 1/2 for small h
     let r = run("sec8.roots.positive.tri");
     assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
-    // 1/|J₁| on a domain where J₁ changes sign: |J₁| is only O(1), so no proof
+    // 1/|J₁| on a domain where J₁ changes sign: the domain is split by the sign of
+    // J₁ = (B + C − A)/2, each part proved (the Jacobian at h = 0 is −q²/(J₁J₂J₃)³ with
+    // q = 64ABC(A − B)(A − C)(B − C) of proved sign)
     let r = run("sec8.S.roots");
-    assert_eq!(r.verdict, Verdict::Holds, "{}", r.reason);
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+    assert_eq!(r.proof.method, ProofMethod::Series, "{}", r.reason);
+    assert_eq!(
+        r.proof.cases,
+        ["(C + B - A)/(2) > 0", "(C + B - A)/(2) < 0"],
+        "{}",
+        r.reason
+    );
 }
