@@ -136,51 +136,88 @@ fn search(
     ))
 }
 
-/// Certifies a refutation, or refutes an inconclusive or sampled claim, by a witness in
-/// ball arithmetic when the evidence has no certificate yet (see the module).
-pub fn refine(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, ev: &mut Evidence) {
+/// How many points a witness search takes for the evidence `ev` (`skip` drawn but not
+/// evaluated, then `count`), or `None` when none is sought: the verdict has a
+/// certificate already, is not open (refuted, inconclusive or holding), or the claim
+/// states hypotheses (a sign condition, a branch restricts the domain beyond what the
+/// sampler draws: no witness is sought outside the proved setting).  A claim that holds
+/// at its samples is tried at as many points past them; a refuted or inconclusive one
+/// at its samples and three times as many more.
+fn search_size(ctx: Ctx<'_>, ev: &Evidence) -> Option<(usize, usize)> {
     let method = ev.proof.as_ref().map_or(ProofMethod::None, |p| p.method);
     let open = matches!(
         ev.verdict,
         Verdict::Refuted | Verdict::Inconclusive | Verdict::Holds
     );
-    // a stated hypothesis (a sign condition, a branch) restricts the domain beyond what
-    // the sampler draws: no witness is sought outside the proved setting
     if method != ProofMethod::None || !open || !ctx.claim.hypotheses.is_empty() {
-        return;
+        return None;
     }
-    // a claim that holds at its samples is tried at as many points past them; a
-    // refuted or inconclusive one at its samples and three times as many more
     let n = ctx.claim.samples.max(1);
-    let (skip, count) = match ev.verdict {
+    Some(match ev.verdict {
         Verdict::Holds => (n, n),
         _ => (0, 4 * n),
-    };
-    let (w, counterexample) = match search(ctx, lhs, rhs, skip, count) {
-        Ok(found) => found,
-        Err(why) => {
-            // a refutation without a certificate says why the balls give none
-            if ev.verdict != Verdict::Holds
-                && let Some(p) = ev.proof.as_mut()
-            {
-                let before = p.reason.take().unwrap_or_default();
-                p.reason = Some(format!("{before}; no witness in ball arithmetic: {why}"));
-            }
-            return;
-        }
-    };
+    })
+}
+
+/// Records the witness `w` as the evidence's certificate: the verdict becomes a
+/// certified refutation, `what` naming what the witness shows.
+fn certify(ev: &mut Evidence, what: &str, (w, counterexample): (String, Counterexample)) {
     let mut info = ev.proof.take().unwrap_or_else(|| ProofInfo::none(""));
     info.method = ProofMethod::Witness;
     info.witness = Some(w.clone());
     ev.reason = match ev.verdict {
-        Verdict::Refuted => format!("{}; certified: lhs − rhs ≠ 0 {w}", ev.reason),
-        _ => format!("certified: lhs − rhs ≠ 0 {w} (numerically: {})", ev.reason),
+        Verdict::Refuted => format!("{}; certified: {what} {w}", ev.reason),
+        _ => format!("certified: {what} {w} (numerically: {})", ev.reason),
     };
     ev.verdict = Verdict::Refuted;
     ev.proof = Some(info);
     if ev.counterexample.is_none() {
         ev.counterexample = Some(counterexample);
     }
+}
+
+/// Certifies a refutation, or refutes an inconclusive or sampled claim, by a witness in
+/// ball arithmetic when the evidence has no certificate yet (see the module).
+pub fn refine(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, ev: &mut Evidence) {
+    let Some((skip, count)) = search_size(ctx, ev) else {
+        return;
+    };
+    match search(ctx, lhs, rhs, skip, count) {
+        Ok(found) => certify(ev, "lhs − rhs ≠ 0", found),
+        // a refutation without a certificate says why the balls give none
+        Err(why) => {
+            if ev.verdict != Verdict::Holds
+                && let Some(p) = ev.proof.as_mut()
+            {
+                let before = p.reason.take().unwrap_or_default();
+                p.reason = Some(format!("{before}; no witness in ball arithmetic: {why}"));
+            }
+        }
+    }
+}
+
+/// A witness that `expr` depends on `wrt`: a base point of the claim's sample stream
+/// and one of its redraws of `wrt` at which the balls of `expr` are disjoint.
+fn search_dependence(
+    ctx: Ctx<'_>,
+    expr: &PExpr,
+    (wrt, redraws): (&str, usize),
+    count: usize,
+) -> Result<Option<(String, Counterexample)>, String> {
+    let mut sampler = ctx.sampler(Stream::Samples).map_err(|c| c.to_string())?;
+    let mut alts = ctx.sampler(Stream::Redraws).map_err(|c| c.to_string())?;
+    for _ in 0..count {
+        let Ok((base, others)) = super::independence::draw(&mut sampler, &mut alts, wrt, redraws)
+        else {
+            break;
+        };
+        for alt in &others {
+            if let AtPoint::Witness(w, c) = at_points(ctx, (expr, alt), (expr, &base))? {
+                return Ok(Some((w, c)));
+            }
+        }
+    }
+    Ok(None)
 }
 
 /// Refutes an independence claim that is refuted or inconclusive at its samples, or
@@ -194,49 +231,10 @@ pub fn refine_independence(
     (wrt, redraws): (&str, usize),
     ev: &mut Evidence,
 ) {
-    let method = ev.proof.as_ref().map_or(ProofMethod::None, |p| p.method);
-    let open = matches!(
-        ev.verdict,
-        Verdict::Refuted | Verdict::Inconclusive | Verdict::Holds
-    );
-    if method != ProofMethod::None || !open || !ctx.claim.hypotheses.is_empty() {
-        return;
-    }
-    let n = ctx.claim.samples.max(1);
-    let count = match ev.verdict {
-        Verdict::Holds => n,
-        _ => 4 * n,
-    };
-    let found = (|| -> Result<Option<(String, Counterexample)>, String> {
-        let mut sampler = ctx.sampler(Stream::Samples).map_err(|c| c.to_string())?;
-        let mut alts = ctx.sampler(Stream::Redraws).map_err(|c| c.to_string())?;
-        for _ in 0..count {
-            let Ok((base, others)) =
-                super::independence::draw(&mut sampler, &mut alts, wrt, redraws)
-            else {
-                break;
-            };
-            for alt in &others {
-                if let AtPoint::Witness(w, c) = at_points(ctx, (expr, alt), (expr, &base))? {
-                    return Ok(Some((w, c)));
-                }
-            }
-        }
-        Ok(None)
-    })();
-    let Ok(Some((w, counterexample))) = found else {
+    let Some((_, count)) = search_size(ctx, ev) else {
         return;
     };
-    let mut info = ev.proof.take().unwrap_or_else(|| ProofInfo::none(""));
-    info.method = ProofMethod::Witness;
-    info.witness = Some(w.clone());
-    ev.reason = format!(
-        "certified: expr depends on {wrt}: {w} (numerically: {})",
-        ev.reason
-    );
-    ev.verdict = Verdict::Refuted;
-    ev.proof = Some(info);
-    if ev.counterexample.is_none() {
-        ev.counterexample = Some(counterexample);
+    if let Ok(Some(found)) = search_dependence(ctx, expr, (wrt, redraws), count) {
+        certify(ev, &format!("expr depends on {wrt}:"), found);
     }
 }
