@@ -285,6 +285,18 @@ impl Real for Sym {
     fn jacobi_inverse_by_rule(sn: &Self, cn: &Self, dn: &Self, k: &Self) -> Result<Self, String> {
         Sym::jacobi_inverse_rule(sn, cn, dn, k).map_err(|e| e.to_string())
     }
+    fn opaque_by_rule(
+        f: &str,
+        args: &[&Self],
+        values: &dyn Fn(&[rug::Float]) -> Option<rug::Float>,
+    ) -> Result<Self, String> {
+        Sym::opaque_call(f, args, |z| {
+            let re: Vec<rug::Float> = z.iter().map(|c| c.real().clone()).collect();
+            let prec = re.first().map_or(128, |x| x.prec());
+            values(&re).map(|x| Complex::with_val(prec, (x, 0)))
+        })
+        .map_err(|e| e.to_string())
+    }
     fn sinh(&self) -> Self {
         // sinh u = sn(u, 1)/cn(u, 1) (DLMF 22.5.ii: sn = tanh, cn = dn = sech at k = 1)
         self.hyperbolic(|s, c| s.try_div(c))

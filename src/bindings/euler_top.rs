@@ -180,6 +180,36 @@ pub(super) fn params<R: Real>(a: &[Value<R>]) -> Result<(Inertia<R>, EllipticPar
         EllipticParams::new(&i, &a[3].as_real()?, &a[4].as_real()?).map_err(|e| e.to_string())?;
     Ok((i, p))
 }
+/// (ell coord) inverted: `(M², E, φ)` of the point `a[0]` for the moments `a[1..4]`.
+///
+/// For a symbolic scalar whose proof has not decided the regime of the point (the sign
+/// of `BE − M²`), `M²` and `E` are the polynomials they are and `φ` is an opaque symbol
+/// with the numeric phase as its values: a claim about `M²` and `E` alone needs no
+/// regime, and one that uses `φ` is proved only where it holds for every `φ`.  The
+/// undecided sign stays noted, so that a proof can still split the domain by it.
+fn ell_coords<R: Real>(a: &[Value<R>]) -> Result<Value<R>, String> {
+    let i = inertia(a, 1)?;
+    let m = v3(&a[0])?;
+    if R::BY_RULE {
+        let [x, y, z] = &m.0;
+        let (x2, y2, z2) = (x.sqr(), y.sqr(), z.sqr());
+        let be = z2.clone() * (i.b.clone() - i.c.clone()) / i.c.clone()
+            - x2.clone() * (i.a.clone() - i.b.clone()) / i.a.clone();
+        if be.stated_sign().is_err() {
+            let m2 = x2.clone() + y2.clone() + z2.clone();
+            let e = x2 / i.a.clone() + y2 / i.b.clone() + z2 / i.c.clone();
+            let phi = R::opaque_by_rule("ellphi", &[x, y, z, &i.a, &i.b, &i.c], &|v| {
+                let at = Inertia::new(v[3].clone(), v[4].clone(), v[5].clone()).ok()?;
+                let point = Vec3::new(v[0].clone(), v[1].clone(), v[2].clone());
+                m_to_phase(&at, &point).ok().map(|(_, phi)| phi)
+            })?;
+            return Ok(Value::Vec3(Vec3::new(m2, e, phi)));
+        }
+    }
+    let (p, phi) = m_to_phase(&i, &m).map_err(err)?;
+    Ok(Value::Vec3(Vec3::new(p.m2, p.e, phi)))
+}
+
 fn sign_of<R: Num>(v: &Value<R>) -> Result<i8, String> {
     let x = v.as_real()?;
     if x > x.zero() {
@@ -215,11 +245,7 @@ impl GenericFunction for ModelFn {
                     p.c2.sqrt(),
                 )))
             }
-            F::EllCoords => {
-                let i = inertia(a, 1)?;
-                let (p, phi) = m_to_phase(&i, &v3(&a[0])?).map_err(err)?;
-                Ok(Value::Vec3(Vec3::new(p.m2, p.e, phi)))
-            }
+            F::EllCoords => ell_coords(a),
             F::EllInverse => ell_inverse(a),
             F::StepGamma0 | F::StepGamma1 | F::StepGamma2 | F::StepVm | F::VmOmega => self.step(a),
             F::GammaVm => {

@@ -376,6 +376,18 @@ pub trait Real: Scalar + PartialOrd {
     ) -> Result<Self, String> {
         Err("the inverse of sn, cn, dn has no rule for this type".into())
     }
+    /// A value that the type's rules cannot expand, standing for `f(args)` (only called
+    /// when [`Real::BY_RULE`]): a symbolic scalar makes it an opaque symbol, free in its
+    /// proofs, whose numeric value at each point is `values` of the arguments' values
+    /// there (`None` where `f` is undefined).  An identity proved with the symbol free
+    /// holds for every value of it, the actual one included.
+    fn opaque_by_rule(
+        f: &str,
+        _args: &[&Self],
+        _values: &dyn Fn(&[rug::Float]) -> Option<rug::Float>,
+    ) -> Result<Self, String> {
+        Err(format!("{f} has no rule for this type"))
+    }
     /// Precision in bits (53 for `f64`).
     fn prec(&self) -> u32;
     /// The same value rounded to `bits` of precision (identity for `f64`).
