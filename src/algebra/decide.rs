@@ -98,6 +98,14 @@ impl Sym {
         if let Some(q) = self.as_rational() {
             return Decision::Proved(if q < 0 { -1 } else { 1 });
         }
+        // the condition of the part of the domain itself: a split's value is never
+        // proved of one sign on the domain (it would not have split it)
+        if let Some((s, source)) = self.part_condition_sign() {
+            return Decision::Hypothesis(s, source);
+        }
+        if let Some(d) = self.quick_root_decision() {
+            return d;
+        }
         if let Some(s) = self.proved_sign().or_else(|| self.ring.fact_sign(self)) {
             return Decision::Proved(s);
         }
@@ -106,7 +114,9 @@ impl Sym {
         }
         match self.hypothesis_sign() {
             Some((s, source)) => Decision::Hypothesis(s, source),
-            None => self.square_decision().unwrap_or(Decision::Unknown),
+            None => (self.square_decision())
+                .or_else(|| self.root_decision())
+                .unwrap_or(Decision::Unknown),
         }
     }
 
@@ -246,6 +256,22 @@ impl Sym {
             return Some(1);
         }
         defs.contains(&self.negate().render()).then_some(-1)
+    }
+
+    /// The sign of this value where it is the condition of the part of the domain the
+    /// proof is on, or its negative (a cheap test, made before any proof).
+    pub(crate) fn part_condition_sign(&self) -> Option<(i32, String)> {
+        let parts = &self.ring.options().hypotheses;
+        if parts.is_empty() {
+            return None;
+        }
+        let (text, neg) = (self.render(), self.negate().render());
+        parts.iter().find_map(|(h, s)| {
+            let label = || format!("{} {} 0", h.what, if *s > 0 { ">" } else { "<" });
+            (h.text == text)
+                .then(|| (*s, label()))
+                .or_else(|| (h.text == neg).then(|| (-*s, label())))
+        })
     }
 
     /// The sign of this value by a hypothesis: the condition of the part of the domain

@@ -129,6 +129,7 @@ pub mod parametrization;
 pub mod positivity;
 mod proof;
 mod ring;
+mod root_signs;
 pub mod roots;
 mod scalar;
 pub mod series;

@@ -168,7 +168,7 @@ impl Ring {
     /// Remembers the first undecided sign of the ring that can split the domain.
     pub(crate) fn note_undecided(&self, x: &Sym) {
         if self.state().signs.undecided.is_none()
-            && let Some(split) = x.split()
+            && let Some(split) = x.split().or_else(|| x.root_free_split())
         {
             self.state().signs.undecided = Some(split);
         }
