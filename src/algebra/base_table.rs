@@ -75,6 +75,8 @@ pub(crate) struct Table {
     pub half_k: Option<[Val; 3]>,
     /// `(sn, cn, dn)(iK'/2)`, once needed.
     pub half_kp: Option<[Val; 3]>,
+    /// `(sn, cn, dn)(K/3)`, once needed (module `thirds`).
+    pub third_k: Option<[Val; 3]>,
     /// Every argument seen, over the directions (for a refined basis).
     pub seen: Vec<Vec<Rational>>,
     /// Hinted bases not yet made (their symbols do not exist yet).
@@ -95,6 +97,7 @@ impl Table {
             triples: HashMap::new(),
             half_k: None,
             half_kp: None,
+            third_k: None,
             seen: Vec::new(),
             pending: Vec::new(),
         }

@@ -165,13 +165,15 @@ impl Ring {
             VarKind::Named(def) => self.val_derivative(&def, jx),
             VarKind::Opaque { constant: true } => Ok(zero),
             VarKind::Opaque { constant: false } => self.opaque_derivative(j, jx),
-            VarKind::QuarterK { table } | VarKind::QuarterKp { table } => {
+            VarKind::QuarterK { table }
+            | VarKind::QuarterKp { table }
+            | VarKind::ThirdK { table } => {
                 let k = self.state().tables[table].k.clone();
                 if self.val_derivative(&k, jx)?.num.is_zero() {
                     Ok(zero)
                 } else {
                     Err(AlgebraError::Derivative(
-                        "of a quarter period whose modulus varies (needs E(k))".into(),
+                        "of a quarter period (or sn(K/3)) whose modulus varies (needs E(k))".into(),
                     ))
                 }
             }

@@ -43,12 +43,13 @@ fn pad(v: &mut Vec<Rational>, n: usize) {
     }
 }
 
-/// The split of an argument: coefficients over directions, then multiples of K/2 and
-/// iK'/2.
+/// The split of an argument: coefficients over directions, then multiples of K/2,
+/// iK'/2 and K/3 (`third_k` in 0..3).
 struct Split {
     vec: Vec<Rational>,
     half_k: i64,
     half_kp: i64,
+    third_k: i64,
 }
 
 /// An argument as `(table, [(base, n)], half_k, half_kp)`: Σ n·base + half_k·K/2 +
@@ -193,7 +194,7 @@ impl Ring {
                 )))
             }
         };
-        let half_k = to_int(&hk, "K")?;
+        let (half_k, third_k) = halves_and_thirds(&hk, &to_int)?;
         let half_kp = to_int(&hkp, "iK'")?;
         let mut st = self.state();
         let table = &mut st.tables[t];
@@ -217,6 +218,7 @@ impl Ring {
             vec,
             half_k,
             half_kp,
+            third_k,
         })
     }
 
@@ -363,6 +365,11 @@ impl Ring {
     pub(crate) fn combination(&self, k: &Val, u: &Val) -> AlgResult<Combination> {
         let t = self.table_of(&Sym::from_val(self, k.clone(), None))?;
         let split = self.split(t, u)?;
+        if split.third_k != 0 {
+            return Err(AlgebraError::NotAlgebraic(
+                "a shift by a third of K in a certificate".into(),
+            ));
+        }
         let n = self.coordinates(t, &split.vec)?;
         let combo = n
             .iter()
@@ -714,13 +721,26 @@ impl Ring {
     }
 }
 
+/// `h·K/2` (with `h` in halves of K, from an argument's split) as `a·K/2 + b·K/3` with
+/// `b` in 0..3: `h = m/3` with `m = 3a + 2b`; an error unless `3h` is an integer.
+fn halves_and_thirds(
+    h: &Rational,
+    to_int: &dyn Fn(&Rational, &str) -> AlgResult<i64>,
+) -> AlgResult<(i64, i64)> {
+    if *h.denom() == 1 {
+        return Ok((to_int(h, "K")?, 0));
+    }
+    let m = to_int(&(h.clone() * 3u32), "K (a multiple of K/6)")?;
+    let b = (2 * m).rem_euclid(3);
+    Ok(((m - 2 * b) / 3, b))
+}
+
 /// The reader's note for one expansion: which bases, shifts and half periods.
 fn instance_note(
     ring: &Ring,
     t: usize,
     combo: &[(usize, i64)],
-    hk: i64,
-    hkp: i64,
+    (hk, hkp, tk): (i64, i64, i64),
     arg: &Sym,
 ) -> String {
     let st = ring.state();
@@ -735,9 +755,15 @@ fn instance_note(
     if hk % 2 != 0 || hkp % 2 != 0 {
         used.push("22.5.1");
     }
+    let third = if tk != 0 {
+        used.push("sn(K/3) by triplication");
+        format!(" + {tk}*K/3")
+    } else {
+        String::new()
+    };
     drop(st);
     format!(
-        "sn, cn, dn({}) with argument {} + {hk}*K/2 + {hkp}*iK'/2 by {}",
+        "sn, cn, dn({}) with argument {} + {hk}*K/2 + {hkp}*iK'/2{third} by {}",
         arg.render_short(60),
         if bases.is_empty() {
             "0".to_string()
@@ -784,7 +810,7 @@ impl Sym {
         ring.better_bases_first(t, &n)?;
         let tr = super::addition::Triples { ring, t };
         let mut v = tr
-            .at(&n, split.half_k, split.half_kp)
+            .at(&n, split.half_k, split.half_kp, split.third_k)
             .map_err(|e| match e {
                 AlgebraError::DivisionByZero => {
                     AlgebraError::Pole(format!("sn, cn, dn at {}", self.render_short(80)))
@@ -817,10 +843,13 @@ impl Sym {
             ring,
             t,
             &combo,
-            split.half_k,
-            split.half_kp,
+            (split.half_k, split.half_kp, split.third_k),
             self,
         ));
+        if split.third_k != 0 {
+            // the certificate format records multiples of K/2 and iK'/2 only
+            ring.mark_uncertified("a shift by a third of K");
+        }
         let mk = |f: &'static str, val: &Val| {
             let node = self.node.as_ref().map(|a| {
                 Node::with_nf(
