@@ -798,6 +798,12 @@ impl Sym {
         if !self.ring.same(&k.ring) {
             return Err(AlgebraError::RingMismatch);
         }
+        if k.is_negative_modulus() {
+            // sn, cn, dn depend on k² only (DLMF 22.17.1): an identity of functions, so
+            // the points only choose which of the equal forms to expand
+            ring.note("sn, cn, dn at the modulus -k are those at k (DLMF 22.17.1)".into());
+            return self.sncndn(&k.negate());
+        }
         let t = ring.table_of(k)?;
         let (arg, sign) = ring.with_equivalents(t, &self.val)?;
         let split = ring.split(t, &arg)?;
@@ -868,6 +874,15 @@ impl Sym {
         };
         let [s, c, d] = &v;
         Ok((mk("sn", s), mk("cn", c), mk("dn", d)))
+    }
+
+    /// Whether this modulus is real and negative at every domain point (then sn, cn,
+    /// dn are expanded at its negative, DLMF 22.17.1).
+    fn is_negative_modulus(&self) -> bool {
+        let prec = self.ring.precision();
+        (0..self.ring.points())
+            .all(|p| self.val.sh.is_real_at(p, prec) && self.val.sh.v[p].real().is_sign_negative())
+            && !self.is_exact_zero()
     }
 
     /// `sn(self, k)`, see [`Sym::sncndn`].
