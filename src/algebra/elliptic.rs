@@ -94,7 +94,41 @@ impl Ring {
         }
         let mut st = self.state();
         st.tables.push(t);
-        Ok(st.tables.len() - 1)
+        let t = st.tables.len() - 1;
+        drop(st);
+        self.link_complementary(t)?;
+        Ok(t)
+    }
+
+    /// The tables of moduli `k`, `k'` with `k² + k'² = 1` exactly share their quarter
+    /// periods crosswise: `K(k') = K'(k)` and `K'(k') = K(k)` (K depends on k² only), so
+    /// that `K'(k)` inside sn, cn, dn of modulus `k'` is its quarter period (as in
+    /// Jacobi's imaginary transformation of a complex argument).
+    fn link_complementary(&self, t: usize) -> AlgResult<()> {
+        let n = self.state().tables.len();
+        for t0 in (0..n).filter(|&t0| t0 != t) {
+            let (a, b) = {
+                let st = self.state();
+                (st.tables[t].k2.clone(), st.tables[t0].k2.clone())
+            };
+            let sum = self.inner.v_add(&a, &b, false)?;
+            let one = self.inner.const_val(&Rational::from(1));
+            if !self.inner.v_add(&sum, &one, true)?.num.is_zero() {
+                continue;
+            }
+            let mut st = self.state();
+            let (k0, kp0) = (st.tables[t0].k_var, st.tables[t0].kp_var);
+            let tb = &mut st.tables[t];
+            if tb.k_var.is_none() && kp0.is_some() {
+                tb.k_var = kp0;
+                tb.linked.0 = true;
+            }
+            if tb.kp_var.is_none() && k0.is_some() {
+                tb.kp_var = k0;
+                tb.linked.1 = true;
+            }
+        }
+        Ok(())
     }
 
     /// The quarter period `K(k)` as a transcendental symbol.
@@ -140,7 +174,11 @@ impl Ring {
         } else {
             st.tables[t].k_var = Some(j);
         }
+        let others: Vec<usize> = (0..st.tables.len()).filter(|&o| o != t).collect();
         drop(st);
+        for o in others {
+            self.link_complementary(o)?;
+        }
         Ok(self.var_sym(j))
     }
 
@@ -194,6 +232,10 @@ impl Ring {
                 )))
             }
         };
+        let linked = self.state().tables[t].linked;
+        if (hk != 0 && linked.0) || (hkp != 0 && linked.1) {
+            self.mark_uncertified("a quarter period of the complementary modulus");
+        }
         let (half_k, third_k) = halves_and_thirds(&hk, &to_int)?;
         let half_kp = to_int(&hkp, "iK'")?;
         let mut st = self.state();
