@@ -1,10 +1,11 @@
 //! sn, cn, dn at thirds of the quarter period (module `algebra::thirds`), a negative
-//! modulus, and the derivative rules of `ln` and `am`: true identities proved, and
-//! variants that differ from them by a sign or a function refused by the prover and
-//! refuted.  The true claims are DLMF 22.9.13 (κ = dn(2K/3), DLMF 22.9.7), DLMF 22.4.3
-//! at z = K/3, 22.17.1, 22.14.1 (as a derivative) and 22.16.3; each false one differs
-//! from a true one by a sign or a function, so its falsity is a mathematical fact, not a
-//! printed number.
+//! modulus, the shift by iK' (the quarter period of the complementary modulus) and the
+//! derivative rules of `ln` and `am`: true identities proved, and variants that differ
+//! from them by a sign, a factor or a function refused by the prover and refuted.  The
+//! true claims are DLMF 22.9.13 (κ = dn(2K/3), DLMF 22.9.7), DLMF 22.4.3 at z = K/3 and
+//! at z + iK', 22.17.1, 22.14.1 (as a derivative) and 22.16.3; each false one differs
+//! from a true one by a sign, a factor or a function, so its falsity is a mathematical
+//! fact, not a printed number.
 
 use super::support::{attempt, controls_only, identity_claim_with};
 use eulertop::claims::verdict::{Options, ProofMethod, Verdict, run_claim};
@@ -50,6 +51,9 @@ const CLAIMS: &[(&str, &str, &str, &str, bool)] = &[
         "cn(u, k)",
         false,
     ),
+    // DLMF 22.4.3: sn(z + iK') = ns z / k, through K(k') = K'(k)
+    ("ikp", "", "sn(u + i*Kp(k), k)", "1/(k*sn(u, k))", true),
+    ("ikp.k", "", "sn(u + i*Kp(k), k)", "1/sn(u, k)", false),
     ("am", "", "d(am(u, k), u)", "dn(u, k)", true),
     ("am.cn", "", "d(am(u, k), u)", "cn(u, k)", false),
 ];
@@ -71,7 +75,7 @@ fn catalogue() -> eulertop::claims::catalogue::Catalogue {
 }
 
 #[test]
-fn thirds_of_k_negative_moduli_ln_and_am_are_proved_and_their_variants_refuted() {
+fn thirds_of_k_negative_moduli_ikp_ln_and_am_are_proved_and_their_variants_refuted() {
     let cat = catalogue();
     for (i, (id, .., true_claim)) in CLAIMS.iter().enumerate() {
         let p = attempt(&cat, id);
