@@ -777,6 +777,16 @@ fn halves_and_thirds(
     Ok(((m - 2 * b) / 3, b))
 }
 
+/// Notes one expansion (see [`instance_note`]); a shift by a third of K leaves the proof
+/// without a certificate (the format records multiples of K/2 and iK'/2 only).
+fn note_expansion(ring: &Ring, t: usize, combo: &[(usize, i64)], split: &Split, arg: &Sym) {
+    let shifts = (split.half_k, split.half_kp, split.third_k);
+    ring.note(instance_note(ring, t, combo, shifts, arg));
+    if split.third_k != 0 {
+        ring.mark_uncertified("a shift by a third of K");
+    }
+}
+
 /// The reader's note for one expansion: which bases, shifts and half periods.
 fn instance_note(
     ring: &Ring,
@@ -887,17 +897,7 @@ impl Sym {
             .filter(|(_, m)| **m != 0)
             .map(|(j, m)| (j, *m))
             .collect();
-        ring.note(instance_note(
-            ring,
-            t,
-            &combo,
-            (split.half_k, split.half_kp, split.third_k),
-            self,
-        ));
-        if split.third_k != 0 {
-            // the certificate format records multiples of K/2 and iK'/2 only
-            ring.mark_uncertified("a shift by a third of K");
-        }
+        note_expansion(ring, t, &combo, &split, self);
         let mk = |f: &'static str, val: &Val| {
             let node = self.node.as_ref().map(|a| {
                 Node::with_nf(
