@@ -1,7 +1,7 @@
 //! `sn`, `cn`, `dn` at a third of the quarter period, exactly.
 //!
 //! `s = sn(K/3)` is algebraic over ℚ(k): with `u = K/3`, `sn 2u = sn(K − u) = cd u`
-//! (DLMF 22.4.3) and the double-argument formula (DLMF 22.6.2, from 22.8.1) give
+//! (DLMF 22.4.3) and the double-argument formula (DLMF 22.6.5, from 22.8.1) give
 //! `2 s c d² = c (1 − k² s⁴)`, and `c = cn(K/3) > 0` because `0 < K/3 < K`, so
 //!
 //! ```text
@@ -14,7 +14,7 @@
 //! be singled out (the value `s ∈ (0, 1)` is the symbol's meaning, never a choice made
 //! at domain points).  `cn(K/3)` is a root symbol with `c² = 1 − s²` (defined as that
 //! cosine, like `cn` of a base argument), and `dn(K/3)` follows rationally from
-//! `cn 2u = cn(K − u) = k' sd u` (DLMF 22.4.3) and DLMF 22.6.3:
+//! `cn 2u = cn(K − u) = k' sd u` (DLMF 22.4.3) and DLMF 22.6.6:
 //!
 //! ```text
 //! dn(K/3) = k' s (1 − k² s⁴) / (1 − 2 s² + k² s⁴),
@@ -67,7 +67,7 @@ impl Ring {
         })?;
         let d = self.third_dn(&k2, kp, &s, &dv)?;
         self.note(format!(
-            "{name} = sn(K/3), a root of k^2 s^4 - 2 k^2 s^3 + 2 s - 1 (sn(2K/3) = cd(K/3), DLMF 22.4.3, 22.6.2); dn(K/3) = k' s (1 - k^2 s^4)/(1 - 2 s^2 + k^2 s^4) (cn(2K/3) = k' sd(K/3))"
+            "{name} = sn(K/3), a root of k^2 s^4 - 2 k^2 s^3 + 2 s - 1 (sn(2K/3) = cd(K/3), DLMF 22.4.3, 22.6.5); dn(K/3) = k' s (1 - k^2 s^4)/(1 - 2 s^2 + k^2 s^4) (cn(2K/3) = k' sd(K/3))"
         ));
         self.mark_uncertified("sn(K/3) as a root of its triplication polynomial");
         Ok([s.into_val(), c.into_val(), d.into_val()])
