@@ -1,6 +1,7 @@
 //! The triple `(sn, cn, dn)` as exact values: the addition theorems (DLMF 22.8.1–3),
 //! multiples by doubling, the quarter-period shifts (DLMF 22.4.3, poles as the
-//! reciprocal forms) and the half-period values (DLMF 22.5.1), for one modulus table.
+//! reciprocal forms), the half-period values (DLMF 22.5.1) and the values at `K/3`
+//! (module `thirds`), for one modulus table.
 
 use super::error::AlgResult;
 use super::ring::{Origin, Ring};
@@ -189,9 +190,22 @@ impl Triples<'_> {
         Ok(v)
     }
 
-    /// The triple at `Σ nⱼ bⱼ + p·K/2 + q·iK'/2`.
-    pub fn at(&self, n: &[i64], p: i64, q: i64) -> AlgResult<[Val; 3]> {
+    /// `(sn, cn, dn)(K/3)` (module `thirds`).
+    fn third(&self) -> AlgResult<[Val; 3]> {
+        if let Some(v) = self.ring.state().tables[self.t].third_k.clone() {
+            return Ok(v);
+        }
+        let v = self.ring.third_period_values(self.t, &self.kp()?)?;
+        self.ring.state().tables[self.t].third_k = Some(v.clone());
+        Ok(v)
+    }
+
+    /// The triple at `Σ nⱼ bⱼ + p·K/2 + q·iK'/2 + r·K/3`.
+    pub fn at(&self, n: &[i64], p: i64, q: i64, r: i64) -> AlgResult<[Val; 3]> {
         let mut v = self.combination(n)?;
+        for _ in 0..r.rem_euclid(12) {
+            v = self.add(&v, &self.third()?)?;
+        }
         if p.rem_euclid(2) == 1 {
             v = self.add(&v, &self.half(false)?)?;
         }

@@ -65,6 +65,10 @@ pub(crate) struct Table {
     pub k_var: Option<usize>,
     /// The field variable of `K'(k)`, once needed.
     pub kp_var: Option<usize>,
+    /// Whether `k_var`, `kp_var` are the complementary periods of the table of the
+    /// complementary modulus (`K(k) = K'(k')`, `K'(k) = K(k')` where `k² + k'² = 1`),
+    /// which the certificate format does not record.
+    pub linked: (bool, bool),
     /// The directions arguments are split into, with their values.
     pub dirs: Vec<(DirKey, Val)>,
     /// The base arguments.
@@ -75,6 +79,8 @@ pub(crate) struct Table {
     pub half_k: Option<[Val; 3]>,
     /// `(sn, cn, dn)(iK'/2)`, once needed.
     pub half_kp: Option<[Val; 3]>,
+    /// `(sn, cn, dn)(K/3)`, once needed (module `thirds`).
+    pub third_k: Option<[Val; 3]>,
     /// Every argument seen, over the directions (for a refined basis).
     pub seen: Vec<Vec<Rational>>,
     /// Hinted bases not yet made (their symbols do not exist yet).
@@ -90,11 +96,13 @@ impl Table {
             kp: None,
             k_var: None,
             kp_var: None,
+            linked: (false, false),
             dirs: Vec::new(),
             bases: Vec::new(),
             triples: HashMap::new(),
             half_k: None,
             half_kp: None,
+            third_k: None,
             seen: Vec::new(),
             pending: Vec::new(),
         }

@@ -74,6 +74,7 @@ fn kind_tag(k: &VarKind) -> &'static str {
         Zeta { .. } => "zeta",
         QuarterK { .. } => "K",
         QuarterKp { .. } => "Kp",
+        ThirdK { .. } => "snK3",
         Opaque { constant: true } => "constant",
         Opaque { constant: false } => "opaque",
         Jet { .. } => "jet",

@@ -165,13 +165,15 @@ impl Ring {
             VarKind::Named(def) => self.val_derivative(&def, jx),
             VarKind::Opaque { constant: true } => Ok(zero),
             VarKind::Opaque { constant: false } => self.opaque_derivative(j, jx),
-            VarKind::QuarterK { table } | VarKind::QuarterKp { table } => {
+            VarKind::QuarterK { table }
+            | VarKind::QuarterKp { table }
+            | VarKind::ThirdK { table } => {
                 let k = self.state().tables[table].k.clone();
                 if self.val_derivative(&k, jx)?.num.is_zero() {
                     Ok(zero)
                 } else {
                     Err(AlgebraError::Derivative(
-                        "of a quarter period whose modulus varies (needs E(k))".into(),
+                        "of a quarter period (or sn(K/3)) whose modulus varies (needs E(k))".into(),
                     ))
                 }
             }
@@ -215,6 +217,9 @@ impl Ring {
         let unknown = |why: &str| {
             AlgebraError::Derivative(format!("the derivative of {name} is unknown{why}"))
         };
+        if let Some(d) = self.opaque_call_derivative(j, jx)? {
+            return Ok(d);
+        }
         let Some(p) = p else {
             // a parameter of declared coordinates (a phase step δ) is independent of the
             // other parameters
@@ -246,6 +251,38 @@ impl Ring {
         let rhs = inner.v_add(&ds, &m(&dsdk, &dk)?, true)?;
 
         inner.v_div(&rhs, &cd)
+    }
+
+    /// The derivative of the opaque symbol `j` of a call with a rule: `ln x` has `x'/x`,
+    /// `am(u, k)` has `dn(u, k)·u'` for a modulus that does not depend on the variable
+    /// (DLMF 22.16.3); `None` for other symbols.
+    fn opaque_call_derivative(&self, j: usize, jx: usize) -> AlgResult<Option<Val>> {
+        let call = self.state().opaque_args.get(&j).cloned();
+        let Some((f, args)) = call else {
+            return Ok(None);
+        };
+        let inner = &self.inner;
+        match (f.as_str(), args.as_slice()) {
+            ("ln", [x]) => {
+                self.mark_uncertified("the derivative of ln by its rule");
+                let dx = self.val_derivative(&x.0, jx)?;
+                Ok(Some(inner.v_div(&dx, &x.0)?))
+            }
+            ("am", [u, k]) if !self.options().jets => {
+                if !self.val_derivative(&k.0, jx)?.num.is_zero() {
+                    return Err(AlgebraError::Derivative(
+                        "of am whose modulus varies (needs E(am u, k))".into(),
+                    ));
+                }
+                self.mark_uncertified("the derivative of am by its rule (DLMF 22.16.3)");
+                let du = self.val_derivative(&u.0, jx)?;
+                let us = Sym::restored(self, u.clone());
+                let ks = Sym::restored(self, k.clone());
+                let d = us.dn(&ks)?;
+                Ok(Some(inner.v_mul(&d.val, &du)?))
+            }
+            _ => Ok(None),
+        }
     }
 
     /// The symbol `Z = E(am v, k) − k'² v` of opaque symbol `j` (its values from the

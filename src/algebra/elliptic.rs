@@ -43,12 +43,13 @@ fn pad(v: &mut Vec<Rational>, n: usize) {
     }
 }
 
-/// The split of an argument: coefficients over directions, then multiples of K/2 and
-/// iK'/2.
+/// The split of an argument: coefficients over directions, then multiples of K/2,
+/// iK'/2 and K/3 (`third_k` in 0..3).
 struct Split {
     vec: Vec<Rational>,
     half_k: i64,
     half_kp: i64,
+    third_k: i64,
 }
 
 /// An argument as `(table, [(base, n)], half_k, half_kp)`: Σ n·base + half_k·K/2 +
@@ -93,7 +94,41 @@ impl Ring {
         }
         let mut st = self.state();
         st.tables.push(t);
-        Ok(st.tables.len() - 1)
+        let t = st.tables.len() - 1;
+        drop(st);
+        self.link_complementary(t)?;
+        Ok(t)
+    }
+
+    /// The tables of moduli `k`, `k'` with `k² + k'² = 1` exactly share their quarter
+    /// periods crosswise: `K(k') = K'(k)` and `K'(k') = K(k)` (K depends on k² only), so
+    /// that `K'(k)` inside sn, cn, dn of modulus `k'` is its quarter period (as in
+    /// Jacobi's imaginary transformation of a complex argument).
+    fn link_complementary(&self, t: usize) -> AlgResult<()> {
+        let n = self.state().tables.len();
+        for t0 in (0..n).filter(|&t0| t0 != t) {
+            let (a, b) = {
+                let st = self.state();
+                (st.tables[t].k2.clone(), st.tables[t0].k2.clone())
+            };
+            let sum = self.inner.v_add(&a, &b, false)?;
+            let one = self.inner.const_val(&Rational::from(1));
+            if !self.inner.v_add(&sum, &one, true)?.num.is_zero() {
+                continue;
+            }
+            let mut st = self.state();
+            let (k0, kp0) = (st.tables[t0].k_var, st.tables[t0].kp_var);
+            let tb = &mut st.tables[t];
+            if tb.k_var.is_none() && kp0.is_some() {
+                tb.k_var = kp0;
+                tb.linked.0 = true;
+            }
+            if tb.kp_var.is_none() && k0.is_some() {
+                tb.kp_var = k0;
+                tb.linked.1 = true;
+            }
+        }
+        Ok(())
     }
 
     /// The quarter period `K(k)` as a transcendental symbol.
@@ -139,7 +174,11 @@ impl Ring {
         } else {
             st.tables[t].k_var = Some(j);
         }
+        let others: Vec<usize> = (0..st.tables.len()).filter(|&o| o != t).collect();
         drop(st);
+        for o in others {
+            self.link_complementary(o)?;
+        }
         Ok(self.var_sym(j))
     }
 
@@ -193,7 +232,11 @@ impl Ring {
                 )))
             }
         };
-        let half_k = to_int(&hk, "K")?;
+        let linked = self.state().tables[t].linked;
+        if (hk != 0 && linked.0) || (hkp != 0 && linked.1) {
+            self.mark_uncertified("a quarter period of the complementary modulus");
+        }
+        let (half_k, third_k) = halves_and_thirds(&hk, &to_int)?;
         let half_kp = to_int(&hkp, "iK'")?;
         let mut st = self.state();
         let table = &mut st.tables[t];
@@ -217,6 +260,7 @@ impl Ring {
             vec,
             half_k,
             half_kp,
+            third_k,
         })
     }
 
@@ -363,6 +407,11 @@ impl Ring {
     pub(crate) fn combination(&self, k: &Val, u: &Val) -> AlgResult<Combination> {
         let t = self.table_of(&Sym::from_val(self, k.clone(), None))?;
         let split = self.split(t, u)?;
+        if split.third_k != 0 {
+            return Err(AlgebraError::NotAlgebraic(
+                "a shift by a third of K in a certificate".into(),
+            ));
+        }
         let n = self.coordinates(t, &split.vec)?;
         let combo = n
             .iter()
@@ -714,13 +763,36 @@ impl Ring {
     }
 }
 
+/// `h·K/2` (with `h` in halves of K, from an argument's split) as `a·K/2 + b·K/3` with
+/// `b` in 0..3: `h = m/3` with `m = 3a + 2b`; an error unless `3h` is an integer.
+fn halves_and_thirds(
+    h: &Rational,
+    to_int: &dyn Fn(&Rational, &str) -> AlgResult<i64>,
+) -> AlgResult<(i64, i64)> {
+    if *h.denom() == 1 {
+        return Ok((to_int(h, "K")?, 0));
+    }
+    let m = to_int(&(h.clone() * 3u32), "K (a multiple of K/6)")?;
+    let b = (2 * m).rem_euclid(3);
+    Ok(((m - 2 * b) / 3, b))
+}
+
+/// Notes one expansion (see [`instance_note`]); a shift by a third of K leaves the proof
+/// without a certificate (the format records multiples of K/2 and iK'/2 only).
+fn note_expansion(ring: &Ring, t: usize, combo: &[(usize, i64)], split: &Split, arg: &Sym) {
+    let shifts = (split.half_k, split.half_kp, split.third_k);
+    ring.note(instance_note(ring, t, combo, shifts, arg));
+    if split.third_k != 0 {
+        ring.mark_uncertified("a shift by a third of K");
+    }
+}
+
 /// The reader's note for one expansion: which bases, shifts and half periods.
 fn instance_note(
     ring: &Ring,
     t: usize,
     combo: &[(usize, i64)],
-    hk: i64,
-    hkp: i64,
+    (hk, hkp, tk): (i64, i64, i64),
     arg: &Sym,
 ) -> String {
     let st = ring.state();
@@ -735,9 +807,15 @@ fn instance_note(
     if hk % 2 != 0 || hkp % 2 != 0 {
         used.push("22.5.1");
     }
+    let third = if tk != 0 {
+        used.push("sn(K/3) by triplication");
+        format!(" + {tk}*K/3")
+    } else {
+        String::new()
+    };
     drop(st);
     format!(
-        "sn, cn, dn({}) with argument {} + {hk}*K/2 + {hkp}*iK'/2 by {}",
+        "sn, cn, dn({}) with argument {} + {hk}*K/2 + {hkp}*iK'/2{third} by {}",
         arg.render_short(60),
         if bases.is_empty() {
             "0".to_string()
@@ -772,6 +850,12 @@ impl Sym {
         if !self.ring.same(&k.ring) {
             return Err(AlgebraError::RingMismatch);
         }
+        if k.is_negative_modulus() {
+            // sn, cn, dn depend on k² only (DLMF 22.17.1): an identity of functions, so
+            // the points only choose which of the equal forms to expand
+            ring.note("sn, cn, dn at the modulus -k are those at k (DLMF 22.17.1)".into());
+            return self.sncndn(&k.negate());
+        }
         let t = ring.table_of(k)?;
         let (arg, sign) = ring.with_equivalents(t, &self.val)?;
         let split = ring.split(t, &arg)?;
@@ -784,7 +868,7 @@ impl Sym {
         ring.better_bases_first(t, &n)?;
         let tr = super::addition::Triples { ring, t };
         let mut v = tr
-            .at(&n, split.half_k, split.half_kp)
+            .at(&n, split.half_k, split.half_kp, split.third_k)
             .map_err(|e| match e {
                 AlgebraError::DivisionByZero => {
                     AlgebraError::Pole(format!("sn, cn, dn at {}", self.render_short(80)))
@@ -813,14 +897,7 @@ impl Sym {
             .filter(|(_, m)| **m != 0)
             .map(|(j, m)| (j, *m))
             .collect();
-        ring.note(instance_note(
-            ring,
-            t,
-            &combo,
-            split.half_k,
-            split.half_kp,
-            self,
-        ));
+        note_expansion(ring, t, &combo, &split, self);
         let mk = |f: &'static str, val: &Val| {
             let node = self.node.as_ref().map(|a| {
                 Node::with_nf(
@@ -839,6 +916,15 @@ impl Sym {
         };
         let [s, c, d] = &v;
         Ok((mk("sn", s), mk("cn", c), mk("dn", d)))
+    }
+
+    /// Whether this modulus is real and negative at every domain point (then sn, cn,
+    /// dn are expanded at its negative, DLMF 22.17.1).
+    fn is_negative_modulus(&self) -> bool {
+        let prec = self.ring.precision();
+        (0..self.ring.points())
+            .all(|p| self.val.sh.is_real_at(p, prec) && self.val.sh.v[p].real().is_sign_negative())
+            && !self.is_exact_zero()
     }
 
     /// `sn(self, k)`, see [`Sym::sncndn`].

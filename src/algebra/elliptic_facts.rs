@@ -121,7 +121,9 @@ impl Ring {
             VarKind::Sn { table, base } | VarKind::Zeta { table, base } => {
                 (self.state().tables[table].bases.get(base)).is_some_and(|b| b.real)
             }
-            VarKind::QuarterK { table } | VarKind::QuarterKp { table } => self.real_modulus(table),
+            VarKind::QuarterK { table }
+            | VarKind::QuarterKp { table }
+            | VarKind::ThirdK { table } => self.real_modulus(table),
             VarKind::Opaque { .. } => self.state().signs.real_opaque.contains(&j),
             VarKind::Jet { ref arg, ref k, .. } => {
                 self.is_real(arg, depth + 1) && self.is_real(k, depth + 1)

@@ -108,6 +108,7 @@
 //! ```
 
 mod addition;
+mod algebraic;
 mod base_table;
 mod budget;
 pub mod certificate;
@@ -141,6 +142,7 @@ pub mod split;
 mod square_classes;
 mod sym;
 mod symbols;
+mod thirds;
 mod val;
 pub mod witness;
 

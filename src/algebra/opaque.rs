@@ -64,6 +64,21 @@ impl Sym {
         })
     }
 
+    /// `am(u, k)` by rule: `u` itself at `k = 0` (DLMF 22.16.4), else an opaque symbol
+    /// whose derivative in `u` is `dn(u, k)` (DLMF 22.16.3; module `derive`).
+    pub(crate) fn am_rule(u: &Sym, k: &Sym) -> AlgResult<Sym> {
+        if k.is_exact_zero() {
+            u.ring.note("am(u, 0) = u (DLMF 22.16.4)".into());
+            u.ring.mark_uncertified("am(u, 0) = u by its rule");
+            return Ok(u.clone());
+        }
+        Sym::opaque_call("am", &[u, k], |z| {
+            let real = |c: &Complex| c.imag().is_zero().then(|| c.real().clone());
+            let a = crate::special::am(&real(&z[0])?, &real(&z[1])?).ok()?;
+            Some(Complex::with_val(a.prec(), (a, 0)))
+        })
+    }
+
     /// `F(φ, k)` by rule: an opaque symbol `v`; when `φ = asin x`, `v` has `sn v = x`,
     /// `cn v = √(1 − x²)`, `dn v = √(1 − k²x²)` (am v = φ ∈ [−π/2, π/2], DLMF 22.16.1 and
     /// 22.16.11), which the elliptic expansions use.

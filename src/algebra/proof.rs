@@ -180,6 +180,9 @@ impl Ring {
             }
             return Ok((Outcome::Proved, None));
         }
+        if self.algebraic_zero(&d)? {
+            return Ok((Outcome::Proved, None));
+        }
         let n = d.terms();
         // the carried error scale may be far too pessimistic (a long sum): a value is
         // called 0 at a point only if its normal form, evaluated afresh, is 0 there too
@@ -207,6 +210,21 @@ impl Ring {
             }
         };
         Ok((Outcome::NotProved(reason), witness))
+    }
+
+    /// Whether the non-zero normal form `d` vanishes modulo the relations of the
+    /// algebraic symbols (module `algebraic`), its values being 0 as well.
+    fn algebraic_zero(&self, d: &Sym) -> AlgResult<bool> {
+        if self.state().algebraic.is_empty() || !self.inner.algebraic_rem(&d.val.num)?.is_zero() {
+            return Ok(false);
+        }
+        if !d.val.sh.all_small(self.precision()) {
+            return Err(AlgebraError::Internal(
+                "lhs - rhs is 0 modulo an algebraic relation but the numeric values differ (a bug in the prover)".into(),
+            ));
+        }
+        self.note("lhs - rhs is 0 modulo the defining polynomials of the algebraic symbols".into());
+        Ok(true)
     }
 
     /// Does the ring hold a named quantity as a free symbol ([`Ring::named`])?

@@ -132,6 +132,9 @@ pub(crate) enum VarKind {
     QuarterK { table: usize },
     /// The complementary quarter period `K'(k)` of a table.
     QuarterKp { table: usize },
+    /// `sn(K/3)` of a table: algebraic over the modulus, a root of its triplication
+    /// polynomial (module `thirds`).
+    ThirdK { table: usize },
     /// A symbol the prover cannot expand (constant: derivative 0, else unknown).
     Opaque { constant: bool },
     /// Jet symbol `f` (0: sn, 1: cn, 2: dn) of an argument at a modulus (module `jets`):
@@ -156,6 +159,7 @@ pub(crate) fn describe_kind(k: &VarKind) -> String {
         VarKind::Zeta { .. } => "E(am u, k) - k'^2 u of a base argument".into(),
         VarKind::QuarterK { .. } => "quarter period K(k)".into(),
         VarKind::QuarterKp { .. } => "complementary quarter period K'(k)".into(),
+        VarKind::ThirdK { .. } => "sn(K/3), a root of its triplication polynomial".into(),
         VarKind::Opaque { .. } => "opaque symbol".into(),
         VarKind::Jet { f, .. } => format!("{} of an argument (jet symbol)", JET_NAMES[*f as usize]),
     }
@@ -268,6 +272,9 @@ pub(crate) struct State {
     pub values_table: Option<Arc<Vec<Vec<Complex>>>>,
     /// The sign-only state: proved signs, stated hypotheses, facts, sign symbols.
     pub signs: SignState,
+    /// Field variables algebraic over the others: `(FLINT variable, defining
+    /// polynomial)` (module `algebraic`).
+    pub algebraic: Vec<(usize, Arc<Poly>)>,
 }
 
 pub(crate) struct Inner {
@@ -333,6 +340,7 @@ impl Ring {
             opaque_zeta: std::collections::BTreeMap::new(),
             values_table: None,
             signs: SignState::default(),
+            algebraic: Vec::new(),
         };
         Ring {
             inner: Arc::new(Inner {

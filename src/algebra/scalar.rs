@@ -213,6 +213,7 @@ impl Scalar for Sym {
 impl Real for Sym {
     const FIXED: bool = false;
     const BY_RULE: bool = true;
+    const DEFERS_DOMAIN_CHECKS: bool = true;
     fn failure(&self) -> Option<String> {
         self.ring.error().map(|e| e.to_string())
     }
@@ -260,7 +261,14 @@ impl Real for Sym {
         self.not_algebraic("exp")
     }
     fn ln(&self) -> Self {
-        self.not_algebraic("ln")
+        // an opaque symbol, undefined (an error) where the argument is not positive;
+        // its derivative is x'/x (module `derive`)
+        let r = Sym::opaque_call("ln", &[self], |z| {
+            let positive =
+                z[0].imag().is_zero() && z[0].real().is_sign_positive() && !z[0].real().is_zero();
+            positive.then(|| z[0].clone().ln())
+        });
+        Sym::or_poison(&self.ring, r)
     }
     fn sin(&self) -> Self {
         // sin u = sn(u, 0) (DLMF 22.5.ii: at k = 0, sn = sin, cn = cos, dn = 1)
@@ -278,6 +286,9 @@ impl Real for Sym {
     fn asin(&self) -> Self {
         let r = Sym::opaque_call("asin", &[self], |z| Some(z[0].clone().asin()));
         Sym::or_poison(&self.ring, r)
+    }
+    fn am_by_rule(u: &Self, k: &Self) -> Result<Self, String> {
+        Sym::am_rule(u, k).map_err(|e| e.to_string())
     }
     fn ellipf_by_rule(phi: &Self, k: &Self) -> Result<Self, String> {
         Sym::ellipf_rule(phi, k).map_err(|e| e.to_string())

@@ -305,6 +305,7 @@ impl Inner {
         ])
         .div(&a.sh);
         let (conj, norm) = self.rationalise(&a.num)?;
+        self.check_algebraic_divisor(&norm)?;
         // 1/(N/D) = D·conj/norm
         let num = self.reduce(a.den.mul(&conj));
         let (num, den) = self.normalise(num, norm)?;
@@ -351,6 +352,7 @@ impl Inner {
             let inv = self.v_inv(b)?;
             self.v_mul(a, &inv)?
         } else {
+            self.check_algebraic_divisor(&b.num)?;
             // (an/ad) / (bn/bd) = an·bd / (ad·bn)
             let flipped = Val {
                 num: b.den.clone(),

@@ -154,6 +154,7 @@ impl<R: Real> Real for Dual<R> {
     const BY_RULE: bool = R::BY_RULE;
     const FIXED: bool = R::FIXED;
     const ENCLOSES: bool = R::ENCLOSES;
+    const DEFERS_DOMAIN_CHECKS: bool = R::DEFERS_DOMAIN_CHECKS;
     // the elliptic rules of duals over enclosures (module `dual_elliptic`); the prover
     // differentiates its symbols by its own rules
     fn sncndn_by_rule(u: &Self, k: &Self) -> Result<(Self, Self, Self), String> {

@@ -328,6 +328,11 @@ pub trait Real: Scalar + PartialOrd {
     /// balls), so that an algorithm whose result is not an enclosure (an iteration
     /// stopped after some steps) must not run on it?  `false` for every other type.
     const ENCLOSES: bool = false;
+    /// Does this type check the domain of `ln` itself (the prover's symbols: an opaque
+    /// symbol whose values are undefined where the argument is not positive), so that
+    /// the evaluator must not compare the argument with 0 (a sign the prover would have
+    /// to prove)?  `false` for every numeric type.
+    const DEFERS_DOMAIN_CHECKS: bool = false;
     /// The value as a [`Ball`] when the type is one; `None` for every other type.
     fn as_ball(&self) -> Option<&Ball> {
         None
@@ -344,6 +349,11 @@ pub trait Real: Scalar + PartialOrd {
     /// `(sn, cn, dn)(u, k)` by the type's own rule (only called when [`Real::BY_RULE`]).
     fn sncndn_by_rule(_u: &Self, _k: &Self) -> Result<(Self, Self, Self), String> {
         Err("sn, cn, dn have no rule for this type".into())
+    }
+    /// The amplitude `am(u, k)` by the type's own rule (only called when
+    /// [`Real::BY_RULE`]).
+    fn am_by_rule(_u: &Self, _k: &Self) -> Result<Self, String> {
+        Err("am is not algebraic: no exact rule for it".into())
     }
     /// The quarter period `K(k)` (or `K'(k)` when `complementary`) by the type's own rule
     /// (only called when [`Real::BY_RULE`]).

@@ -232,7 +232,9 @@ pub fn sncndn_m<R: Real>(u: &R, m: &R) -> Result<(R, R, R), SpecialError> {
 /// assert!((am(&(3.0 * kk), &k).unwrap() - 1.5 * std::f64::consts::PI).abs() < 1e-14);
 /// ```
 pub fn am<R: Real>(u: &R, k: &R) -> Result<R, SpecialError> {
-    super::refuse_by_rule::<R>("am")?;
+    if R::BY_RULE {
+        return R::am_by_rule(u, k).map_err(SpecialError::Rule);
+    }
     check_modulus(k)?;
     if *k > k.one() {
         return Err(SpecialError::ModulusOutOfRange(format!(

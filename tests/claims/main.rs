@@ -19,6 +19,7 @@ mod ode_proofs;
 mod partials;
 mod perturbations;
 mod proof_hints;
+mod rational_shifts;
 mod series_orders;
 mod sign_cases;
 mod sound_proofs;
