@@ -14,13 +14,14 @@ use crate::numbers::Real;
 /// `s` and cosine `c` of the amplitude and their product `sc`,
 /// `k² = m` and `k'² = mc`: `Z(φ, k)·K(k)` (DLMF
 /// 19.2.33; the form Boost uses).  Zero where `k s c = 0`.  The product and `Δ` are
-/// formed in double-double (fixed precision; see [`Dd::value`]), and for `f64` also
-/// `R_J` ([`rj_dd`], with `Δ²` and `k'²` unrounded), so that with `s`, `c` in
-/// double-double the result is rounded about once.
+/// formed in double-double (fixed precision; see [`Dd::value`]), and with `precise`
+/// for `f64` also `R_J` ([`rj_dd`], with `Δ²` and `k'²` unrounded, about 2.4 times the
+/// cost of Z), so that with `s`, `c` in double-double the result is rounded about once.
 fn zeta_times_k<R: Real>(
     (s, c, sc): (&Dd<R>, &Dd<R>, &Dd<R>),
     m: &Dd<R>,
     mc: &Dd<R>,
+    precise: bool,
 ) -> Result<Dd<R>, SpecialError> {
     let d2 = c.sqr().add(&s.sqr().mul(mc));
     let prod = m.mul(sc);
@@ -30,7 +31,7 @@ fn zeta_times_k<R: Real>(
     let r = &mc.hi;
     let three = Dd::from(r.from_i64(3));
     // f64: R_J in double-double (a Dual's derivative parts need R_J in R itself)
-    let j = if R::PLAIN_F64 {
+    let j = if precise && R::PLAIN_F64 {
         rj_dd(&Dd::from(r.zero()), mc, &Dd::from(r.one()), &d2)?
     } else {
         Dd::from(rj(&r.zero(), &mc.value(), &r.one(), &d2.value())?)
@@ -76,7 +77,7 @@ pub fn jacobizeta<R: Real>(phi: &R, k: &R) -> Result<R, SpecialError> {
     let sc = s.mul(&c);
     let k2 = Dd::from(kw.clone()).sqr();
     let kp2 = Dd::from(kw.one()).add(&k2.neg());
-    let zk = zeta_times_k((&s, &c, &sc), &k2, &kp2)?;
+    let zk = zeta_times_k((&s, &c, &sc), &k2, &kp2, true)?;
     let inv_k = inv_quarter_period_dd(&kw)?;
     Ok(zk.mul(&inv_k).value().with_prec(n))
 }
@@ -140,7 +141,14 @@ pub fn heumanlambda<R: Real>(phi: &R, k: &R) -> Result<R, SpecialError> {
     });
     let sc = Dd::from(sc);
     let (st, ct) = (Dd::from(st), Dd::from(ct));
-    let zk = zeta_times_k((&st, &ct, &sc), &Dd::from(kp2), &Dd::from(k2.clone()))?;
+    // R_J in f64: Λ₀ is within 2 ε so (its F(θ, k') is in f64 too), at a quarter of the
+    // cost of the double-double R_J (small k: many duplication steps)
+    let zk = zeta_times_k(
+        (&st, &ct, &sc),
+        &Dd::from(kp2),
+        &Dd::from(k2.clone()),
+        false,
+    )?;
     let (a, a_c) = agm_pair(&kw)?;
     // (F + Z·K(k')/AGM(1, k')) / K(k'), 1/K(k') = 2 AGM(1, k)/π
     let two_pi = if R::FIXED {

@@ -80,18 +80,17 @@ pub fn errors_by_fn(rows: &[Row], bits: u32) -> Vec<(String, f64, f64, usize)> {
 }
 
 /// The `f64` bound for a row: 2 ε for `E`, `E(φ)` (whose `R_D` sums its duplication
-/// terms with their rounding errors) and for `Π` (formed in double-double
+/// terms with their rounding errors), for `Λ₀` and for `Π` (formed in double-double
 /// from `sin φ`, `R_F`, `R_J`), but 2.5 ε for `Π` in the corner where `n sin²φ > 0.99`
 /// and `k > 0.999` (there `Π` is ill-conditioned in `φ`: `φ Π'/Π` reaches 38 in the
 /// table, and the rounding of `sin φ` alone moves `Π` by up to 1.4 ε); 1 ε for `Z`
-/// (`sin φ`, `cos φ`, `R_J` and the product in double-double, rounded about once) and
-/// 1.25 ε for `Λ₀` (its `Z` part so, `F(θ, k')` in `f64`); 16 ε for the theta functions (up to
+/// (`sin φ`, `cos φ`, `R_J` and the product in double-double, rounded about once); 16 ε
+/// for the theta functions (up to
 /// q = 0.9, where the values fall to 10⁻⁹ of their terms); 3.5 ε for K, F and the nome.
 fn f64_bound(r: &Row) -> f64 {
     let num = |i: usize| -> f64 { r[i].parse().unwrap() };
     match r[0].as_str() {
-        "E" | "Einc" => 2.0,
-        "Lambda" => 1.25,
+        "E" | "Einc" | "Lambda" => 2.0,
         "Pi" => {
             let (n, phi, k) = (num(1), num(2), num(3).abs());
             if n * phi.sin().powi(2) > 0.99 && k > 0.999 {
