@@ -160,6 +160,10 @@ pub trait Num: Scalar + PartialOrd {
     fn sncndn_complex(_u: &Cplx<Self>, _k: &Self) -> Result<[Cplx<Self>; 3], String> {
         unavailable::<Self, _>("sn/cn/dn")
     }
+    /// `[sn, cn, dn]` of complex `u` and a complex modulus `k`.
+    fn sncndn_complex_modulus(_u: &Cplx<Self>, _k: &Cplx<Self>) -> Result<[Cplx<Self>; 3], String> {
+        unavailable::<Self, _>("sn/cn/dn of a complex modulus")
+    }
     /// Amplitude am(u, k).
     fn am(_u: &Self, _k: &Self) -> Result<Self, String> {
         unavailable::<Self, _>("am")
@@ -290,6 +294,11 @@ impl<R: Real> Num for R {
     }
     fn sncndn_complex(u: &Cplx<Self>, k: &Self) -> Result<[Cplx<Self>; 3], String> {
         special::sncndn_complex(u, k)
+            .map(|(s, c, d)| [s, c, d])
+            .map_err(|e| e.to_string())
+    }
+    fn sncndn_complex_modulus(u: &Cplx<Self>, k: &Cplx<Self>) -> Result<[Cplx<Self>; 3], String> {
+        special::sncndn_complex_modulus(u, k)
             .map(|(s, c, d)| [s, c, d])
             .map_err(|e| e.to_string())
     }

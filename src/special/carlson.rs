@@ -12,7 +12,7 @@
 //! subtraction.  Any precision: the number of steps grows like `prec/12`.
 
 use super::SpecialError;
-use super::dd::{two_prod, two_sum, with_value};
+use super::dd::{Dd, two_prod, two_sum, with_value};
 use crate::numbers::Real;
 
 /// Upper bound on duplication steps (each shrinks the spread fourfold: 2 bits).
@@ -260,4 +260,90 @@ pub(crate) fn rj<R: Real>(x: &R, y: &R, z: &R, p: &R) -> Result<R, SpecialError>
     let e5 = xyz * p2;
     let head = series5([e2, e3, e4, e5]) / (a.clone() * a.sqrt());
     Ok(sum.finish(head.mul_2si(-2 * n), 1))
+}
+
+/// `√x` of a double-double, an exact zero taken as it is ([`sqrt0`]).
+fn sqrt0_dd<R: Real>(x: &Dd<R>) -> Dd<R> {
+    if x.hi.is_zero() { x.clone() } else { x.sqrt() }
+}
+
+/// `(1 + t)/d` as a double-double for a small `t` in `f64` (its own rounding counts
+/// only `|t|·2⁻⁵³`).
+fn one_plus_over<R: Real>(t: f64, d: &Dd<R>) -> Dd<R> {
+    let inv = Dd::from(d.hi.one()).div(d);
+    inv.add(&inv.mul_r(&d.hi.from_f64(t)))
+}
+
+/// `R_C(1, 1 + e) − 1` in `f64` for `|e| ≤ 1/16` (the series of [`rc1`] less its 1),
+/// else `None`.
+fn rc1_minus_one(e: f64) -> Option<f64> {
+    if e.abs() > 1.0 / 16.0 {
+        return None;
+    }
+    // Σ_{j ≥ 1} (−e)^j/(2j + 1)
+    let (mut sum, mut term, mut j) = (0.0, 1.0, 0.0);
+    while term.abs() > 1e-20 {
+        term *= -e;
+        j += 1.0;
+        sum += term / (2.0 * j + 1.0);
+    }
+    Some(sum)
+}
+
+/// `R_J(x, y, z, p)` for the fixed-precision types in double-double (DLMF 19.16.2), for
+/// the arguments of [`rj`] given as double-doubles: the same duplication and
+/// fifth-order series (Carlson 1995 (2.36)–(2.40)) with the arguments, `λ`, the
+/// products `dₙ` and the terms `R_C(1, 1 + eₙ)/dₙ` in double-double (`R_C − 1` in
+/// `f64` where `|eₙ| ≤ 1/16`), so that the result is good to about `2⁻⁶²` relative
+/// before it is rounded, where [`rj`] in `f64` is good to about 1.5 ε.  One more
+/// duplication step than [`rj`] (spread `≤ 2⁻¹²`).  For `f64`: `eₙ` and the series
+/// are formed from the values alone, so the derivative parts of a `Dual` would not be
+/// carried through them.
+pub(crate) fn rj_dd<R: Real>(
+    x: &Dd<R>,
+    y: &Dd<R>,
+    z: &Dd<R>,
+    p: &Dd<R>,
+) -> Result<Dd<R>, SpecialError> {
+    let [x, y, z, p] = [x, y, z, p].map(Dd::norm);
+    let fifth = Dd::from(x.hi.one()).div(&Dd::from(x.hi.from_i64(5)));
+    let a0 = x.add(&y).add(&z).add(&p.mul_2si(1)).mul(&fifth);
+    let d = [&x, &y, &z].map(|v| a0.add(&v.neg()).v());
+    let spread = d.iter().fold((a0.v() - p.v()).abs(), |m, v| m.max(v.abs()));
+    let delta = p.add(&x.neg()).mul(&p.add(&y.neg())).mul(&p.add(&z.neg()));
+    let (mut x, mut y, mut z, mut p, mut a) = (x, y, z, p, a0);
+    let mut sum = Dd::from(x.hi.zero());
+    let mut n = 0i32;
+    while spread * 4f64.powi(-n) > a.v().abs() * 2f64.powi(-12) {
+        if n as usize >= MAX_STEPS {
+            return Err(no_convergence("R_J"));
+        }
+        let [sx, sy, sz, sp] = [&x, &y, &z, &p].map(sqrt0_dd);
+        let l = sx.mul(&sy).add(&sy.mul(&sz)).add(&sz.mul(&sx));
+        let dn = sp.add(&sx).mul(&sp.add(&sy)).mul(&sp.add(&sz)).norm();
+        // eₙ from the whole double-doubles (R_C(1, 1 + e) is ill-conditioned near e = −1)
+        let en = delta.div(&dn.sqr()).to_r().to_f64() * 2f64.powi(-6 * n);
+        let term = match rc1_minus_one(en) {
+            Some(t) => one_plus_over(t, &dn),
+            None => Dd::from(rc1(&x.hi.from_f64(en))).div(&dn),
+        };
+        sum = sum.add(&term.mul_2si(-2 * n));
+        let dup = |v: &Dd<R>| v.add(&l).mul_2si(-2);
+        (x, y, z, p, a) = (dup(&x), dup(&y), dup(&z), dup(&p), dup(&a));
+        n += 1;
+    }
+    let av = a.v();
+    let [xx, yy, zz] = d.map(|v| v * 4f64.powi(-n) / av);
+    let pp = -(xx + yy + zz) / 2.0;
+    let (xyz, p2) = (xx * yy * zz, pp * pp);
+    let e2 = xx * yy + xx * zz + yy * zz - 3.0 * p2;
+    let e3 = xyz + 2.0 * e2 * pp + 4.0 * p2 * pp;
+    let e4 = (2.0 * xyz + e2 * pp + 3.0 * p2 * pp) * pp;
+    let e5 = xyz * p2;
+    let series =
+        -3.0 * e2 / 14.0 + e3 / 6.0 + 9.0 * e2 * e2 / 88.0 - 3.0 * e4 / 22.0 - 9.0 * e2 * e3 / 52.0
+            + 3.0 * e5 / 26.0;
+    let head = one_plus_over(series, &a.mul(&a.sqrt()));
+    let six = Dd::from(x.hi.from_i64(6));
+    Ok(head.mul_2si(-2 * n).add(&sum.mul(&six)))
 }

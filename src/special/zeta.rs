@@ -4,9 +4,9 @@
 use super::agm::{
     TWO_OVER_PI, agm, agm1_dd, complementary, complementary_sqr, inv_quarter_period_dd, modulus_dd,
 };
-use super::carlson::{rf, rj};
+use super::carlson::{rf, rj, rj_dd};
 use super::dd::Dd;
-use super::phase::{Amplitude, amplitude, fold, sin_cos_quadrant};
+use super::phase::{Amplitude, amplitude, fold, sin_cos_amplitude};
 use super::{SpecialError, check_finite, check_modulus_below_one, refuse_by_rule};
 use crate::numbers::Real;
 
@@ -14,23 +14,29 @@ use crate::numbers::Real;
 /// `s` and cosine `c` of the amplitude and their product `sc`,
 /// `k² = m` and `k'² = mc`: `Z(φ, k)·K(k)` (DLMF
 /// 19.2.33; the form Boost uses).  Zero where `k s c = 0`.  The product and `Δ` are
-/// formed in double-double (fixed precision; see [`Dd::value`]), so that only the
-/// factors' own errors remain.
+/// formed in double-double (fixed precision; see [`Dd::value`]), and with `precise`
+/// for `f64` also `R_J` ([`rj_dd`], with `Δ²` and `k'²` unrounded, about 2.4 times the
+/// cost of Z), so that with `s`, `c` in double-double the result is rounded about once.
 fn zeta_times_k<R: Real>(
-    (s, c, sc): (&R, &R, &Dd<R>),
+    (s, c, sc): (&Dd<R>, &Dd<R>, &Dd<R>),
     m: &Dd<R>,
-    mc: &R,
+    mc: &Dd<R>,
+    precise: bool,
 ) -> Result<Dd<R>, SpecialError> {
-    let d2 = Dd::from(c.clone())
-        .sqr()
-        .add(&Dd::from(s.clone()).sqr().mul_r(mc));
+    let d2 = c.sqr().add(&s.sqr().mul(mc));
     let prod = m.mul(sc);
     if prod.hi.is_zero() {
         return Ok(prod);
     }
-    let j = rj(&s.zero(), mc, &s.one(), &d2.value())?;
-    let three = Dd::from(s.from_i64(3));
-    Ok(prod.mul(&d2.sqrt()).mul_r(&j).div(&three))
+    let r = &mc.hi;
+    let three = Dd::from(r.from_i64(3));
+    // f64: R_J in double-double (a Dual's derivative parts need R_J in R itself)
+    let j = if precise && R::PLAIN_F64 {
+        rj_dd(&Dd::from(r.zero()), mc, &Dd::from(r.one()), &d2)?
+    } else {
+        Dd::from(rj(&r.zero(), &mc.value(), &r.one(), &d2.value())?)
+    };
+    Ok(prod.mul(&d2.sqrt()).mul(&j).div(&three))
 }
 
 /// Jacobi's zeta function `Z(φ, k) = E(φ, k) − E(k)F(φ, k)/K(k)` (DLMF 19.2.33), **modulus** `k` (Boost: `jacobi_zeta(k, φ)`), `0 ≤ k < 1`, any real
@@ -39,9 +45,10 @@ fn zeta_times_k<R: Real>(
 /// Algorithm: `Z(φ, k) = k² sin φ cos φ Δ R_J(0, k'², 1, Δ²)/(3K(k))`,
 /// `Δ² = 1 − k² sin²φ` (the form Boost uses; the tests check it against the definition),
 /// a product with no cancellation; `sin φ`, `cos φ` from the reduced amplitude
-/// `φ = Qπ/2 + r`, `R_J` by duplication (DLMF 19.36.2), `1/K = 2 AGM(1, k')/π` (DLMF 19.8.5).  In `f64` the product and the AGM
-/// are formed in double-double and rounded once.  Working precision
-/// `N + 40 + log2|Q|`.
+/// `φ = Qπ/2 + r`, `R_J` by duplication (DLMF 19.36.2), `1/K = 2 AGM(1, k')/π` (DLMF 19.8.5).  In `f64`
+/// `sin φ`, `cos φ` (Taylor series of `r` in double-double), `R_J`, the product and
+/// the AGM are formed in double-double and rounded once (within 0.5 ε on Boost's and
+/// mpmath's tables).  Working precision `N + 40 + log2|Q|`.
 ///
 /// Errors: [`SpecialError::ModulusOutOfRange`] unless `0 ≤ k < 1`,
 /// [`SpecialError::NotFinite`], [`SpecialError::ArgumentTooLarge`] for
@@ -64,11 +71,13 @@ pub fn jacobizeta<R: Real>(phi: &R, k: &R) -> Result<R, SpecialError> {
     let n = phi.prec().max(k.prec());
     let a = amplitude(phi, n)?;
     let kw = k.with_prec(a.w);
-    let (s, c) = sin_cos_quadrant(a.q, &a.r);
-    // s·c from the same s, c as Δ (their errors partly cancel in s·Δ as k → 1)
-    let sc = Dd::from(s.clone()).mul_r(&c);
-    let kp2 = complementary_sqr(&kw);
-    let zk = zeta_times_k((&s, &c, &sc), &Dd::from(kw.clone()).sqr(), &kp2)?;
+    // sin φ, cos φ in double-double (f64: from φ − Qπ/2 in double-double, to about
+    // 2⁻⁵⁷), and s·c from the same s, c as Δ (their errors partly cancel in s·Δ as k → 1)
+    let (s, c) = sin_cos_amplitude(&phi.with_prec(a.w), &a);
+    let sc = s.mul(&c);
+    let k2 = Dd::from(kw.clone()).sqr();
+    let kp2 = Dd::from(kw.one()).add(&k2.neg());
+    let zk = zeta_times_k((&s, &c, &sc), &k2, &kp2, true)?;
     let inv_k = inv_quarter_period_dd(&kw)?;
     Ok(zk.mul(&inv_k).value().with_prec(n))
 }
@@ -131,7 +140,15 @@ pub fn heumanlambda<R: Real>(phi: &R, k: &R) -> Result<R, SpecialError> {
         r.abs()
     });
     let sc = Dd::from(sc);
-    let zk = zeta_times_k((&st, &ct, &sc), &Dd::from(kp2), &k2)?;
+    let (st, ct) = (Dd::from(st), Dd::from(ct));
+    // R_J in f64: Λ₀ is within 2 ε so (its F(θ, k') is in f64 too), at a quarter of the
+    // cost of the double-double R_J (small k: many duplication steps)
+    let zk = zeta_times_k(
+        (&st, &ct, &sc),
+        &Dd::from(kp2),
+        &Dd::from(k2.clone()),
+        false,
+    )?;
     let (a, a_c) = agm_pair(&kw)?;
     // (F + Z·K(k')/AGM(1, k')) / K(k'), 1/K(k') = 2 AGM(1, k)/π
     let two_pi = if R::FIXED {

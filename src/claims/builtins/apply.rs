@@ -134,20 +134,32 @@ fn jacobi<T: Num>(f: Builtin, a: &[Value<T>]) -> Result<Value<T>, String> {
 }
 
 /// `[sn, cn, dn](u, k)` for the arguments `[u, k]` of a Jacobi built-in (real or complex
+/// `u`; a real or a complex modulus `k`, the latter with a complex result also for a real
 /// `u`): all twelve functions are quotients of these three.
 pub fn jacobi_triple<T: Num>(a: &[Value<T>]) -> Result<[Value<T>; 3], String> {
     arity(a, 2)?;
+    if let Value::Complex(k) = &a[1] {
+        let u = match &a[0] {
+            Value::Real(u) => crate::numbers::Cplx::new(u.clone(), u.zero()),
+            Value::Complex(u) => u.clone(),
+            v => return Err(not_a_number_u(v)),
+        };
+        return Ok(T::sncndn_complex_modulus(&u, k)?.map(Value::Complex));
+    }
     let k = a[1].as_real()?;
     Ok(match &a[0] {
         Value::Real(u) => T::sncndn(u, &k)?.map(Value::Real),
         Value::Complex(u) => T::sncndn_complex(u, &k)?.map(Value::Complex),
-        v => {
-            return Err(format!(
-                "argument u must be real or complex, got a {}",
-                v.type_name()
-            ));
-        }
+        v => return Err(not_a_number_u(v)),
     })
+}
+
+/// The error for an argument `u` of a Jacobi built-in that is not a number.
+fn not_a_number_u<T: Num>(v: &Value<T>) -> String {
+    format!(
+        "argument u must be real or complex, got a {}",
+        v.type_name()
+    )
 }
 
 /// The Jacobi built-in `f` at the arguments `a`, from `[sn, cn, dn]` there
@@ -157,12 +169,19 @@ pub fn jacobi_pick<T: Num>(
     a: &[Value<T>],
     triple: &[Value<T>; 3],
 ) -> Result<Value<T>, String> {
-    let k = a[1].as_real()?;
+    // the modulus: real, or complex (then no special case k = 1 below)
+    let (one, k_is_one) = match &a[1] {
+        Value::Complex(k) => (k.re.one(), false),
+        v => {
+            let k = v.as_real()?;
+            (k.one(), (k.clone() - k.one()).is_zero())
+        }
+    };
     let g = JacobiFn::from_name(f.name()).ok_or("not a Jacobi function")?;
     let [s, c, d] = triple;
     let pick = |i: Option<usize>| i.map(|i| [s, c, d][i].clone());
     let (p, q) = g.parts();
-    let num = pick(p).unwrap_or_else(|| Value::Real(k.one()));
+    let num = pick(p).unwrap_or_else(|| Value::Real(one.clone()));
     let Some(den) = pick(q) else {
         return Ok(num);
     };
@@ -178,10 +197,9 @@ pub fn jacobi_pick<T: Num>(
     }
     let overflow = || format!("overflows at u = {}", at(&a[0]));
     // at k = 1, cn = dn = sech u: cd = dc = 1 exactly, also where sech u underflows
-    let unit = (k.clone() - k.one()).is_zero()
-        && matches!((p, q), (Some(1), Some(2)) | (Some(2), Some(1)));
+    let unit = k_is_one && matches!((p, q), (Some(1), Some(2)) | (Some(2), Some(1)));
     if unit && matches!(a[0], Value::Real(_)) {
-        return Ok(Value::Real(k.one()));
+        return Ok(Value::Real(one));
     }
     if zero {
         return Err(overflow());

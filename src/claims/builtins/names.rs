@@ -157,30 +157,30 @@ name_table! {
         Arg = "arg"("z"): Exact(1), "complex → real", Complex, Operator;
         /// a + b·i
         Cplx = "cplx"("a, b"): Exact(2), "real, real → complex", Complex, Name;
-        /// Jacobi sn (modulus k, not the parameter m = k²; real u: any real k, a negative one as |k| by DLMF 22.17.1; complex u: k ≥ 0)
-        Sn = "sn"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
+        /// Jacobi sn (modulus k, not the parameter m = k²; real u: any real k, a negative one as |k| by DLMF 22.17.1; complex u: k ≥ 0; a complex k, e.g. `cplx(0.6, 0.4)`, with real or complex u gives a complex value)
+        Sn = "sn"("u, k"): Exact(2), "real, real → real; complex, real → complex; real or complex, complex → complex", Elliptic, Upright;
         /// Jacobi cn (modulus k)
-        Cn = "cn"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
+        Cn = "cn"("u, k"): Exact(2), "real, real → real; complex, real → complex; real or complex, complex → complex", Elliptic, Upright;
         /// Jacobi dn (modulus k)
-        Dn = "dn"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
+        Dn = "dn"("u, k"): Exact(2), "real, real → real; complex, real → complex; real or complex, complex → complex", Elliptic, Upright;
         /// Jacobi cd = cn/dn (modulus k; Glaisher's notation, DLMF 22.2.10)
-        Cd = "cd"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
+        Cd = "cd"("u, k"): Exact(2), "real, real → real; complex, real → complex; real or complex, complex → complex", Elliptic, Upright;
         /// Jacobi dc = dn/cn (modulus k); a pole where cn = 0 is an error
-        Dc = "dc"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
+        Dc = "dc"("u, k"): Exact(2), "real, real → real; complex, real → complex; real or complex, complex → complex", Elliptic, Upright;
         /// Jacobi ns = 1/sn (modulus k); a pole where sn = 0 is an error
-        Ns = "ns"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
+        Ns = "ns"("u, k"): Exact(2), "real, real → real; complex, real → complex; real or complex, complex → complex", Elliptic, Upright;
         /// Jacobi nc = 1/cn (modulus k); a pole where cn = 0 is an error
-        Nc = "nc"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
+        Nc = "nc"("u, k"): Exact(2), "real, real → real; complex, real → complex; real or complex, complex → complex", Elliptic, Upright;
         /// Jacobi nd = 1/dn (modulus k)
-        Nd = "nd"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
+        Nd = "nd"("u, k"): Exact(2), "real, real → real; complex, real → complex; real or complex, complex → complex", Elliptic, Upright;
         /// Jacobi sc = sn/cn (modulus k); a pole where cn = 0 is an error
-        Sc = "sc"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
+        Sc = "sc"("u, k"): Exact(2), "real, real → real; complex, real → complex; real or complex, complex → complex", Elliptic, Upright;
         /// Jacobi sd = sn/dn (modulus k)
-        Sd = "sd"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
+        Sd = "sd"("u, k"): Exact(2), "real, real → real; complex, real → complex; real or complex, complex → complex", Elliptic, Upright;
         /// Jacobi cs = cn/sn (modulus k); a pole where sn = 0 is an error
-        Cs = "cs"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
+        Cs = "cs"("u, k"): Exact(2), "real, real → real; complex, real → complex; real or complex, complex → complex", Elliptic, Upright;
         /// Jacobi ds = dn/sn (modulus k); a pole where sn = 0 is an error
-        Ds = "ds"("u, k"): Exact(2), "real, real → real; complex, real → complex", Elliptic, Upright;
+        Ds = "ds"("u, k"): Exact(2), "real, real → real; complex, real → complex; real or complex, complex → complex", Elliptic, Upright;
         /// Jacobi amplitude
         Am = "am"("u, k"): Exact(2), "real, real → real", Elliptic, Upright;
         /// complete elliptic integral of the first kind
