@@ -20,6 +20,7 @@ mod partials;
 mod perturbations;
 mod proof_hints;
 mod rational_shifts;
+mod root_splits;
 mod series_orders;
 mod sign_cases;
 mod sound_proofs;
