@@ -55,7 +55,7 @@ fn a_prescribed_base_gets_a_certificate_with_its_value() {
 
 #[test]
 fn an_identity_without_a_proof_exits_1_with_its_reason() {
-    let (code, out, _) = run(&["prove", "sec4.eq-in-ell.g0"]);
+    let (code, out, _) = run(&["prove", "sec5.gamma-positive"]);
     assert_eq!(code, 1);
     assert!(out.contains("not proved: "), "{out}");
 }
