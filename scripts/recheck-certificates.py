@@ -41,6 +41,17 @@ This script:
     hypothesis must be the catalogue's table, stated by the claim and a premise, and the
     sign it gives the one stated (module certcheck.hypothesis); its condition and the
     paper's words are printed with the premise;
+  * a sign symbol (a root of radicand 1) with a definition `signsym S = sign (X)/(Y)`,
+    x = X/Y a constant multiple c v of an indeterminate v: S v has the sign of c, and a
+    sign test of b S with v dividing b takes the sign of c times that of b/v (a symbol
+    defined twice, or also named a posroot, is rejected);
+  * facts of the Jacobi functions: `fact Fi dn base B value (D)` (D the d of base B) or
+    `fact Fi dn tN` (a dn node, no iK' shift): the argument must be real by
+    construction (equivalents replaced) and the modulus real with 0 < k**2 < 1 proved
+    here, so the value is positive (DLMF 22.2.4, 22.4.1); `sign tN > 0 fact Fi factor
+    (F)/(G)` then needs tN = fact * F/G with F/G of the stated sign, proved here;
+  * `sign value (N)/(D) > 0`: the sign of a value written out (one the derivation made
+    only for a decision), proved here like any other sign line;
   * sn, cn, dn: recomputed from the base symbols with the addition theorems
     (DLMF 22.8.1-3), the quarter-period shifts (DLMF 22.4.3) and the half-period values,
     and the argument is checked to be the stated combination of the bases;
@@ -319,6 +330,8 @@ class Cert:
         self.ops = {}  # node id -> its operation, as tokens
         self.elliptic_nodes = []  # (sn|cn|dn, argument, modulus, value): the evaluator's
         self.charts = {}  # implicit map -> [(arguments' components, value's components)]
+        self.signsyms = {}  # sign symbol -> (index of the indeterminate x, sign c): sigma = sign(c x)
+        self.facts = {}  # fact name -> a value proved positive (dn of a real argument)
         self.chart_counts = (0, 0)
 
     # ---- the ring ----------------------------------------------------------------
@@ -722,6 +735,13 @@ class Cert:
             ok = self.frac_real(self.named[name])
         elif kind == "sn":
             ok = self.sn_square(name)
+        elif kind == "K":
+            # K(k) is real for a real modulus with 0 < k**2 < 1 (DLMF 19.2.8)
+            p = next((p for p in self.periods.values() if p["K"] is not None and p["K"].num == self.syms[name]), None)
+            ok = p is not None and self.frac_real(p["k"])
+            if ok:
+                k2 = self.mul(p["k"], p["k"])
+                ok = self.frac_sign(k2) == 1 and self.frac_sign(self.add(self.one, k2, -1)) == 1
         elif kind == "root":
             rad = next(a for r, _, a in self.roots if r == name)
             ok = self.frac_real(Frac(rad, self.ring.one)) and self.tower_sign(rad) == 1
@@ -754,8 +774,11 @@ class Cert:
         s = self.poly_sign(p)
         if s is not None or not p or depth >= 8:
             return s
+        s = self.sign_symbol_sign(p, depth)
+        if s is not None:
+            return s
         used = [k for k, deg in enumerate(p.degrees()) if deg > 0]
-        cands = [(name, i, rad) for name, i, rad in self.roots if i in used]
+        cands = [(name, i, rad) for name, i, rad in self.roots if i in used and name not in self.signsyms]
         if not cands:
             return None
         name, i, rad = cands[-1]
@@ -1148,9 +1171,14 @@ class Cert:
             self.alt_lines.append((sub, more))
         elif word == "posroot":
             self.need(self.kinds.get(rest.strip()) == "root", f"posroot of a non-root {rest[:40]}")
+            self.need(rest.strip() not in self.signsyms, f"posroot of the sign symbol {rest[:40]}")
             self.posroots[rest.strip()] = None
         elif word == "sign":
             self.sign_line(rest)
+        elif word == "signsym":
+            self.sign_symbol(rest)
+        elif word == "fact":
+            self.fact_line(rest)
         elif word == "claim":
             a, b = [s.strip() for s in rest.split("=")]
             self.need(self.eq(self.vals[a], self.vals[b]), f"claim {a} = {b} fails")
@@ -1178,20 +1206,33 @@ class Cert:
         `sign tN > 0 [square (A)/(B)] [hypothesis LABEL factor (F)/(G)]`: tN is (A/B)**2
         with A/B of a proved nonzero sign, and the value (or A/B) is the stated
         hypothesis' value times F/G, whose sign is proved here.  The hypothesis'
-        value is checked once the claim is read (certcheck.hypothesis)."""
-        m = re.fullmatch(r"(t\d+) ([<>]) 0(?: square (.+?))?(?: hypothesis (\S+) factor (.+))?", rest.strip())
+        value is checked once the claim is read (certcheck.hypothesis).  Or
+        `sign tN > 0 fact Fi factor (F)/(G)`: the value is the fact's (dn of a real
+        argument, checked by its `fact` line) times F/G, whose sign is proved here.
+        `sign value (N)/(D) > 0 ...` states the sign of a value written out (one the
+        derivation made only for a decision) with the same evidence."""
+        m = re.fullmatch(r"(t\d+|value .+?) ([<>]) 0(?: square (.+?))?(?: hypothesis (\S+) factor (.+))?"
+                         r"(?: fact (F\d+) factor (.+))?", rest.strip())
         self.need(m is not None, f"bad sign line {rest[:40]}")
-        t, rel, square, label, factor = m.groups()
+        t, rel, square, label, factor, fact, ffactor = m.groups()
+        self.need(fact is None or (label is None and square is None), f"bad sign line {rest[:40]}")
         want = 1 if rel == ">" else -1
-        value = self.vals[t]
+        value = self.vals[t] if t.startswith("t") else self.frac(t[len("value "):])
         base = value if square is None else self.frac(square)
         if square is not None:
             self.need(want == 1 and self.eq(value, self.mul(base, base)),
                       f"sign {t} {rel} 0: {t} is not the square of {square[:60]}")
-        if label is None:
-            got = self.frac_sign(base) or (self.alt_lines and self.alt_sign(base))
+        if fact is not None:
+            self.need(fact in self.facts, f"sign {t[:40]} {rel} 0: no fact {fact}")
+            f = self.frac(ffactor)
+            self.need(self.eq(value, self.mul(self.facts[fact], f)),
+                      f"sign {t[:40]} {rel} 0: the value is not the fact {fact} times the stated factor")
+            self.need(self.proved_sign(f) == want,
+                      f"sign {t[:40]} {rel} 0: the factor {ffactor[:60]} does not have that sign")
+        elif label is None:
+            got = self.proved_sign(base)
             self.need(got == want or (square is not None and got in (1, -1)),
-                      f"sign {t} {rel} 0 is not proved by the parametrization")
+                      f"sign {t[:40]} {rel} 0 is not proved by the parametrization")
         else:
             f = self.frac(factor)
             r = self.rational(f)
@@ -1200,8 +1241,83 @@ class Cert:
             self.hyp_signs.append((t, label, base, f, fsign, None if square is not None else want))
         self.checked += 1
         self.proved_signs.append((value, want))
-        if want == 1:
+        if want == 1 and t.startswith("t"):
             self.sign_lines.add(t)
+
+    def proved_sign(self, f):
+        """The sign of f: a rational constant's, or proved by a parametrization."""
+        r = self.rational(f)
+        if r is not None:
+            return (r > 0) - (r < 0) or None
+        return self.frac_sign(f) or (self.alt_lines and self.alt_sign(f)) or None
+
+    def sign_symbol(self, rest):
+        """`signsym S = sign (X)/(Y)`: the root S of radicand 1 (both signs in the
+        arithmetic) is sign(x) for x = c*v, c a nonzero rational and v an indeterminate,
+        so that S*v has the sign of c (where v != 0).  Arithmetic modulo S**2 = 1 holds for
+        both signs, so for this one; a sign test then uses S*v."""
+        name, _, val = rest.partition(" = ")
+        name = name.strip()
+        self.need(val.startswith("sign "), f"bad signsym line {rest[:40]}")
+        rad = next((a for r, _, a in self.roots if r == name), None)
+        self.need(rad is not None and rad == self.ring.one, f"signsym {name[:40]}: not a root of radicand 1")
+        self.need(name not in self.signsyms and name not in self.posroots, f"signsym {name}: defined twice")
+        x = self.frac(val[len("sign "):])
+        terms = list(x.num.terms())
+        self.need(x.den.is_ground and len(terms) == 1 and sum(terms[0][0]) == 1,
+                  f"signsym {name}: sign of a value that is no constant multiple of a symbol")
+        (monom, c), = terms
+        i = monom.index(1)
+        self.need(self.kinds.get(str(self.ring.symbols[i])) == "indeterminate",
+                  f"signsym {name}: sign of a value that is no multiple of an indeterminate")
+        d = int(x.den.LC)
+        self.signsyms[name] = (i, 1 if (c > 0) == (d > 0) else -1)
+
+    def sign_symbol_sign(self, p, depth):
+        """The sign of p = b*S for a sign symbol S = sign(c v) with v dividing b: the sign
+        of c times that of b/v (as S*v has the sign of c); None where p is not of that
+        form."""
+        for name, (vi, sc) in self.signsyms.items():
+            i = self.idx[name]
+            if p.degree(i) <= 0:
+                continue
+            if any(m[i] != 1 or m[vi] < 1 for m in p.itermonoms()):
+                return None
+            q = self.ring.from_dict({m[:i] + (0,) + m[i + 1:]: c for m, c in p.iterterms()})
+            q = self.ring.from_dict({m[:vi] + (m[vi] - 1,) + m[vi + 1:]: c for m, c in q.iterterms()})
+            s = self.tower_sign(q, depth + 1)
+            return None if s is None else sc * s
+        return None
+
+    def fact_line(self, rest):
+        """`fact Fi dn base B value (D)`: D is the d of base B; or `fact Fi dn tN`: tN is
+        a dn node.  Either way dn of an argument real by construction (after the
+        equivalents are replaced) at a real modulus with 0 < k**2 < 1 proved here, which
+        is positive (DLMF 22.2.4, 22.4.1: dn is real, never 0, 1 at 0 on the real line);
+        no shift by iK'."""
+        m = re.fullmatch(r"(F\d+) dn (?:base (\S+) value (.+)|(t\d+))", rest.strip())
+        self.need(m is not None, f"bad fact line {rest[:40]}")
+        name, bname, dtext, node = m.groups()
+        self.need(name not in self.facts, f"fact {name} stated twice")
+        if bname is not None:
+            self.need(bname in self.bases, f"fact {name}: no base {bname[:40]}")
+            b = self.bases[bname]
+            d, arg, k = self.frac(dtext), b["arg"], b["k"]
+            self.need(self.eq(d, b["d"]), f"fact {name}: the value is not dn of base {bname}")
+        else:
+            toks = self.ops.get(node)
+            self.need(toks is not None and toks[0] == "dn", f"fact {name}: {node} is no dn node")
+            self.need(int(toks[toks.index("halfiKp") + 1]) == 0, f"fact {name}: an argument shifted by iK'")
+            arg, _ = self.substitute_equivalents(self.vals[toks[1]])
+            k = next((b["k"] for bn, b in self.bases.items() if bn.startswith(f"b_{toks[3]}_")), None)
+            self.need(k is not None, f"fact {name}: no modulus")
+            d = self.vals[node]
+        self.need(self.frac_real(arg), f"fact {name}: dn of an argument that is not real by construction")
+        k2 = self.mul(k, k)
+        self.need(self.frac_real(k) and self.proved_sign(k2) == 1 and self.proved_sign(self.add(self.one, k2, -1)) == 1,
+                  f"fact {name}: dn at a modulus not proved real with 0 < k**2 < 1")
+        self.facts[name] = d
+        self.checked += 1
 
     def run(self, text, first_line=1):
         self.declare(text)

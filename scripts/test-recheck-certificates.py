@@ -287,6 +287,42 @@ class Cases:
                     recheck([os.path.join(DATA, "sqrt-multiple-unsigned.cert")], "--unbound"), False,
                     "square-root branch has no evidence")
 
+    def sign_evidence(self):
+        """The sign evidence of sign symbols, of dn of a real argument and of values
+        written out: accepted as stated, rejected when corrupted."""
+        def data(name):
+            return recheck([os.path.join(DATA, f"{name}.cert")], "--unbound")
+        self.expect("sqrt(x^2) = s x with the sign symbol s = sign(x) is accepted", data("sign-symbol"), True, "1 of 1")
+        self.expect("a sign symbol defined as sign(-x) does not prove s x > 0", data("sign-symbol-negated"), False,
+                    "sign t3 > 0 is not proved by the parametrization")
+        self.expect("a sign symbol defined as the sign of another variable does not prove s x > 0",
+                    data("sign-symbol-other"), False, "sign t3 > 0 is not proved by the parametrization")
+        self.expect("dn of a real argument at k = 1/2, as a base and as a dn node, is positive", data("dn-fact"), True,
+                    "1 of 1")
+        self.expect("dn > 0 is refused for a complex argument (i x)", data("dn-fact-complex"), False,
+                    "fact F1: dn of an argument that is not real by construction")
+        self.expect("dn > 0 is refused at k = 2 (k**2 outside (0, 1))", data("dn-fact-modulus-2"), False,
+                    "fact F0: dn at a modulus not proved real with 0 < k**2 < 1")
+        self.expect("a dn fact whose value is not the base's dn is refused", data("dn-fact-base-value"), False,
+                    "fact F0: the value is not dn of base b_1_1")
+        self.expect("a sign by a dn fact with a wrong factor is refused", data("dn-fact-factor"), False,
+                    "the value is not the fact F1 times the stated factor")
+        self.expect("the sign of a value written out (x + 1 > 0 for x > 0) is accepted", data("sign-value"), True,
+                    "1 of 1")
+        self.expect("the sign of a value written out that the parametrization does not prove is refused",
+                    data("sign-value-unproved"), False, "sign value (x - 2)/(1) > 0 is not proved")
+        t = self.tmp
+        rt = prove("sec4.ell-coord.roundtrip", t)
+        self.expect("sec4.ell-coord.roundtrip (signs by the sign symbols sgnM1, sgnM3) rechecks",
+                    recheck([write(t, "rt.cert", rt)]), True, "1 of 1")
+        self.expect("sec4.ell-coord.roundtrip with sgnM3 defined as sign(-M3) is rejected",
+                    recheck([write(t, "rt-bad.cert", rt.replace("signsym sgnM3 = sign (M3)/(1)",
+                                                                 "signsym sgnM3 = sign (-M3)/(1)"))]), False,
+                    "is not proved by the parametrization")
+        self.expect("sec4.ell-coord.roundtrip without the definition of sgnM3 is rejected",
+                    recheck([write(t, "rt-none.cert", without(rt, r"signsym sgnM3 "))]), False,
+                    "is not proved by the parametrization")
+
     def all_changed(self, cert_dir):
         certs = [f for f in os.listdir(cert_dir) if f.endswith(".cert")]
         cat = changed_catalogue(self.tmp)
@@ -305,6 +341,7 @@ def main(argv):
         cases.run()
         cases.hypothesis_signs()
         cases.multiples_of_roots()
+        cases.sign_evidence()
         if argv[1:2] == ["--all"] and len(argv) == 3:
             cases.all_changed(argv[2])
     print(f"{cases.count - len(cases.failures)} of {cases.count} recheck tests pass")

@@ -18,6 +18,11 @@
 //! sign t7 > 0                      # a sign the checker proves with a parametrization
 //! sign t8 > 0 hypothesis hypothesis.H factor (1)/(2)   # t8 = (H's value)·(1/2): by H
 //! sign t9 > 0 square (a)/(b) hypothesis hypothesis.H factor (F)/(G)  # t9 = (a/b)²
+//! sign value (N)/(D) > 0           # a value without a derivation, written out
+//! signsym sgnx = sign (x)/(1)      # a sign symbol's definition: sgnx·x > 0
+//! fact F0 dn base b_1_2 value (D)  # dn of a base of real argument, 0 < k² < 1: D > 0
+//! fact F1 dn t14                   # dn node t14 of a real argument: its value > 0
+//! sign t16 > 0 fact F1 factor (F)/(G)   # t16 = (t14's value)·(F/G), F/G of proved sign
 //! node t3 = t1 * t2 -> (N)/(D)     # an operation and, where it reduces, its normal form
 //! node t9 = sqrt t8 -> +1 (N)/(D)  # a square root: nf² = t8; the sign is an assumption
 //! node t12 = sn b_1:2,b_2:-1 K:1 iKp:0 k=(…) -> …  # sn(2b₁ − b₂ + K/2) by DLMF 22.8, 22.4, 22.5
@@ -211,13 +216,6 @@ impl Ring {
             let rel = if *s > 0 { ">" } else { "<" };
             let _ = writeln!(out, "part {} {rel} 0", json(&h.what));
         }
-        for f in &self.state().signs.folded {
-            let _ = writeln!(
-                out,
-                "# sign symbol (definition): {} = sign({}), so {} > 0",
-                f.name, f.value, f.positive
-            );
-        }
         for a in self.assumptions() {
             out.push_str(&assume_line(&a));
         }
@@ -241,14 +239,20 @@ impl Ring {
             (st.signs.proved_signs.clone(), vars, roots)
         };
         let evidence = self.state().signs.evidence.clone();
+        let (facts, valued) = {
+            let st = self.state();
+            (st.signs.fact_evidence.clone(), st.signs.valued.clone())
+        };
         // a factor of a hypothesis' value that is no constant has its sign proved with
         // the parametrization too
         let factors = (evidence.iter())
             .any(|e| e.factor.num.as_constant().is_none() || e.factor.den.as_constant().is_none());
-        let Some(par) =
-            (self.inner.opts.positivity.as_ref()).filter(|_| !signs.is_empty() || factors)
+        let Some(par) = (self.inner.opts.positivity.as_ref())
+            .filter(|_| !signs.is_empty() || factors || !facts.is_empty() || !valued.is_empty())
         else {
-            return hypothesis_sign_lines(&evidence, em);
+            let mut out = hypothesis_sign_lines(&evidence, em);
+            out.push_str(&self.fact_sign_lines(&facts, em));
+            return out;
         };
         let mut out = par.certificate_lines(&vars);
         for r in roots {
@@ -260,7 +264,61 @@ impl Ring {
                 let _ = writeln!(out, "sign t{id} {} 0", if s > 0 { ">" } else { "<" });
             }
         }
+        for (v, s) in valued {
+            let _ = writeln!(
+                out,
+                "sign value {} {} 0",
+                nf_text(&v.num, &v.den, em.names),
+                if s > 0 { ">" } else { "<" }
+            );
+        }
         out.push_str(&hypothesis_sign_lines(&evidence, em));
+        out.push_str(&self.fact_sign_lines(&facts, em));
+        out
+    }
+
+    /// The facts of the Jacobi functions that decide signs (`fact Fi dn base b_T_B value
+    /// (D)` or `fact Fi dn tN`: `dn` of a base, or the `dn` node of a derivation, whose
+    /// argument and modulus a recheck proves real, with `0 < k² < 1`), then the signs
+    /// they decide: `sign tN > 0 fact Fi factor (F)/(G)` (or `sign value (X) > 0 …`
+    /// for a value without a derivation), the value being the fact's times the factor.
+    fn fact_sign_lines(
+        &self,
+        evidence: &[super::sign_state::FactEvidence],
+        em: &mut Emitter<'_>,
+    ) -> String {
+        use super::sign_state::FactSource;
+        let facts = self.state().signs.facts.clone();
+        let mut used: Vec<usize> = evidence.iter().map(|e| e.fact).collect();
+        used.sort_unstable();
+        used.dedup();
+        let mut out = String::new();
+        for i in used {
+            let line = match &facts[i].source {
+                FactSource::Base(t, b) => format!(
+                    "fact F{i} dn base b_{}_{} value {}",
+                    t + 1,
+                    b + 1,
+                    nf_text(&facts[i].value.num, &facts[i].value.den, em.names)
+                ),
+                FactSource::Node(n) => format!("fact F{i} dn t{}", em.visit(n)),
+                FactSource::Unrecorded => continue,
+            };
+            let _ = writeln!(out, "{line}");
+        }
+        for e in evidence {
+            let what = match &e.node {
+                Some(n) => format!("t{}", em.visit(n)),
+                None => format!("value {}", nf_text(&e.value.num, &e.value.den, em.names)),
+            };
+            let _ = writeln!(
+                out,
+                "sign {what} {} 0 fact F{} factor {}",
+                if e.sign > 0 { ">" } else { "<" },
+                e.fact,
+                nf_text(&e.factor.num, &e.factor.den, em.names)
+            );
+        }
         out
     }
 
@@ -354,6 +412,16 @@ impl Ring {
                 r.name,
                 r.radicand.render(names),
                 r.note
+            );
+        }
+        // the sign symbols' definitions: σ = sign(x), so σ·x > 0
+        for f in &st.signs.folded {
+            let _ = writeln!(
+                out,
+                "signsym {} = sign {}  # {} > 0",
+                f.name,
+                nf_text(&f.x.num, &f.x.den, names),
+                f.positive
             );
         }
         // the inverses of sn, cn, dn: their values and, where the modulus varies, the

@@ -630,7 +630,7 @@ impl Ring {
                 }))
         })?;
         self.note(format!("sn_{nb} = sn({argtext})"));
-        let real = self.note_dn_positive(t, &arg, &d.val, &argtext);
+        let real = self.note_dn_positive((t, base), &arg, &d.val, &argtext);
         let mut st = self.state();
         if real {
             for r in st.roots.iter_mut() {
@@ -890,7 +890,6 @@ impl Sym {
                 )));
             }
         }
-        ring.note_dn_of_real_argument(t, &self.val, &v[2], || self.render_short(60));
         let combo: Vec<(usize, i64)> = n
             .iter()
             .enumerate()
@@ -915,7 +914,9 @@ impl Sym {
             Sym::from_val(ring, val.clone(), node)
         };
         let [s, c, d] = &v;
-        Ok((mk("sn", s), mk("cn", c), mk("dn", d)))
+        let (s, c, d) = (mk("sn", s), mk("cn", c), mk("dn", d));
+        ring.note_dn_of_real_argument(t, &self.val, &d, || self.render_short(60));
+        Ok((s, c, d))
     }
 
     /// Whether this modulus is real and negative at every domain point (then sn, cn,

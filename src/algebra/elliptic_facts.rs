@@ -12,6 +12,7 @@
 //! symbol is.
 
 use super::ring::{Ring, VarKind};
+use super::sign_state::{Fact, FactEvidence, FactSource};
 use super::sym::Sym;
 use super::val::Val;
 
@@ -27,39 +28,55 @@ impl Ring {
         }
     }
 
-    /// Records `dn > 0` for a new base argument `arg` of table `t`, whose `dn` is `d`,
-    /// when the argument is real and the modulus is proved in `(0, 1)`.
+    /// Records `dn > 0` for the new base `base` of table `t`, of argument `arg`, whose
+    /// `dn` is `d`, when the argument is real and the modulus is proved in `(0, 1)`.
     /// Returns whether the base is real.
-    pub(crate) fn note_dn_positive(&self, t: usize, arg: &Val, d: &Val, what: &str) -> bool {
+    pub(crate) fn note_dn_positive(
+        &self,
+        (t, base): (usize, usize),
+        arg: &Val,
+        d: &Val,
+        what: &str,
+    ) -> bool {
         let real_base = self.real_modulus(t) && self.is_real(arg, 0);
         if real_base {
-            self.state().signs.facts.push((
-                d.clone(),
-                format!("dn({what}) > 0: a real argument, 0 < k² < 1 (DLMF 22.4.1)"),
-            ));
+            self.state().signs.facts.push(Fact {
+                value: d.clone(),
+                why: format!("dn({what}) > 0: a real argument, 0 < k² < 1 (DLMF 22.4.1)"),
+                source: FactSource::Base(t, base),
+            });
         }
         real_base
     }
 
     /// Records `dn u > 0` for `dn u = d` of an argument `u` of table `t` (expanded by
-    /// the addition theorems), when `u` is real and the modulus is proved in `(0, 1)`.
+    /// the addition theorems), when `u` is real and the modulus is proved in `(0, 1)`;
+    /// a certificate names the fact by the derivation of `d`, where it has one.
     pub(crate) fn note_dn_of_real_argument(
         &self,
         t: usize,
         u: &Val,
-        d: &Val,
+        d: &Sym,
         what: impl FnOnce() -> String,
     ) {
-        let known =
-            (self.state().signs.facts.iter()).any(|(f, _)| f.num == d.num && f.den == d.den);
-        if known || d.num.len() > 64 || !self.real_modulus(t) || !self.is_real(u, 0) {
+        let known = (self.state().signs.facts.iter())
+            .any(|f| f.value.num == d.val.num && f.value.den == d.val.den);
+        if known || d.val.num.len() > 64 || !self.real_modulus(t) || !self.is_real(u, 0) {
             return;
         }
-        let reason = format!(
+        let why = format!(
             "dn({}) > 0: a real argument, 0 < k² < 1 (DLMF 22.4.1)",
             what()
         );
-        self.state().signs.facts.push((d.clone(), reason));
+        let source = d
+            .node
+            .clone()
+            .map_or(FactSource::Unrecorded, FactSource::Node);
+        self.state().signs.facts.push(Fact {
+            value: (*d.val).clone(),
+            why,
+            source,
+        });
     }
 
     /// Is the modulus of table `t` real with `0 < k² < 1` (proved)?
@@ -132,11 +149,12 @@ impl Ring {
     }
 
     /// The sign of `x` by a fact of the theory: `x` is a fact's value times a factor of
-    /// proved sign.
+    /// proved sign.  A certificate records the evidence (the fact by its derivation and
+    /// the factor), which a recheck proves again.
     pub(crate) fn fact_sign(&self, x: &Sym) -> Option<i32> {
         let facts = self.state().signs.facts.clone();
-        for (val, why) in facts {
-            let f = Sym::from_val(self, val, None);
+        for (i, fact) in facts.into_iter().enumerate() {
+            let f = Sym::from_val(self, fact.value, None);
             let Ok(q) = x.try_div(&f) else { continue };
             let s = match q.as_rational() {
                 Some(r) if r != 0 => Some(if r < 0 { -1 } else { 1 }),
@@ -144,14 +162,37 @@ impl Ring {
                 None => q.proved_sign_of_quotient(),
             };
             if let Some(s) = s {
-                self.note(why);
-                self.mark_uncertified(
-                    "a sign proved by a fact of the Jacobi functions, which the certificate format does not record",
-                );
+                self.note(fact.why);
+                self.record_fact_sign(x, s, i, &fact.source, &q);
                 return Some(s);
             }
         }
         None
+    }
+
+    /// Records, for a certificate, that fact `i` decides the sign `s` of `x = fact · q`.
+    fn record_fact_sign(&self, x: &Sym, s: i32, i: usize, source: &FactSource, q: &Sym) {
+        if !self.certifying() {
+            return;
+        }
+        if matches!(source, FactSource::Unrecorded) {
+            self.mark_uncertified(
+                "a sign proved by a fact of the Jacobi functions whose value has no derivation",
+            );
+            return;
+        }
+        let mut st = self.state();
+        let known = (st.signs.fact_evidence.iter())
+            .any(|e| e.fact == i && e.value.num == x.val.num && e.value.den == x.val.den);
+        if !known {
+            st.signs.fact_evidence.push(FactEvidence {
+                node: x.node.clone(),
+                value: (*x.val).clone(),
+                sign: s,
+                fact: i,
+                factor: (*q.val).clone(),
+            });
+        }
     }
 }
 

@@ -24,20 +24,18 @@ use std::sync::Arc;
 impl Sym {
     /// The sign of a real value proved with the ring's parametrization of the domain
     /// (see the module), with a note that says so; `None` when the test does not prove
-    /// it.  The proof then has no certificate (the format does not record the test).
+    /// it.  A certificate records the sign (of the value's derivation, or of the value
+    /// written out where it has none), which a recheck proves again.
     pub(crate) fn proved_sign(&self) -> Option<i32> {
         // without a parametrization of the domain, the signs of the roots' structure
         // (positive roots of positive constants) can still be proved
         let par = self.ring.domain();
         if self.ring.certifying() && self.node.is_none() {
-            // a certificate names the value of every proved sign by its derivation: a
-            // value without one is proved all the same, and the proof has no certificate
-            // (so that a proof does not depend on whether a certificate is asked for)
+            // a value without a derivation of its own (made only for a decision): a
+            // certificate writes it out with its sign, which a recheck proves again
             let s = self.sign_by_parametrization(&par);
-            if s.is_some() {
-                self.ring.mark_uncertified(
-                    "a sign of a value made only for a decision, without a derivation of its own",
-                );
+            if let Some(s) = s {
+                self.record_valued_sign(s);
             }
             return s;
         }
@@ -56,18 +54,21 @@ impl Sym {
     }
 
     /// [`Sym::proved_sign`] of a value made only to decide a sign (a quotient by a
-    /// hypothesis), which has no derivation of its own: a certificate does not record
-    /// the step, so the proof has none.
+    /// hypothesis or by a fact), which has no derivation of its own: a certificate
+    /// writes the value out with its sign.
     pub(crate) fn proved_sign_of_quotient(&self) -> Option<i32> {
-        if !(self.ring.certifying() && self.node.is_none()) {
-            return self.proved_sign();
+        self.proved_sign()
+    }
+
+    /// Records, for a certificate, the sign `s` of this value, which has no derivation:
+    /// a `sign value (N)/(D) > 0` line, proved again by a recheck.
+    fn record_valued_sign(&self, s: i32) {
+        let mut st = self.ring.state();
+        let known = (st.signs.valued.iter())
+            .any(|(v, t)| *t == s && v.num == self.val.num && v.den == self.val.den);
+        if !known {
+            st.signs.valued.push(((*self.val).clone(), s));
         }
-        let par = self.ring.domain();
-        let s = self.sign_by_parametrization(&par)?;
-        self.ring.mark_uncertified(
-            "a sign decided through a quotient by a hypothesis or a fact of the Jacobi functions, which the certificate format does not record",
-        );
-        Some(s)
     }
 
     /// The sign of a factor a certificate records with its value (the factor of a
@@ -82,9 +83,13 @@ impl Sym {
     /// through a later decision, which records itself.
     pub(crate) fn proved_sign_unrecorded(&self) -> Option<i32> {
         let ring = &self.ring;
-        let (signs, uncertified) = {
+        let (signs, uncertified, valued) = {
             let st = ring.state();
-            (st.signs.proved_signs.len(), st.uncertified.len())
+            (
+                st.signs.proved_signs.len(),
+                st.uncertified.len(),
+                st.signs.valued.len(),
+            )
         };
         let s = if ring.certifying() && self.node.is_none() {
             self.sign_by_parametrization(&ring.domain())
@@ -93,6 +98,7 @@ impl Sym {
         };
         let mut st = ring.state();
         st.signs.proved_signs.truncate(signs);
+        st.signs.valued.truncate(valued);
         st.uncertified.truncate(uncertified);
         s
     }

@@ -531,10 +531,8 @@ impl Sym {
             _ => {}
         }
         if self.is_positive_multiple_of_principal_root() {
-            // √(c²a) = c·√a for c > 0, whatever the sign of a
-            if ring.certifying() {
-                ring.mark_uncertified("a square root c·√a with c > 0 and √a principal");
-            }
+            // √(c²a) = c·√a for c > 0, whatever the sign of a: a recheck finds its own
+            // evidence of the branch (c of a sign it proves, √a a positive or free root)
             return Ok(());
         }
         if radicand.decided_sign() == Some(-1) {

@@ -44,6 +44,41 @@ pub(crate) struct Folded {
     /// The indeterminate of `x` (its context variable) and the sign of `σ` times it,
     /// by the definition of `σ` (`x` is a constant multiple of the indeterminate).
     pub var: Option<(usize, i32)>,
+    /// `x` itself, which a certificate states as the symbol's definition.
+    pub x: Val,
+}
+
+/// What a certificate names a fact of the theory by: the base of an elliptic table
+/// whose `dn` the value is, or the derivation of `dn u` by the addition theorems.
+#[derive(Clone, Debug)]
+pub(crate) enum FactSource {
+    /// `dn` of base `.1` of table `.0`.
+    Base(usize, usize),
+    /// The `dn` node of the derivation.
+    Node(Arc<Node>),
+    /// No derivation: a sign by this fact leaves the proof without a certificate.
+    Unrecorded,
+}
+
+/// A value positive by a theorem of the Jacobi functions: `dn u > 0` for real `u` and
+/// a real modulus with `0 < k² < 1` (DLMF 22.4.1).
+#[derive(Clone, Debug)]
+pub(crate) struct Fact {
+    pub value: Val,
+    pub why: String,
+    pub source: FactSource,
+}
+
+/// The evidence of a sign a fact decides, as a certificate records it: the value (by its
+/// derivation, or written out where it has none) is the fact's value times `factor`,
+/// whose sign is proved with the parametrization of the domain.
+#[derive(Clone, Debug)]
+pub(crate) struct FactEvidence {
+    pub node: Option<Arc<Node>>,
+    pub value: Val,
+    pub sign: i32,
+    pub fact: usize,
+    pub factor: Val,
 }
 
 /// The evidence of a sign a stated hypothesis decides, as a certificate records it: the
@@ -77,7 +112,12 @@ pub(crate) struct SignState {
     /// (see [`Ring::state_hypothesis`](super::Ring::state_hypothesis)).
     pub stated: Vec<(Val, i32, String)>,
     /// Values positive by a theorem (`dn` of a real argument), with the reason.
-    pub facts: Vec<(Val, String)>,
+    pub facts: Vec<Fact>,
+    /// The signs decided by a fact, with their evidence (for certificates).
+    pub fact_evidence: Vec<FactEvidence>,
+    /// Signs proved with the parametrization of values without a derivation of their
+    /// own (made only for a decision): a certificate writes the value out.
+    pub valued: Vec<(Val, i32)>,
     /// Opaque symbols declared real (by field-variable index).
     pub real_opaque: Vec<usize>,
     /// The signs decided by a stated hypothesis, with their evidence (for certificates).

@@ -232,6 +232,7 @@ impl Sym {
                     root,
                     positive,
                     var,
+                    x: (*x.val).clone(),
                 });
                 self.ring.note(format!(
                     "{name} = sign({}): a sign symbol, so that one normal form covers both signs of {}",
