@@ -103,14 +103,14 @@ impl Sym {
         if let Some((s, source)) = self.part_condition_sign() {
             return Decision::Hypothesis(s, source);
         }
-        if let Some(d) = self.quick_root_decision() {
-            return d;
-        }
         if let Some(s) = self.proved_sign().or_else(|| self.ring.fact_sign(self)) {
             return Decision::Proved(s);
         }
         if let Some(s) = self.defined_sign() {
             return Decision::Definition(s);
+        }
+        if let Some(d) = self.quick_root_decision() {
+            return d;
         }
         match self.hypothesis_sign() {
             Some((s, source)) => Decision::Hypothesis(s, source),

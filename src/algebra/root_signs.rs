@@ -164,7 +164,7 @@ impl Sym {
             used.push(q);
             sa * sq
         };
-        Some(combine(s * sd, &used, &self.ring))
+        combine(s * sd, &used, &self.ring)
     }
 
     /// A root-free part of this value whose sign is undecided and can split the domain
@@ -193,23 +193,21 @@ impl Sym {
 }
 
 /// The decision of a sign made from `used`: by a hypothesis where one of them is (the
-/// first one's source), by a definition where one is, else proved.  Such a sign is not
-/// recorded by the certificate format.
-fn combine(sign: i32, used: &[Decision], ring: &super::ring::Ring) -> Decision {
-    let uses_other = used.iter().any(|d| !matches!(d, Decision::Proved(_)));
-    if uses_other {
-        ring.mark_uncertified(
-            "a sign in a square root decided from the signs of its parts, some by a condition or a definition",
-        );
+/// first one's source), else by a definition.  `None` where every part is proved: rule 2
+/// of [`super::decide`] has decided such a value already, or could not, and the proof
+/// goes on as it would without this module.  Such a sign is not recorded by the
+/// certificate format.
+fn combine(sign: i32, used: &[Decision], ring: &super::ring::Ring) -> Option<Decision> {
+    if used.iter().all(|d| matches!(d, Decision::Proved(_))) {
+        return None;
     }
+    ring.mark_uncertified(
+        "a sign in a square root decided from the signs of its parts, some by a condition or a definition",
+    );
     for d in used {
         if let Decision::Hypothesis(_, source) = d {
-            return Decision::Hypothesis(sign, source.clone());
+            return Some(Decision::Hypothesis(sign, source.clone()));
         }
     }
-    if used.iter().any(|d| matches!(d, Decision::Definition(_))) {
-        return Decision::Definition(sign);
-    }
-    ring.mark_uncertified("a sign in a square root decided from the signs of its parts");
-    Decision::Proved(sign)
+    Some(Decision::Definition(sign))
 }
