@@ -96,6 +96,23 @@ impl Ring {
         positive(&k2) && positive(&rest)
     }
 
+    /// Is `K(k)` (`K′(k)` when `complementary`) of table `t` real: `k` real with
+    /// `k² < 1` (`k² > 0`) proved (DLMF 19.2.8, 19.7.2)?
+    fn real_quarter_period(&self, t: usize, complementary: bool) -> bool {
+        let (k, k2) = {
+            let st = self.state();
+            (st.tables[t].k.clone(), st.tables[t].k2.clone())
+        };
+        if !self.is_real(&k, 0) {
+            return false;
+        }
+        let k2 = Sym::from_val(self, k2, None);
+        if complementary {
+            return positive(&k2);
+        }
+        self.integer(1).try_sub(&k2).is_ok_and(|rest| positive(&rest))
+    }
+
     /// Is the value real by construction (see the module)?
     pub(crate) fn is_real(&self, v: &Val, depth: usize) -> bool {
         if depth > MAX_DEPTH {
@@ -138,9 +155,9 @@ impl Ring {
             VarKind::Sn { table, base } | VarKind::Zeta { table, base } => {
                 (self.state().tables[table].bases.get(base)).is_some_and(|b| b.real)
             }
-            VarKind::QuarterK { table }
-            | VarKind::QuarterKp { table }
-            | VarKind::ThirdK { table } => self.real_modulus(table),
+            VarKind::QuarterK { table } => self.real_quarter_period(table, false),
+            VarKind::QuarterKp { table } => self.real_quarter_period(table, true),
+            VarKind::ThirdK { table } => self.real_modulus(table),
             VarKind::Opaque { .. } => self.state().signs.real_opaque.contains(&j),
             VarKind::Jet { ref arg, ref k, .. } => {
                 self.is_real(arg, depth + 1) && self.is_real(k, depth + 1)
@@ -202,5 +219,13 @@ fn positive(x: &Sym) -> bool {
     match x.as_rational() {
         Some(q) => q > 0,
         None => x.proved_sign_unrecorded() == Some(1),
+    }
+}
+
+impl Sym {
+    /// Is the value real by construction: built from indeterminates, real sn/cn/dn
+    /// symbols and principal roots of proved-positive radicands only?
+    pub(crate) fn is_real_by_construction(&self) -> bool {
+        self.ring.is_real(&self.val, 0)
     }
 }

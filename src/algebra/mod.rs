@@ -134,6 +134,7 @@ mod root_signs;
 pub mod roots;
 mod scalar;
 pub mod series;
+mod series_modulus;
 mod series_scalar;
 pub mod series_solve;
 pub mod shadow;

@@ -15,7 +15,9 @@
 //!   branch decided by [`Sym::sqrt`], i.e. proved on the domain); `sn`, `cn`, `dn` of a
 //!   series argument `u = u₀ + w(h)` by integrating DLMF 22.13.1–3
 //!   (`s′ = c·d·u′`, `c′ = −s·d·u′`, `d′ = −k²·s·c·u′`) from `(sn, cn, dn)(u₀)`;
-//!   circular and hyperbolic functions at moduli 0 and 1 (DLMF 22.5.ii).  Functions of
+//!   circular and hyperbolic functions at moduli 0 and 1 (DLMF 22.5.ii); a modulus
+//!   that moves with `h` gives the values at its limit, known to the order at which it
+//!   moves ([`super::series_modulus`]).  Functions of
 //!   values that do not depend on `h` are the ring's own.  Everything else poisons the
 //!   ring (the proof then fails with the reason).
 //! * **Comparisons** of values that depend on `h` are decided by the sign of the leading
@@ -156,6 +158,11 @@ impl Series {
     /// The constant term, when the value does not depend on `h`.
     pub fn as_constant(&self) -> Option<Sym> {
         self.is_constant().then(|| self.coef(0))
+    }
+
+    /// The same value known only to `O(h^hi)` (the smaller of `hi` and its precision).
+    pub(crate) fn cut(&self, hi: i32) -> Series {
+        Series::from_coefficients(&self.ring, self.lo, self.c.clone(), hi.min(self.hi))
     }
 
     /// A series whose every operation fails: the ring records `e`.
@@ -320,9 +327,10 @@ impl Series {
     /// term's values from the ring ([`Sym::sncndn`]), the higher coefficients by
     /// integrating DLMF 22.13.1–3 along `u(h)`.
     pub fn sncndn(&self, k: &Series) -> AlgResult<(Series, Series, Series)> {
-        let k0 = k.as_constant().ok_or_else(|| {
-            AlgebraError::NotAlgebraic("sn, cn, dn with a modulus that depends on h".into())
-        })?;
+        if k.as_constant().is_none() {
+            return self.sncndn_moving(k);
+        }
+        let k0 = k.coef(0);
         if self.lo < 0 || self.hi <= 0 {
             return Err(AlgebraError::Pole(
                 "sn, cn, dn of a series with a pole at h = 0 or no known constant term".into(),

@@ -160,6 +160,9 @@ impl Real for Series {
         u.sncndn(k).map_err(|e| e.to_string())
     }
     fn quarter_period_by_rule(k: &Self, complementary: bool) -> Result<Self, String> {
+        if k.as_constant().is_none() {
+            return Series::quarter_period_moving(k, complementary).map_err(|e| e.to_string());
+        }
         let ring = k.ring().clone();
         k.on_constant("K", |k0| {
             if complementary {

@@ -15,6 +15,7 @@ mod implicit_proofs;
 mod intervals;
 mod iterations;
 mod lemmas;
+mod moving_moduli;
 mod ode_proofs;
 mod partials;
 mod perturbations;

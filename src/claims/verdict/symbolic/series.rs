@@ -114,13 +114,43 @@ pub(super) fn each_case_parts(
     info
 }
 
-/// One case: the coefficients below the order, each tested for 0.
+/// One case: the coefficients below the order, each tested for 0; in `t = √var` where
+/// a value has no power series in `var` ([`ODD`]).
 fn prove_case(
     ctx: Ctx<'_>,
     roles: &[(String, Role, &PExpr)],
     points: &[Point],
     claim: Order<'_>,
     signs: &Signs,
+) -> Proof {
+    let reason = |p: &Proof| match &p.outcome {
+        crate::algebra::Outcome::NotProved(why) => why.clone(),
+        _ => String::new(),
+    };
+    let mut step = 1;
+    let mut extra = 0;
+    loop {
+        let proof = prove_case_in(ctx, roles, points, claim, signs, (step, extra));
+        let why = reason(&proof);
+        if step == 1 && why.contains(ODD) {
+            (step, extra) = (2, 0);
+        } else if (why.contains(SHORT) || why.contains(VANISH)) && extra < EXTRA_ORDERS * step {
+            // more orders may reach the coefficient or decide the sign: a fresh ring
+            extra += 1;
+        } else {
+            return proof;
+        }
+    }
+}
+
+/// [`prove_case`] with `var = tˢᵗᵉᵖ`, from `extra` orders beyond the claimed one.
+fn prove_case_in(
+    ctx: Ctx<'_>,
+    roles: &[(String, Role, &PExpr)],
+    points: &[Point],
+    claim: Order<'_>,
+    signs: &Signs,
+    (step, extra): (i32, i32),
 ) -> Proof {
     let opts = RingOptions {
         points: points.len(),
@@ -129,16 +159,9 @@ fn prove_case(
     };
     let labels = std::sync::Mutex::new(Vec::new());
     let mut proof = prove_components(opts, &ctx.claim.id, |ring| {
-        let first = claim.order.ceil() as i32 + 1;
-        let mut last = Err(AlgebraError::Domain("no precision tried".into()));
-        for n in first..=first + EXTRA_ORDERS {
-            last = with_precision(n, || coefficients(ctx, ring, roles, points, claim));
-            match &last {
-                Err(AlgebraError::Capacity(_)) => continue,
-                _ => break,
-            }
-        }
-        let (pairs, names): (Vec<_>, Vec<_>) = last?.into_iter().unzip();
+        let (pairs, names): (Vec<_>, Vec<_>) = (in_powers(ctx, ring, roles, points, claim, (step, extra))?)
+            .into_iter()
+            .unzip();
         *labels.lock().unwrap_or_else(|e| e.into_inner()) = names;
         Ok(pairs)
     });
@@ -160,17 +183,55 @@ fn prove_case(
     proof
 }
 
+/// The part of the message of a square root with no power series in `h`
+/// ([`Series::try_sqrt`]), after which the proof is run in `t = √h`.
+const ODD: &str = "of odd valuation";
+
+/// [`coefficients`] at `extra` orders beyond the claimed one, in the series variable
+/// `t` with `var = tˢᵗᵉᵖ` (`step` 2: a power series in `√var`, for values such as
+/// `√var·c`; `f = O(varᵖ)` exactly when `f = O(t^(step·p))` as `t → 0⁺`).
+fn in_powers(
+    ctx: Ctx<'_>,
+    ring: &Ring,
+    roles: &[(String, Role, &PExpr)],
+    points: &[Point],
+    claim: Order<'_>,
+    (step, extra): (i32, i32),
+) -> AlgResult<Vec<((Sym, Sym), String)>> {
+    let n = (claim.order * f64::from(step)).ceil() as i32 + 1 + extra;
+    with_precision(n, || coefficients(ctx, ring, roles, points, claim, step))
+}
+
+/// The part of the message of a coefficient beyond the working precision.
+const SHORT: &str = "the power series is known to O(";
+
+/// The part of the message of a sign asked of a series whose known coefficients are all
+/// 0 ([`Series::sign`]): more orders may decide it.
+const VANISH: &str = "whose known coefficients vanish";
+
+/// `var^(e/step)`, as a message names a coefficient.
+fn power(var: &str, e: i32, step: i32) -> String {
+    if step == 1 || e % step == 0 {
+        format!("{var}^{}", e / step)
+    } else {
+        format!("{var}^({e}/{step})")
+    }
+}
+
 /// The coefficients of the exponents below the order, against 0, each with its name; a
-/// [`AlgebraError::Capacity`] error when the working precision does not reach them.
+/// [`SHORT`] error when the working precision does not reach them.
 fn coefficients(
     ctx: Ctx<'_>,
     ring: &Ring,
     roles: &[(String, Role, &PExpr)],
     points: &[Point],
     claim: Order<'_>,
+    step: i32,
 ) -> AlgResult<Vec<((Sym, Sym), String)>> {
     let fail = AlgebraError::Domain;
-    let ev = bind(ctx, ring, roles, points, (claim.var, Series::var(ring)))?;
+    let t = Series::var(ring);
+    let at = if step == 2 { t.try_mul(&t)? } else { t };
+    let ev = bind(ctx, ring, roles, points, (claim.var, at))?;
     let value = match &claim.expr.expr.kind {
         ExprKind::Call(name, args) if PEELED.contains(&name.as_str()) && args.len() == 1 => {
             ev.eval(&args[0]).map_err(|e| fail(e.message))?
@@ -186,12 +247,11 @@ fn coefficients(
     let several = comps.len() > 1;
     for (j, s) in comps.into_iter().enumerate() {
         let mut e = s.valuation().min(0);
-        while f64::from(e) < claim.order {
+        while f64::from(e) < claim.order * f64::from(step) {
             let c = s.coefficient(e).ok_or_else(|| {
-                AlgebraError::Capacity(format!(
-                    "the power series is known to O({}^{}) only",
-                    claim.var,
-                    s.precision()
+                AlgebraError::Domain(format!(
+                    "the power series is known to O({}) only",
+                    power(claim.var, s.precision(), step)
                 ))
             })?;
             let of = if several {
@@ -201,7 +261,7 @@ fn coefficients(
             };
             pairs.push((
                 (c, zero.clone()),
-                format!("the coefficient of {}^{e}{of}", claim.var),
+                format!("the coefficient of {}{of}", power(claim.var, e, step)),
             ));
             e += 1;
         }
