@@ -62,6 +62,51 @@ impl SignSplit {
         terms == 1 && linear == 1 && constant
     }
 
+    /// Is the part where the value has sign `sign` empty by the value's form: numerator
+    /// and denominator each a sum of even powers of the claim's (real) indeterminates
+    /// with coefficients of one sign, so the value is never of the other sign
+    /// (`−x² − y² > 0` has no point).  `false` when that is not evident.
+    ///
+    /// ```
+    /// use eulertop::algebra::{Ring, RingOptions};
+    /// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
+    /// let x = ring.indeterminate_f64("x", &[1.0, 0.5]).unwrap();
+    /// let y = ring.indeterminate_f64("y", &[-1.0, 2.0]).unwrap();
+    /// let v = x.clone() * x.clone() - y.clone() * y.clone();
+    /// assert!(v.sign().is_err());
+    /// let split = ring.undecided_sign().unwrap();
+    /// assert!(!split.never(1) && !split.never(-1));
+    /// // −x² − y² is never positive
+    /// let ring = Ring::new(RingOptions { points: 2, ..Default::default() });
+    /// let x = ring.indeterminate_f64("x", &[1.0, 0.5]).unwrap();
+    /// let y = ring.indeterminate_f64("y", &[-1.0, 2.0]).unwrap();
+    /// let v = -(x.clone() * x) - y.clone() * y;
+    /// assert!(v.sign().is_err()); // 0 where x = y = 0
+    /// let split = ring.undecided_sign().unwrap();
+    /// assert!(split.never(1) && !split.never(-1));
+    /// ```
+    pub fn never(&self, sign: i32) -> bool {
+        match (self.even_sign(&self.num), self.even_sign(&self.den)) {
+            (Some(n), Some(d)) => n * d == -sign,
+            _ => false,
+        }
+    }
+
+    /// The common sign of the coefficients of `p` when every term is an even power
+    /// product of named indeterminates (so `p` has that sign or is 0).
+    fn even_sign(&self, p: &Poly) -> Option<i32> {
+        let mut sign = 0;
+        let mut ok = true;
+        p.for_each_term(|c, e| {
+            let named = (e.iter().enumerate())
+                .all(|(i, &k)| k == 0 || (k % 2 == 0 && self.names.get(i).is_some_and(|n| !n.is_empty())));
+            let s = c.cmp0() as i32;
+            ok &= named && s != 0 && (sign == 0 || s == sign);
+            sign = s;
+        });
+        (ok && sign != 0).then_some(sign)
+    }
+
     /// Whether `other` is the same value (as the prover renders it).
     pub fn same(&self, other: &SignSplit) -> bool {
         self.text == other.text

@@ -89,7 +89,16 @@ pub(super) fn parts(
         }
     }
     let mut out = Vec::new();
+    let mut empty = Vec::new();
     for sign in [1, -1] {
+        if split.never(sign) {
+            empty.push(format!(
+                "the part where {} {} 0 is empty: the value is a sum of even powers with coefficients of one sign",
+                split.what,
+                if sign > 0 { ">" } else { "<" }
+            ));
+            continue;
+        }
         let mut c = region.clone();
         c.signs.push((split.clone(), sign));
         let mut l = label.clone();
@@ -110,6 +119,9 @@ pub(super) fn parts(
             }
         };
         out.extend(parts(input, case, l, pts, hints.clone(), &c)?);
+    }
+    if let Some((_, first)) = out.first_mut() {
+        first.notes.extend(empty);
     }
     Ok(out)
 }
