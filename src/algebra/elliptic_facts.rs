@@ -110,7 +110,9 @@ impl Ring {
         if complementary {
             return positive(&k2);
         }
-        self.integer(1).try_sub(&k2).is_ok_and(|rest| positive(&rest))
+        self.integer(1)
+            .try_sub(&k2)
+            .is_ok_and(|rest| positive(&rest))
     }
 
     /// Is the value real by construction (see the module)?

@@ -165,6 +165,16 @@ impl Series {
         Series::from_coefficients(&self.ring, self.lo, self.c.clone(), hi.min(self.hi))
     }
 
+    /// `self − o`.
+    pub fn try_add_neg(&self, o: &Series) -> AlgResult<Series> {
+        self.try_add(o, true)
+    }
+
+    /// Is the value exactly 0 (no stored coefficient, known to the working precision)?
+    pub fn known_zero(&self) -> bool {
+        self.c.is_empty() && self.hi >= cap()
+    }
+
     /// A series whose every operation fails: the ring records `e`.
     pub(crate) fn poisoned(&self, e: AlgebraError) -> Series {
         self.ring.poison(e);

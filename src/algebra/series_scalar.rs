@@ -159,6 +159,19 @@ impl Real for Series {
     fn sncndn_by_rule(u: &Self, k: &Self) -> Result<(Self, Self, Self), String> {
         u.sncndn(k).map_err(|e| e.to_string())
     }
+    fn sncndn_dual_by_rule(
+        u: &crate::numbers::Dual<Self>,
+        k: &crate::numbers::Dual<Self>,
+    ) -> Result<
+        (
+            crate::numbers::Dual<Self>,
+            crate::numbers::Dual<Self>,
+            crate::numbers::Dual<Self>,
+        ),
+        String,
+    > {
+        Series::sncndn_dual(u, k).map_err(|e| e.to_string())
+    }
     fn quarter_period_by_rule(k: &Self, complementary: bool) -> Result<Self, String> {
         if k.as_constant().is_none() {
             return Series::quarter_period_moving(k, complementary).map_err(|e| e.to_string());

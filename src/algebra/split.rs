@@ -98,8 +98,9 @@ impl SignSplit {
         let mut sign = 0;
         let mut ok = true;
         p.for_each_term(|c, e| {
-            let named = (e.iter().enumerate())
-                .all(|(i, &k)| k == 0 || (k % 2 == 0 && self.names.get(i).is_some_and(|n| !n.is_empty())));
+            let named = (e.iter().enumerate()).all(|(i, &k)| {
+                k == 0 || (k % 2 == 0 && self.names.get(i).is_some_and(|n| !n.is_empty()))
+            });
             let s = c.cmp0() as i32;
             ok &= named && s != 0 && (sign == 0 || s == sign);
             sign = s;

@@ -350,6 +350,15 @@ pub trait Real: Scalar + PartialOrd {
     fn sncndn_by_rule(_u: &Self, _k: &Self) -> Result<(Self, Self, Self), String> {
         Err("sn, cn, dn have no rule for this type".into())
     }
+    /// `(sn, cn, dn)(u, k)` of dual numbers over this type by its own rule, for a type
+    /// that evaluates by rules but does not enclose (only called when
+    /// [`Real::BY_RULE`] and not [`Real::ENCLOSES`]).
+    fn sncndn_dual_by_rule(
+        _u: &Dual<Self>,
+        _k: &Dual<Self>,
+    ) -> Result<(Dual<Self>, Dual<Self>, Dual<Self>), String> {
+        Err("sn, cn, dn have no rule for this type".into())
+    }
     /// The amplitude `am(u, k)` by the type's own rule (only called when
     /// [`Real::BY_RULE`]).
     fn am_by_rule(_u: &Self, _k: &Self) -> Result<Self, String> {

@@ -29,7 +29,12 @@ steps = 6
     )
 }
 
-fn verdict(vars: &str, expr: &str, order: &str, seed: u64) -> eulertop::claims::verdict::ClaimResult {
+fn verdict(
+    vars: &str,
+    expr: &str,
+    order: &str,
+    seed: u64,
+) -> eulertop::claims::verdict::ClaimResult {
     let cat = controls_only(limit_claim(vars, expr, order));
     let mut claim = cat.claims[0].clone();
     claim.seed ^= seed;
@@ -84,4 +89,31 @@ fn a_quarter_period_at_its_logarithmic_singularity_is_not_expanded() {
     // at k → 0 it has one: K(√e) → π/2, so K(√e) is not O(e^0.5)
     let r = verdict(U, "abs(K(sqrt(e)) + u - u)", "0.5", 0);
     assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
+}
+
+/// [`limit_claim`] with a `let` block.
+fn with_let(
+    vars: &str,
+    lets: &str,
+    expr: &str,
+    order: &str,
+) -> eulertop::claims::verdict::ClaimResult {
+    let text = limit_claim(vars, expr, order)
+        .replace("expr = ", &format!("let = '''\n{lets}\n'''\nexpr = "));
+    let cat = controls_only(text);
+    run_claim(&cat, &cat.claims[0], &Options::default())
+}
+
+#[test]
+fn the_derivative_in_the_parameter_has_its_limit_at_one() {
+    // ∂sn/∂m → −(tanh u − u sech² u)/4 as m → 1 (DLMF 22.10.7), under a square root
+    let lets = "m = 1 - e";
+    let limit = "(tanh(u) - u / cosh(u)^2) / 4";
+    let right = format!("sqrt(abs(d(sn(u, sqrt(m)), m) + {limit}))");
+    let r = with_let(U, lets, &right, "0.25");
+    assert_eq!(r.verdict, Verdict::Proved, "{}", r.reason);
+    let wrong = format!("sqrt(abs(d(sn(u, sqrt(m)), m) - {limit}))");
+    let r = with_let(U, lets, &wrong, "0.25");
+    assert_eq!(r.verdict, Verdict::Refuted, "{}", r.reason);
+    assert_eq!(r.proof.method, ProofMethod::Witness, "{}", r.reason);
 }

@@ -33,6 +33,26 @@ use std::time::Instant;
 /// `‖X‖∞` and `|x|` is `O(hᵖ)` exactly when every real component of its argument is.
 const PEELED: [&str; 3] = ["norm", "vnorm_inf", "abs"];
 
+/// The expression whose coefficients a proof examines, and the factor of the order:
+/// `‖X‖`, `‖X‖∞` and `|x|` give their argument ([`PEELED`]), and `√x = O(hᵖ)` exactly
+/// when `x = O(h²ᵖ)` (`|√x| = |x|^(1/2)`); `None` when nothing is peeled.
+fn peeled(expr: &PExpr) -> (Option<&crate::claims::ast::Expr>, f64) {
+    let mut inner = None;
+    let mut factor = 1.0;
+    let mut at = &expr.expr;
+    while let ExprKind::Call(name, args) = &at.kind {
+        if args.len() != 1 || !(PEELED.contains(&name.as_str()) || name == "sqrt") {
+            break;
+        }
+        if name == "sqrt" {
+            factor *= 2.0;
+        }
+        at = &args[0];
+        inner = Some(at);
+    }
+    (inner, factor)
+}
+
 /// The most orders of `h` beyond the claimed one that a proof computes.
 const EXTRA_ORDERS: i32 = 4;
 
@@ -159,9 +179,10 @@ fn prove_case_in(
     };
     let labels = std::sync::Mutex::new(Vec::new());
     let mut proof = prove_components(opts, &ctx.claim.id, |ring| {
-        let (pairs, names): (Vec<_>, Vec<_>) = (in_powers(ctx, ring, roles, points, claim, (step, extra))?)
-            .into_iter()
-            .unzip();
+        let (pairs, names): (Vec<_>, Vec<_>) =
+            (in_powers(ctx, ring, roles, points, claim, (step, extra))?)
+                .into_iter()
+                .unzip();
         *labels.lock().unwrap_or_else(|e| e.into_inner()) = names;
         Ok(pairs)
     });
@@ -198,7 +219,7 @@ fn in_powers(
     claim: Order<'_>,
     (step, extra): (i32, i32),
 ) -> AlgResult<Vec<((Sym, Sym), String)>> {
-    let n = (claim.order * f64::from(step)).ceil() as i32 + 1 + extra;
+    let n = (claim.order * peeled(claim.expr).1 * f64::from(step)).ceil() as i32 + 1 + extra;
     with_precision(n, || coefficients(ctx, ring, roles, points, claim, step))
 }
 
@@ -232,11 +253,11 @@ fn coefficients(
     let t = Series::var(ring);
     let at = if step == 2 { t.try_mul(&t)? } else { t };
     let ev = bind(ctx, ring, roles, points, (claim.var, at))?;
-    let value = match &claim.expr.expr.kind {
-        ExprKind::Call(name, args) if PEELED.contains(&name.as_str()) && args.len() == 1 => {
-            ev.eval(&args[0]).map_err(|e| fail(e.message))?
-        }
-        _ => eval(&ev, claim.expr).map_err(fail)?,
+    let (inner, factor) = peeled(claim.expr);
+    let order = claim.order * factor;
+    let value = match inner {
+        Some(x) => ev.eval(x).map_err(|e| fail(e.message))?,
+        None => eval(&ev, claim.expr).map_err(fail)?,
     };
     if let Some(e) = ring.error() {
         return Err(e);
@@ -247,7 +268,7 @@ fn coefficients(
     let several = comps.len() > 1;
     for (j, s) in comps.into_iter().enumerate() {
         let mut e = s.valuation().min(0);
-        while f64::from(e) < claim.order * f64::from(step) {
+        while f64::from(e) < order * f64::from(step) {
             let c = s.coefficient(e).ok_or_else(|| {
                 AlgebraError::Domain(format!(
                     "the power series is known to O({}) only",
