@@ -34,10 +34,7 @@
 use super::error::{AlgResult, AlgebraError};
 use super::series::Series;
 use super::sym::Sym;
-use crate::numbers::Dual;
-
-/// `(sn, cn, dn)` of dual numbers over power series.
-type DualTriple = (Dual<Series>, Dual<Series>, Dual<Series>);
+use crate::numbers::{Dual, DualTriple};
 
 impl Series {
     /// `(sn, cn, dn)(self, k)` for a modulus `k(h) = k₀ + O(hᵛ)` that depends on `h`:
@@ -110,7 +107,7 @@ impl Series {
     /// `(sn, cn, dn)(u, k)` of dual numbers over power series: the `u`-derivatives by
     /// DLMF 22.13.1–3, the `k`-derivatives `2k·∂/∂m` by [`Series::sncndn_dm`] (so only
     /// at moduli tending to 0 or 1 when `k` carries a derivative).
-    pub(crate) fn sncndn_dual(u: &Dual<Series>, k: &Dual<Series>) -> AlgResult<DualTriple> {
+    pub(crate) fn sncndn_dual(u: &Dual<Series>, k: &Dual<Series>) -> AlgResult<DualTriple<Series>> {
         let (s, c, d) = u.v.sncndn(&k.v)?;
         let k2 = k.v.try_mul(&k.v)?;
         let minus = Series::constant(&k.v.ring().integer(-1));
@@ -186,6 +183,7 @@ mod tests {
     /// `∂(sn, cn, dn)/∂m` at `m₀ ∈ {0, 1}`, against mpmath (`mp.diff` of
     /// `ellipfun(f, u, m)` in `m`, one-sided into `[0, 1]`, 30 digits).
     #[test]
+    #[allow(clippy::excessive_precision)]
     fn derivatives_in_the_parameter_agree_with_mpmath() {
         let table: [(i64, f64, [f64; 3]); 4] = [
             (

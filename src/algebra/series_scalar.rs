@@ -162,14 +162,7 @@ impl Real for Series {
     fn sncndn_dual_by_rule(
         u: &crate::numbers::Dual<Self>,
         k: &crate::numbers::Dual<Self>,
-    ) -> Result<
-        (
-            crate::numbers::Dual<Self>,
-            crate::numbers::Dual<Self>,
-            crate::numbers::Dual<Self>,
-        ),
-        String,
-    > {
+    ) -> Result<crate::numbers::DualTriple<Self>, String> {
         Series::sncndn_dual(u, k).map_err(|e| e.to_string())
     }
     fn quarter_period_by_rule(k: &Self, complementary: bool) -> Result<Self, String> {

@@ -36,6 +36,9 @@ mod rational;
 pub use ball::{Ball, Decisions};
 pub use complex::{C64, Cplx};
 pub use dual::Dual;
+
+/// `(sn, cn, dn)` as dual numbers over `R`.
+pub type DualTriple<R> = (Dual<R>, Dual<R>, Dual<R>);
 pub use rational::{Rational, parse_rational};
 
 use std::fmt::Debug;
@@ -353,10 +356,7 @@ pub trait Real: Scalar + PartialOrd {
     /// `(sn, cn, dn)(u, k)` of dual numbers over this type by its own rule, for a type
     /// that evaluates by rules but does not enclose (only called when
     /// [`Real::BY_RULE`] and not [`Real::ENCLOSES`]).
-    fn sncndn_dual_by_rule(
-        _u: &Dual<Self>,
-        _k: &Dual<Self>,
-    ) -> Result<(Dual<Self>, Dual<Self>, Dual<Self>), String> {
+    fn sncndn_dual_by_rule(_u: &Dual<Self>, _k: &Dual<Self>) -> Result<DualTriple<Self>, String> {
         Err("sn, cn, dn have no rule for this type".into())
     }
     /// The amplitude `am(u, k)` by the type's own rule (only called when
