@@ -262,13 +262,13 @@ pub fn claim_block(input: &ReportInput, r: &ClaimResult) -> String {
     if r.verdict == Verdict::Defined {
         return s;
     }
-    s.push_str(&evidence_block(r));
+    s.push_str(&evidence_block(input, r));
     s
 }
 
 /// The evidence of a judged claim: samples, residual ladder, proof, exact points,
 /// counterexample and failed samples.
-fn evidence_block(r: &ClaimResult) -> String {
+fn evidence_block(input: &ReportInput, r: &ClaimResult) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
@@ -320,7 +320,7 @@ fn evidence_block(r: &ClaimResult) -> String {
                 format!("{} bits", c.bits)
             }
         );
-        let _ = writeln!(s, "{}", counterexample_block(c));
+        let _ = writeln!(s, "{}", counterexample_block(c, input.variables_of(&r.id)));
     }
     if !r.failures.is_empty() {
         let _ = writeln!(s, "Samples that could not be evaluated (not counted):\n");
@@ -445,7 +445,7 @@ fn erratum(input: &ReportInput, r: &ClaimResult) -> String {
         let _ = writeln!(
             s,
             "Counterexample (12 significant digits):\n\n{}",
-            counterexample_block(c)
+            counterexample_block(c, input.variables_of(&r.id))
         );
     }
     let fixes: Vec<&ClaimResult> = input

@@ -18,6 +18,7 @@
 use super::cells::{anchor, best_residual, printed_markdown, result_badge};
 use super::decimal::round_numbers;
 use super::paper_text::to_markdown;
+use super::variables::VarDef;
 use super::{ReportInput, stem_of};
 use crate::claims::kind::Form;
 use crate::claims::structure::{Environment, Place, Role};
@@ -353,23 +354,32 @@ pub fn index_table(input: &ReportInput, s: &Structure) -> String {
     t
 }
 
-/// A counterexample as decimals (12 significant digits), with the exact values in a
-/// collapsed block when rounding changed any of them.
-pub fn counterexample_block(c: &Counterexample) -> String {
+/// A counterexample as decimals (12 significant digits), each variable with what it is
+/// (from `vars`, the claim's variables with their definitions), with the exact values in
+/// a collapsed block when rounding changed any of them.
+pub fn counterexample_block(c: &Counterexample, vars: &[VarDef]) -> String {
     let mut s = String::new();
     let mut exact = String::new();
     let mut changed = false;
-    let mut row = |name: &str, value: &str, s: &mut String| {
+    let mut row = |name: &str, value: &str, note: Option<String>, s: &mut String| {
         let (d, ch) = round_numbers(value);
         changed |= ch;
-        let _ = writeln!(s, "- {name} = `{d}`");
+        match note {
+            Some(n) => {
+                let _ = writeln!(s, "- {name} = `{d}`, {n}");
+            }
+            None => {
+                let _ = writeln!(s, "- {name} = `{d}`");
+            }
+        }
         let _ = writeln!(exact, "- {name} = `{value}`");
     };
     for p in &c.point {
-        row(&format!("`{}`", p.name), &p.value, &mut s);
+        let note = vars.iter().find(|v| v.name == p.name).map(VarDef::note);
+        row(&format!("`{}`", p.name), &p.value, note, &mut s);
     }
-    row("left side", &c.lhs, &mut s);
-    row("right side", &c.rhs, &mut s);
+    row("left side", &c.lhs, None, &mut s);
+    row("right side", &c.rhs, None, &mut s);
     if changed {
         let _ = write!(
             s,
@@ -516,7 +526,11 @@ fn claim_entry(input: &ReportInput, s: &Structure, r: &ClaimResult, n: usize) ->
         );
     }
     if let Some(c) = &r.counterexample {
-        let _ = writeln!(t, "Counterexample:\n\n{}", counterexample_block(c));
+        let _ = writeln!(
+            t,
+            "Counterexample:\n\n{}",
+            counterexample_block(c, input.variables_of(&r.id))
+        );
     }
     t
 }
@@ -579,7 +593,11 @@ fn statement_section(input: &ReportInput, s: &Structure, env: &Environment) -> S
             );
         }
         if let Some(c) = &r.counterexample {
-            let _ = writeln!(t, "Counterexample:\n\n{}", counterexample_block(c));
+            let _ = writeln!(
+                t,
+                "Counterexample:\n\n{}",
+                counterexample_block(c, input.variables_of(&r.id))
+            );
         }
     }
     t
@@ -827,7 +845,7 @@ mod tests {
             rhs: "5e-1".into(),
             log2_residual: None,
         };
-        let b = counterexample_block(&c);
+        let b = counterexample_block(&c, &[]);
         assert!(
             b.starts_with("- `A` = `0.333333333333`\n- left side = `2`\n- right side = `0.5`\n"),
             "{b}"
@@ -837,6 +855,40 @@ mod tests {
             "{b}"
         );
         let c = Counterexample { point: vec![], ..c };
-        assert!(!counterexample_block(&c).contains("<details>"));
+        assert!(!counterexample_block(&c, &[]).contains("<details>"));
+    }
+
+    #[test]
+    fn counterexample_variables_say_what_they_are() {
+        let named = |name: &str, value: &str| Named {
+            name: name.into(),
+            value: value.into(),
+        };
+        let c = Counterexample {
+            bits: 53,
+            point: vec![named("kK", "1.5"), named("x", "0.25")],
+            lhs: "1".into(),
+            rhs: "2".into(),
+            log2_residual: None,
+        };
+        let def = |name: &str, sampled: bool, text: &str, latex: &str| VarDef {
+            name: name.into(),
+            sampled,
+            text: text.into(),
+            latex: latex.into(),
+        };
+        let vars = [
+            def("kK", false, "K(k)", "K(k)"),
+            def("x", true, "uniform(0, 1)", "-"),
+        ];
+        let b = counterexample_block(&c, &vars);
+        assert!(
+            b.contains("- `kK` = `1.5`, where $\\mathrm{kK} = K(k)$\n"),
+            "{b}"
+        );
+        assert!(
+            b.contains("- `x` = `0.25`, drawn as `uniform(0, 1)`\n"),
+            "{b}"
+        );
     }
 }
