@@ -116,7 +116,8 @@ fn draw_ladders<DB: DrawingBackend>(
         .configure_mesh()
         .x_desc("working precision p (bits)")
         .y_desc("log2 residual")
-        .label_style(("sans-serif", 13))
+        .label_style(("sans-serif", 14))
+        .axis_desc_style(("sans-serif", 15))
         .draw();
     let dashed = ShapeStyle::from(&BLACK).stroke_width(1);
     let _ = chart.draw_series(DashedLineSeries::new(
@@ -147,7 +148,7 @@ fn draw_key<DB: DrawingBackend>(
     area: &DrawingArea<DB, plotters::coord::Shift>,
     drawn: &[&ClaimResult],
 ) {
-    let font = ("sans-serif", 13).into_font().color(&BLACK);
+    let font = ("sans-serif", 14).into_font().color(&BLACK);
     let col_w = (RES_WIDTH as i32 - 40) / KEY_COLUMNS as i32;
     let _ = area.draw(&PathElement::new(
         vec![(20, 6), (44, 6)],

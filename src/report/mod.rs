@@ -10,6 +10,7 @@
 
 pub mod cells;
 pub mod decimal;
+pub mod diagram;
 pub mod figures;
 pub mod markdown;
 pub mod paper_text;

@@ -17,6 +17,7 @@
 
 use super::cells::{anchor, best_residual, printed_markdown, result_badge};
 use super::decimal::round_numbers;
+use super::diagram::mermaid;
 use super::paper_text::to_markdown;
 use super::variables::VarDef;
 use super::{ReportInput, stem_of};
@@ -120,7 +121,7 @@ impl<'a> Structure<'a> {
             .collect()
     }
 
-    fn uses(&self, id: &str) -> &'a [String] {
+    pub(super) fn uses(&self, id: &str) -> &'a [String] {
         self.places.get(id).map_or(&[], |p| p.uses.as_slice())
     }
 }
@@ -388,100 +389,6 @@ pub fn counterexample_block(c: &Counterexample, vars: &[VarDef]) -> String {
     }
     s
 }
-
-fn verdict_class(v: Verdict) -> &'static str {
-    match v {
-        Verdict::Holds => "holds",
-        Verdict::Proved => "proved",
-        Verdict::Construction => "construction",
-        Verdict::Refuted => "refuted",
-        Verdict::Inconclusive => "inconclusive",
-        Verdict::Defined => "defined",
-    }
-}
-
-/// The Mermaid dependency diagram: the environment's claims (definitions, background and
-/// controls left out) and the statements and steps of other environments that they use.
-pub fn mermaid(s: &Structure, env: &Environment) -> String {
-    let own: Vec<&ClaimResult> = s
-        .claims(env, None)
-        .into_iter()
-        .filter(|r| {
-            s.places.get(&r.id).is_some_and(|p| {
-                matches!(
-                    p.role,
-                    Role::Statement | Role::ProofStep | Role::Consequence
-                )
-            })
-        })
-        .collect();
-    let own_ids: BTreeSet<&str> = own.iter().map(|r| r.id.as_str()).collect();
-    let mut nodes: Vec<(&ClaimResult, bool)> = own.iter().map(|r| (*r, true)).collect();
-    let mut edges: Vec<(String, String)> = Vec::new();
-    for r in &own {
-        for u in s.uses(&r.id) {
-            let Some(ur) = s.get(u) else { continue };
-            let wanted = own_ids.contains(u.as_str())
-                || s.places.get(u).is_some_and(|p| {
-                    matches!(
-                        p.role,
-                        Role::Statement | Role::ProofStep | Role::Consequence
-                    )
-                });
-            if !wanted {
-                continue;
-            }
-            if !nodes.iter().any(|(n, _)| n.id == *u) {
-                nodes.push((ur, false));
-            }
-            edges.push((u.clone(), r.id.clone()));
-        }
-    }
-    let key = |id: &str| nodes.iter().position(|(n, _)| n.id == id).unwrap_or(0);
-    let mut m = String::from("```mermaid\nflowchart TD\n");
-    for (j, (r, inside)) in nodes.iter().enumerate() {
-        let statement = s
-            .places
-            .get(&r.id)
-            .is_some_and(|p| p.role == Role::Statement && p.environment == *env);
-        let (open, close) = if statement { ("([", "])") } else { ("[", "]") };
-        let env_note = if *inside {
-            String::new()
-        } else {
-            s.places
-                .get(&r.id)
-                .map(|p| format!(" · {}", p.environment.name()))
-                .unwrap_or_default()
-        };
-        let _ = writeln!(
-            m,
-            "  n{j}{open}\"{}<br/>{}{env_note}\"{close}:::{}{}",
-            r.id,
-            result_badge(r),
-            verdict_class(r.verdict),
-            if *inside { "" } else { "_ext" }
-        );
-    }
-    for (a, b) in &edges {
-        let _ = writeln!(m, "  n{} --> n{}", key(a), key(b));
-    }
-    m.push_str(MERMAID_CLASSES);
-    m.push_str("```\n");
-    m
-}
-
-const MERMAID_CLASSES: &str = concat!(
-    "  classDef proved fill:#1a7f37,stroke:#116329,color:#ffffff\n",
-    "  classDef holds fill:#dafbe1,stroke:#1a7f37,color:#000000\n",
-    "  classDef refuted fill:#ffebe9,stroke:#cf222e,color:#000000\n",
-    "  classDef inconclusive fill:#fff8c5,stroke:#9a6700,color:#000000\n",
-    "  classDef defined fill:#f6f8fa,stroke:#57606a,color:#000000\n",
-    "  classDef proved_ext fill:#1a7f37,stroke:#116329,color:#ffffff,stroke-dasharray:4 3\n",
-    "  classDef holds_ext fill:#dafbe1,stroke:#1a7f37,color:#000000,stroke-dasharray:4 3\n",
-    "  classDef refuted_ext fill:#ffebe9,stroke:#cf222e,color:#000000,stroke-dasharray:4 3\n",
-    "  classDef inconclusive_ext fill:#fff8c5,stroke:#9a6700,color:#000000,stroke-dasharray:4 3\n",
-    "  classDef defined_ext fill:#f6f8fa,stroke:#57606a,color:#000000,stroke-dasharray:4 3\n",
-);
 
 /// One claim on an environment page: anchor, verdict, evidence link, printed excerpt,
 /// uses, corrections and counterexample.

@@ -350,7 +350,7 @@ fn verify_text_has_a_legend_the_full_location_and_a_reason_line() {
         .collect();
     let text = words.join(" ");
     assert!(text.contains("to its very end"), "{s}");
-    let row = s[head..].lines().nth(1).unwrap();
+    let row = s[head + 1..].lines().nth(1).unwrap();
     assert!(row.starts_with("long.refuted"), "{s}");
     assert!(!row.contains("very end"), "wrapped: {s}");
     // one line of reason under the refuted claim
