@@ -90,9 +90,12 @@ function overflow() {
   for (const el of body.querySelectorAll('*')) {
     if (el.closest('svg, .katex, details:not([open]) > :not(summary)')) continue;
     const r = el.getBoundingClientRect();
-    const ox = getComputedStyle(el).overflowX;
+    const st = getComputedStyle(el);
+    const ox = st.overflowX;
     const scrolls = (ox === 'auto' || ox === 'scroll') && el.scrollWidth > el.clientWidth + 1;
-    if ((r.width > 0 && r.right > right) || scrolls) {
+    // an inline element that wraps may hang a space past the line's end
+    const slack = st.display === 'inline' ? 8 : 0;
+    if ((r.width > 0 && r.right > right + slack) || scrolls) {
       // report the outermost offender only
       if (el.parentElement && el.parentElement.hasAttribute('data-overflow')) {
         el.setAttribute('data-overflow', '1');

@@ -12,7 +12,7 @@ use std::fmt::Write;
 
 /// The most boxes side by side in a diagram (a row of the top-down layout, a column of
 /// ranks in the left-right one) before it is split.
-const MAX_ACROSS: usize = 4;
+const MAX_ACROSS: usize = 5;
 /// The longest line of a node label, in characters.
 const LABEL_LINE: usize = 18;
 
@@ -72,20 +72,21 @@ fn graph<'a>(s: &'a Structure, env: &Environment) -> Graph<'a> {
     Graph { nodes, edges }
 }
 
-/// The rank of each node of `part` (the longest chain of uses below it within `part`),
-/// by node index.
+/// The rank of each node of `part`: the longest chain of uses from it to a claim that
+/// nothing in `part` uses (as the layout ranks a graph: a claim sits just above its
+/// nearest user), by node index.
 fn ranks(g: &Graph, part: &[usize]) -> Vec<usize> {
     let mut rank = vec![0usize; g.nodes.len()];
-    // a chain is at most |part| long; relax that often (cycles cannot raise it further)
+    // a chain is at most |part| long; relax that often (a cycle cannot raise it further)
     for _ in 0..part.len() {
         let mut changed = false;
         for &(a, b) in &g.edges {
             if part.contains(&a)
                 && part.contains(&b)
-                && rank[b] < rank[a] + 1
-                && rank[a] < part.len()
+                && rank[a] < rank[b] + 1
+                && rank[b] < part.len()
             {
-                rank[b] = rank[a] + 1;
+                rank[a] = rank[b] + 1;
                 changed = true;
             }
         }
@@ -107,8 +108,41 @@ fn extent(g: &Graph, part: &[usize]) -> (usize, usize) {
     (widest, depth)
 }
 
+/// `n` with everything it rests on, in node order.
+fn closure(g: &Graph, n: usize) -> Vec<usize> {
+    let mut part = BTreeSet::from([n]);
+    let mut todo = vec![n];
+    while let Some(x) = todo.pop() {
+        for &(a, b) in &g.edges {
+            if b == x && part.insert(a) {
+                todo.push(a);
+            }
+        }
+    }
+    part.into_iter().collect()
+}
+
+/// The parts that draw what `n` rests on: all of it when that fits the page; else `n`
+/// with the claims it uses directly, then the parts of each of those.
+fn parts_below(g: &Graph, n: usize, out: &mut Vec<(Option<usize>, Vec<usize>)>) {
+    let all = closure(g, n);
+    if direction(g, &all).is_some() || out.len() > g.nodes.len() {
+        out.push((Some(n), all));
+        return;
+    }
+    let direct: BTreeSet<usize> = g.edges.iter().filter(|e| e.1 == n).map(|e| e.0).collect();
+    let mut star = direct.clone();
+    star.insert(n);
+    out.push((Some(n), star.into_iter().collect()));
+    for d in direct {
+        if g.edges.iter().any(|e| e.1 == d) && !out.iter().any(|(top, _)| *top == Some(d)) {
+            parts_below(g, d, out);
+        }
+    }
+}
+
 /// The parts a large graph is drawn in: for each node that no other node uses (in node
-/// order), that node with everything it rests on; the nodes that use nothing and that
+/// order), what it rests on ([`parts_below`]); the nodes that use nothing and that
 /// nothing uses go together into one part (without a node of its own).
 fn parts(g: &Graph) -> Vec<(Option<usize>, Vec<usize>)> {
     let mut out = Vec::new();
@@ -117,19 +151,10 @@ fn parts(g: &Graph) -> Vec<(Option<usize>, Vec<usize>)> {
         if g.edges.iter().any(|&(a, _)| a == n) {
             continue;
         }
-        let mut part = BTreeSet::from([n]);
-        let mut todo = vec![n];
-        while let Some(x) = todo.pop() {
-            for &(a, b) in &g.edges {
-                if b == x && part.insert(a) {
-                    todo.push(a);
-                }
-            }
-        }
-        if part.len() == 1 {
-            alone.push(n);
+        if g.edges.iter().any(|&(_, b)| b == n) {
+            parts_below(g, n, &mut out);
         } else {
-            out.push((Some(n), part.into_iter().collect()));
+            alone.push(n);
         }
     }
     if !alone.is_empty() {
@@ -224,7 +249,7 @@ pub fn mermaid(s: &Structure, env: &Environment) -> String {
     }
     let parts = parts(&g);
     let mut m = format!(
-        "The {} claims are drawn in {} diagrams, so that each fits the page: one per claim that no other drawn claim uses, with everything it rests on.\n\n",
+        "The {} claims are drawn in {} diagrams, so that each fits the page: one per claim that no other drawn claim uses, with everything it rests on (a claim that rests on too much for one diagram is drawn with the claims it uses directly, each of which gets its own diagram).\n\n",
         g.nodes.len(),
         parts.len()
     );

@@ -407,7 +407,12 @@ fn claim_entry(input: &ReportInput, s: &Structure, r: &ClaimResult, n: usize) ->
     let _ = writeln!(t, "{}\n", r.location);
     t.push_str(&printed_markdown(input, &r.printed));
     if r.verdict != Verdict::Defined {
-        let _ = writeln!(t, "Best residual: {}; {}.\n", best_residual(r), r.reason);
+        let _ = writeln!(
+            t,
+            "Best residual: {}; {}.\n",
+            best_residual(r),
+            super::cells::tex_powers(&r.reason)
+        );
     }
     let uses = s.uses(&r.id);
     if !uses.is_empty() {
