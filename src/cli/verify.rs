@@ -464,7 +464,7 @@ fn print_text(
         .max()
         .unwrap_or(8)
         .clamp(8, LOCATION_WIDTH);
-    write!(w, "{LEGEND}\n")?;
+    writeln!(w, "{LEGEND}")?;
     let mut head = format!(
         "{:idw$}  {:locw$}  {:9}  {:12}  {:12}  {:>5}",
         "id", "location", "form", "verdict", "expect", "g"

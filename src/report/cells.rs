@@ -134,12 +134,10 @@ pub fn tex_powers(s: &str) -> String {
                 .chars()
                 .next_back()
                 .is_some_and(|p| p.is_alphanumeric() || p == '.');
-        if base_ok {
-            if let Some((e, used)) = exponent(&s[j + 2..]) {
-                out.push_str(&format!("${c}^{{{e}}}$"));
-                j += 2 + used;
-                continue;
-            }
+        if base_ok && let Some((e, used)) = exponent(&s[j + 2..]) {
+            out.push_str(&format!("${c}^{{{e}}}$"));
+            j += 2 + used;
+            continue;
         }
         out.push(c);
         j += c.len_utf8();

@@ -746,6 +746,33 @@ mod tests {
     }
 
     #[test]
+    fn a_graph_too_wide_and_too_deep_is_drawn_in_parts_that_fit() {
+        // s uses six chains c{i}.1 -> c{i}.2 -> ... -> c{i}.6
+        let mut rs = vec![result("s", H, "printed", None)];
+        let mut pl = BTreeMap::new();
+        let heads: Vec<String> = (1..=6).map(|i| format!("c{i}.1")).collect();
+        let head_refs: Vec<&str> = heads.iter().map(String::as_str).collect();
+        pl.insert("s".to_string(), place(5, Role::Statement, &head_refs));
+        for i in 1..=6 {
+            for j in 1..=6 {
+                let id = format!("c{i}.{j}");
+                let next = format!("c{i}.{}", j + 1);
+                let uses: Vec<&str> = if j < 6 { vec![next.as_str()] } else { vec![] };
+                rs.push(result(&id, H, "printed", None));
+                pl.insert(id, place(5, Role::ProofStep, &uses));
+            }
+        }
+        let st = Structure::new(&rs, &pl);
+        let m = mermaid(&st, &env_at(5));
+        // s with its six direct uses (left to right), then one diagram per chain
+        assert!(m.contains("drawn in 7 diagrams"), "{m}");
+        assert_eq!(m.matches("flowchart LR").count(), 1, "{m}");
+        assert_eq!(m.matches("flowchart TD").count(), 6, "{m}");
+        assert!(m.contains("What `c3.1` rests on:"), "{m}");
+        assert_eq!(m, mermaid(&st, &env_at(5)));
+    }
+
+    #[test]
     fn counterexamples_in_decimals_with_exact_values_folded() {
         let c = Counterexample {
             bits: 0,
