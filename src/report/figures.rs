@@ -150,10 +150,12 @@ fn draw_key<DB: DrawingBackend>(
 ) {
     let font = ("sans-serif", 14).into_font().color(&BLACK);
     let col_w = (RES_WIDTH as i32 - 40) / KEY_COLUMNS as i32;
-    let _ = area.draw(&PathElement::new(
-        vec![(20, 6), (44, 6)],
-        BLACK.stroke_width(1),
-    ));
+    for x in [20, 30, 40] {
+        let _ = area.draw(&PathElement::new(
+            vec![(x, 6), (x + 6, 6)],
+            BLACK.stroke_width(1),
+        ));
+    }
     let _ = area.draw(&Text::new(
         "dashed: the reference 2^-p, which a true identity tracks; exact zeros sit on the bottom edge; (✗) refuted, (?) inconclusive",
         (52, 0),
