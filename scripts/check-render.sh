@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# Renders reports/README.md, a section report and a proof page to HTML with KaTeX (pandoc),
-# loads the pages in headless Chromium and asserts that the formulas typeset, every SVG
-# loads and every Mermaid diagram draws. Installs pandoc and chromium (Debian packages,
-# when root) and katex + mermaid + playwright-core (npm) on first use. Screenshots land in
+# Renders reports/README.md, a section report and proof pages to HTML with KaTeX (pandoc),
+# in a text column of GitHub's width (830 px), loads the pages in headless Chromium and
+# asserts that the formulas typeset, every SVG loads, every Mermaid diagram draws, no text
+# is shown smaller than 8 px (diagrams and figures at the scale they are shown) and nothing
+# runs past the column or scrolls sideways. Installs pandoc and chromium (Debian packages,
+# when root) and katex + mermaid + playwright-core (npm) on first use. Screenshots of every
+# page checked (its top, each diagram, each figure, each failing element) land in
 # target/render-check/.
 # Usage: scripts/check-render.sh [reports/README.md reports/02-euler-top.md ...]
 set -euo pipefail
@@ -21,12 +24,20 @@ out=target/render-check
 mkdir -p "$out"
 cp scripts/render-check/package.json scripts/render-check/check.mjs "$out/"
 [ -d "$out/node_modules/katex" ] && [ -d "$out/node_modules/mermaid" ] || (cd "$out" && npm install --silent --no-audit --no-fund >/dev/null)
-[ "$#" -gt 0 ] || set -- reports/README.md reports/02-euler-top.md reports/proofs/theorem-2.md
+[ "$#" -gt 0 ] || set -- reports/README.md reports/02-euler-top.md reports/04-elliptic-coordinates.md \
+  reports/proofs/theorem-2.md reports/proofs/proposition-6.md reports/proofs/lemma-2.md
+# GitHub shows a Markdown file in a column about 830 px wide (pandoc's own is 36em), scales
+# images down to it and lays a table out at the width of its unwrapped content, scrolling
+# when that is wider than the column
+printf '%s\n' 'body { max-width: 830px; }' 'img { max-width: 100%; }' \
+  'table { display: block; width: max-content; max-width: 100%; overflow: auto; }' >"$out/page.css"
+rm -f "$out"/*.png
 pages=()
 for md in "$@"; do
-  html="reports/.$(basename "$md" .md).render.html"
+  # next to the Markdown file, so that its relative links and images resolve
+  html="$(dirname "$md")/.$(basename "$md" .md).render.html"
   pandoc "$md" -f gfm+tex_math_dollars -t html5 -s --metadata title="$(basename "$md")" \
-    --katex="file://$(pwd)/$out/node_modules/katex/dist/" -o "$html"
+    --katex="file://$(pwd)/$out/node_modules/katex/dist/" -c "file://$(pwd)/$out/page.css" -o "$html"
   pages+=("$html")
 done
 status=0

@@ -4,7 +4,9 @@
 use super::ast::{BinOp, Binding, Expr, ExprKind, UnOp};
 use super::builtins::{Builtin, Tex};
 
-fn name_tex(n: &str) -> String {
+/// The LaTeX of a variable name: Greek names as letters, other names of more than one
+/// letter upright, `a_b` with an upright subscript.
+pub fn name_tex(n: &str) -> String {
     const GREEK: &[&str] = &[
         "alpha", "beta", "gamma", "delta", "epsilon", "kappa", "lambda", "mu", "nu", "rho",
         "sigma", "tau", "phi", "psi", "omega", "Omega", "Gamma", "Delta", "Phi", "Psi", "theta",

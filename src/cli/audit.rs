@@ -1,10 +1,12 @@
 //! `eulertop audit ID`: residual of one claim against precision up to ≥ 8192 bits, with
-//! the fitted slope (bits of agreement gained per bit of precision) and the verdict.
+//! the fitted slope (bits of agreement gained per bit of precision) and the verdict; an
+//! asymptotic claim shows its slope in h (order of convergence) at each precision instead.
 
 use super::verify::{fmt_log2, load, parse_bits};
 use super::{CliError, stdout, write_error};
 use crate::claims::catalogue::lookup::{Scope, find};
 use crate::claims::catalogue::{Catalogue, Claim};
+use crate::claims::kind::Kind;
 use crate::claims::verdict::{Options, Rung, run_claim};
 use crate::stats::ls_slope;
 use clap::Parser;
@@ -28,20 +30,27 @@ pub struct Args {
     pub catalogue: Option<String>,
 }
 
-/// Writes one row per rung: the residual of the claim run at that precision alone, flushed as
-/// soon as it is known.  Returns `(bits, −log2 residual)` of the rungs with a nonzero
-/// residual, and whether any rung was an order of convergence instead of a residual.
+/// What the rungs of an audit measured: residuals (with `(bits, −log2 residual)` of the
+/// nonzero ones, for the fit against precision) or, for an asymptotic claim, the order of
+/// convergence in h at each precision.
+#[derive(Default)]
+struct Measured {
+    xs: Vec<f64>,
+    ys: Vec<f64>,
+    slopes: Vec<f64>,
+}
+
+/// Writes one row per rung: the residual of the claim run at that precision alone (or the
+/// slope in h of an asymptotic claim), flushed as soon as it is known.
 fn ladder(
     out: &mut impl Write,
     cat: &Catalogue,
     claim: &Claim,
     bits: &[u32],
     bar: Option<&indicatif::ProgressBar>,
-) -> Result<(Vec<f64>, Vec<f64>, bool), CliError> {
+) -> Result<Measured, CliError> {
     let err = write_error("standard output");
-    let mut xs = Vec::new();
-    let mut ys = Vec::new();
-    let mut slopes = false;
+    let mut m = Measured::default();
     for &b in bits {
         let opts = Options {
             bits: vec![b],
@@ -52,14 +61,14 @@ fn ladder(
         let cell = match rung {
             None => format!("- ({})", r.reason),
             Some(Rung::Slope { slope, .. }) => {
-                slopes = true;
-                format!("slope {slope:.3}")
+                m.slopes.push(*slope);
+                format!("{slope:.3}")
             }
             Some(x) => fmt_log2(x.log2()),
         };
         if let Some(l) = rung.and_then(|x| x.log2()) {
-            xs.push(f64::from(b));
-            ys.push(-l);
+            m.xs.push(f64::from(b));
+            m.ys.push(-l);
         }
         let mut row = || writeln!(out, "{b:>8}  {cell:>14}").and_then(|()| out.flush());
         match bar {
@@ -70,24 +79,39 @@ fn ladder(
             None => row().map_err(&err)?,
         }
     }
-    Ok((xs, ys, slopes))
+    Ok(m)
 }
 
-/// The "fitted slope" line: the least-squares slope of −log2 residual against precision,
-/// or why there is none.
-fn slope_line(slopes: bool, bits: &[u32], xs: &[f64], ys: &[f64]) -> String {
-    if let Some(s) = ls_slope(xs, ys) {
+/// The line under the ladder of an asymptotic claim: the range of its slopes in h.
+fn order_line(slopes: &[f64]) -> String {
+    let lo = slopes.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = slopes.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let range = if format!("{lo:.3}") == format!("{hi:.3}") {
+        format!("{lo:.3} at every precision")
+    } else {
+        format!("{lo:.3} to {hi:.3}")
+    };
+    format!(
+        "slope in h: {range} (the smallest slope over the samples of log2 |residual| against \
+         log2 h, the order of convergence in h; no slope against precision is fitted)"
+    )
+}
+
+/// The line under the ladder: the least-squares slope of −log2 residual against
+/// precision, or why there is none; for an asymptotic claim, its slopes in h.
+fn slope_line(bits: &[u32], m: &Measured) -> String {
+    if !m.slopes.is_empty() && m.xs.is_empty() {
+        return order_line(&m.slopes);
+    }
+    if let Some(s) = ls_slope(&m.xs, &m.ys) {
         return format!("fitted slope: {s:.3} bits of agreement per bit of precision");
     }
-    let why = if slopes {
-        "an asymptotic claim: each rung shows its order of convergence in h, not a residual"
-            .to_string()
-    } else if bits.len() < 2 {
+    let why = if bits.len() < 2 {
         format!("{} rung run; two are needed", bits.len())
-    } else if xs.len() < 2 {
+    } else if m.xs.len() < 2 {
         format!(
             "{} of the {} rungs have a nonzero residual; two are needed",
-            xs.len(),
+            m.xs.len(),
             bits.len()
         )
     } else {
@@ -128,6 +152,11 @@ fn audit_one(
     bits: &[u32],
 ) -> Result<bool, CliError> {
     let err = write_error("standard output");
+    let column = if claim.kind == Kind::Asymptotic {
+        "slope in h"
+    } else {
+        "residual"
+    };
     writeln!(
         out,
         "{} ({}, {})",
@@ -135,12 +164,12 @@ fn audit_one(
         claim.location,
         claim.kind.name()
     )
-    .and_then(|()| writeln!(out, "{:>8}  {:>14}", "bits", "residual"))
+    .and_then(|()| writeln!(out, "{:>8}  {:>14}", "bits", column))
     .map_err(&err)?;
     let bar = std::io::stderr()
         .is_terminal()
         .then(|| indicatif::ProgressBar::new(bits.len() as u64 + 1));
-    let (xs, ys, slopes) = ladder(out, cat, claim, bits, bar.as_ref())?;
+    let measured = ladder(out, cat, claim, bits, bar.as_ref())?;
     let opts = Options {
         bits: bits.to_vec(),
         exact: true,
@@ -149,7 +178,7 @@ fn audit_one(
     if let Some(p) = &bar {
         p.finish_and_clear();
     }
-    let slope = slope_line(slopes, bits, &xs, &ys);
+    let slope = slope_line(bits, &measured);
     writeln!(out, "{slope}")
         .and_then(|()| {
             writeln!(

@@ -270,6 +270,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         paper_environments: cat.all_environments(),
         paper: cat.paper.clone(),
         environments,
+        variables: crate::report::variables::definitions(&cat),
     };
     let written = stage_and_install(&input, out, model_figures)?;
     if let Some(r) = &readme {

@@ -370,6 +370,87 @@ fn print_unexpected(w: &mut impl Write, r: &ClaimResult) -> std::io::Result<()> 
     Ok(())
 }
 
+/// Width of the location column of the text table; longer locations wrap onto
+/// continuation lines.
+const LOCATION_WIDTH: usize = 40;
+
+/// The legend above the text table: what each column means.
+const LEGEND: &str = "\
+columns: form: printed (as in the paper) or corrected (a corrected version of a printed
+         claim); verdict: marked ! when it differs from expect, the verdict the catalogue
+         expects; g: bits of precision lost to conditioning, the smallest g >= 0 with
+         residual <= 2^(-p+g) at every precision p; N bits: the largest scaled residual
+         |lhs - rhs| over the samples at N bits (0 = exactly zero), or for an asymptotic
+         claim \"slope s\": its order of convergence in h, the smallest slope over the
+         samples of log2 |residual| against log2 h.  A refuted or inconclusive claim is
+         followed by its reason.
+";
+
+/// Splits `text` into lines of at most `width` characters, at spaces where possible (a
+/// word longer than `width` is cut).  Always at least one line.
+pub fn wrap_text(text: &str, width: usize) -> Vec<String> {
+    let width = width.max(1);
+    let mut lines = Vec::new();
+    let mut cur = String::new();
+    for word in text.split(' ') {
+        let mut word: Vec<char> = word.chars().collect();
+        loop {
+            let used = cur.chars().count();
+            let sep = usize::from(used > 0);
+            if used + sep + word.len() <= width {
+                if sep == 1 {
+                    cur.push(' ');
+                }
+                cur.extend(word.iter());
+                break;
+            }
+            if used > 0 {
+                lines.push(std::mem::take(&mut cur));
+                continue;
+            }
+            cur.extend(word.drain(..width));
+            lines.push(std::mem::take(&mut cur));
+        }
+    }
+    if !cur.is_empty() || lines.is_empty() {
+        lines.push(cur);
+    }
+    lines
+}
+
+/// One table row of a claim (the first line of its location) and the continuation lines
+/// that carry the rest of its location.
+fn claim_rows(r: &ClaimResult, bits: &[u32], idw: usize, locw: usize) -> Vec<String> {
+    // control characters of the catalogue's text never reach the terminal
+    let loc = wrap_text(&super::printable(&r.location), locw);
+    let mark = if r.as_expected { "" } else { " !" };
+    let g = r.loss_bits.map_or("-".to_string(), |g| format!("{g:.1}"));
+    let mut line = format!(
+        "{:idw$}  {:locw$}  {:9}  {:12}  {:12}  {:>5}",
+        r.id,
+        loc[0],
+        r.form,
+        format!("{}{mark}", r.verdict.name()),
+        r.expect.map_or("-", |v| v.name()),
+        g
+    );
+    for (j, _) in bits.iter().enumerate() {
+        let cell = match r.residuals.get(j) {
+            None => "-".to_string(),
+            Some(Rung::Slope { slope, .. }) => format!("slope {slope:.2}"),
+            Some(x) => fmt_log2(x.log2()),
+        };
+        line.push_str(&format!("  {cell:>10}"));
+    }
+    let mut rows = vec![line];
+    rows.extend(
+        loc[1..]
+            .iter()
+            .map(|l| format!("{:idw$}  {l}", "").trim_end().to_string()),
+    );
+    rows
+}
+
 fn print_text(
     w: &mut impl Write,
     results: &[ClaimResult],
@@ -379,10 +460,11 @@ fn print_text(
     let idw = results.iter().map(|r| r.id.len()).max().unwrap_or(2).max(2);
     let locw = results
         .iter()
-        .map(|r| super::printable(&r.location).chars().count().min(40))
+        .map(|r| super::printable(&r.location).chars().count())
         .max()
         .unwrap_or(8)
-        .max(8);
+        .clamp(8, LOCATION_WIDTH);
+    writeln!(w, "{LEGEND}")?;
     let mut head = format!(
         "{:idw$}  {:locw$}  {:9}  {:12}  {:12}  {:>5}",
         "id", "location", "form", "verdict", "expect", "g"
@@ -392,30 +474,13 @@ fn print_text(
     }
     writeln!(w, "{head}")?;
     for r in results {
-        // control characters of the catalogue's text never reach the terminal
-        let loc: String = super::printable(&r.location).chars().take(40).collect();
-        let mark = if r.as_expected { "" } else { " !" };
-        let g = r.loss_bits.map_or("-".to_string(), |g| format!("{g:.1}"));
-        let mut line = format!(
-            "{:idw$}  {:locw$}  {:9}  {:12}  {:12}  {:>5}",
-            r.id,
-            loc,
-            r.form,
-            format!("{}{mark}", r.verdict.name()),
-            r.expect.map_or("-", |v| v.name()),
-            g
-        );
-        for (j, _) in bits.iter().enumerate() {
-            let cell = match r.residuals.get(j) {
-                None => "-".to_string(),
-                Some(Rung::Slope { slope, .. }) => format!("slope {slope:.2}"),
-                Some(x) => fmt_log2(x.log2()),
-            };
-            line.push_str(&format!("  {cell:>10}"));
+        for row in claim_rows(r, bits, idw, locw) {
+            writeln!(w, "{row}")?;
         }
-        writeln!(w, "{line}")?;
         if !r.as_expected {
             print_unexpected(w, r)?;
+        } else if matches!(r.verdict, Verdict::Refuted | Verdict::Inconclusive) {
+            writeln!(w, "    reason: {}", super::printable(&r.reason))?;
         }
     }
     if sum.failed_samples > 0 {

@@ -125,7 +125,7 @@ pub fn readme(input: &ReportInput) -> String {
     );
     let _ = writeln!(
         s,
-        "- **✓ holds**: the scaled residual is at most 2^(−p+g) at every precision p, with g ≤ the claim's bound on bits lost to conditioning; a true identity tracks 2^−p as p grows."
+        "- **✓ holds**: the scaled residual is at most $2^{{-p+g}}$ at every precision $p$, with $g$ ≤ the claim's bound on bits lost to conditioning; a true identity tracks $2^{{-p}}$ as $p$ grows."
     );
     let _ = writeln!(
         s,
@@ -185,18 +185,18 @@ pub fn readme(input: &ReportInput) -> String {
 /// The README's table of every claim, linked to its section page.
 fn every_claim(s: &mut String, input: &ReportInput) {
     let _ = writeln!(s, "\n## Every claim\n");
-    let _ = writeln!(s, "| claim | location | form | verdict | best residual |");
-    let _ = writeln!(s, "|---|---|---|---|---|");
+    let _ = writeln!(s, "| claim | form · location | verdict | best residual |");
+    let _ = writeln!(s, "|---|---|---|---|");
     for r in input.results {
         let mark = if r.as_expected { "" } else { " (unexpected)" };
         let _ = writeln!(
             s,
-            "| [{}]({}.md#{}) | {} | {} | {}{} | {} |",
+            "| [{}]({}.md#{}) | *{}* · {} | {}{} | {} |",
             esc_cell(&r.id),
             stem_of(r),
             anchor(&r.id),
-            esc_cell(&r.location),
             r.form,
+            esc_cell(&r.location),
             result_badge(r),
             mark,
             best_residual(r)
@@ -262,20 +262,20 @@ pub fn claim_block(input: &ReportInput, r: &ClaimResult) -> String {
     if r.verdict == Verdict::Defined {
         return s;
     }
-    s.push_str(&evidence_block(r));
+    s.push_str(&evidence_block(input, r));
     s
 }
 
 /// The evidence of a judged claim: samples, residual ladder, proof, exact points,
 /// counterexample and failed samples.
-fn evidence_block(r: &ClaimResult) -> String {
+fn evidence_block(input: &ReportInput, r: &ClaimResult) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
         "Samples: {} evaluated, {} could not be evaluated. {}\n",
         r.samples,
         r.failures.len(),
-        r.reason
+        super::cells::tex_powers(&r.reason)
     );
     if !r.residuals.is_empty() {
         let _ = writeln!(
@@ -320,7 +320,7 @@ fn evidence_block(r: &ClaimResult) -> String {
                 format!("{} bits", c.bits)
             }
         );
-        let _ = writeln!(s, "{}", counterexample_block(c));
+        let _ = writeln!(s, "{}", counterexample_block(c, input.variables_of(&r.id)));
     }
     if !r.failures.is_empty() {
         let _ = writeln!(s, "Samples that could not be evaluated (not counted):\n");
@@ -374,7 +374,7 @@ pub fn section_file(input: &ReportInput, sec: &Section, claims: &[&ClaimResult])
     );
     let _ = writeln!(
         s,
-        "*Residual against working precision, one line per claim: true identities (blue) follow the black line 2^−p; refuted ones (red) level off. Exact zeros are drawn at the bottom edge.*\n"
+        "*Residual against working precision, one line per claim, each in its own colour and marker and named in the key below the plot: true identities follow the dashed line $2^{{-p}}$; refuted ones (marked ✗ in the key) level off. Exact zeros are drawn at the bottom edge.*\n"
     );
     for r in claims {
         s.push_str(&claim_block(input, r));
@@ -445,7 +445,7 @@ fn erratum(input: &ReportInput, r: &ClaimResult) -> String {
         let _ = writeln!(
             s,
             "Counterexample (12 significant digits):\n\n{}",
-            counterexample_block(c)
+            counterexample_block(c, input.variables_of(&r.id))
         );
     }
     let fixes: Vec<&ClaimResult> = input

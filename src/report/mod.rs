@@ -10,12 +10,14 @@
 
 pub mod cells;
 pub mod decimal;
+pub mod diagram;
 pub mod figures;
 pub mod markdown;
 pub mod paper_text;
 pub mod proof_evidence;
 pub mod proofs;
 pub mod tex;
+pub mod variables;
 
 use crate::claims::structure::{Environment, Place};
 use crate::claims::verdict::ClaimResult;
@@ -69,6 +71,16 @@ pub struct ReportInput<'a> {
     pub paper: Option<crate::claims::catalogue::paper::Paper>,
     /// The printed statements and proofs of the environments, by environment name.
     pub environments: BTreeMap<String, paper_text::EnvironmentText>,
+    /// Each claim's sampled variables with the catalogue's definitions, by claim id (to
+    /// say what the variables of a counterexample are).
+    pub variables: BTreeMap<String, Vec<variables::VarDef>>,
+}
+
+impl ReportInput<'_> {
+    /// The sampled variables of claim `id` with their definitions (none when unknown).
+    pub fn variables_of(&self, id: &str) -> &[variables::VarDef] {
+        self.variables.get(id).map_or(&[], Vec::as_slice)
+    }
 }
 
 /// Section stem of a claim, from its `file:line` position.

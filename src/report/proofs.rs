@@ -17,7 +17,9 @@
 
 use super::cells::{anchor, best_residual, printed_markdown, result_badge};
 use super::decimal::round_numbers;
+use super::diagram::mermaid;
 use super::paper_text::to_markdown;
+use super::variables::VarDef;
 use super::{ReportInput, stem_of};
 use crate::claims::kind::Form;
 use crate::claims::structure::{Environment, Place, Role};
@@ -119,7 +121,7 @@ impl<'a> Structure<'a> {
             .collect()
     }
 
-    fn uses(&self, id: &str) -> &'a [String] {
+    pub(super) fn uses(&self, id: &str) -> &'a [String] {
         self.places.get(id).map_or(&[], |p| p.uses.as_slice())
     }
 }
@@ -353,23 +355,32 @@ pub fn index_table(input: &ReportInput, s: &Structure) -> String {
     t
 }
 
-/// A counterexample as decimals (12 significant digits), with the exact values in a
-/// collapsed block when rounding changed any of them.
-pub fn counterexample_block(c: &Counterexample) -> String {
+/// A counterexample as decimals (12 significant digits), each variable with what it is
+/// (from `vars`, the claim's variables with their definitions), with the exact values in
+/// a collapsed block when rounding changed any of them.
+pub fn counterexample_block(c: &Counterexample, vars: &[VarDef]) -> String {
     let mut s = String::new();
     let mut exact = String::new();
     let mut changed = false;
-    let mut row = |name: &str, value: &str, s: &mut String| {
+    let mut row = |name: &str, value: &str, note: Option<String>, s: &mut String| {
         let (d, ch) = round_numbers(value);
         changed |= ch;
-        let _ = writeln!(s, "- {name} = `{d}`");
+        match note {
+            Some(n) => {
+                let _ = writeln!(s, "- {name} = `{d}`, {n}");
+            }
+            None => {
+                let _ = writeln!(s, "- {name} = `{d}`");
+            }
+        }
         let _ = writeln!(exact, "- {name} = `{value}`");
     };
     for p in &c.point {
-        row(&format!("`{}`", p.name), &p.value, &mut s);
+        let note = vars.iter().find(|v| v.name == p.name).map(VarDef::note);
+        row(&format!("`{}`", p.name), &p.value, note, &mut s);
     }
-    row("left side", &c.lhs, &mut s);
-    row("right side", &c.rhs, &mut s);
+    row("left side", &c.lhs, None, &mut s);
+    row("right side", &c.rhs, None, &mut s);
     if changed {
         let _ = write!(
             s,
@@ -378,100 +389,6 @@ pub fn counterexample_block(c: &Counterexample) -> String {
     }
     s
 }
-
-fn verdict_class(v: Verdict) -> &'static str {
-    match v {
-        Verdict::Holds => "holds",
-        Verdict::Proved => "proved",
-        Verdict::Construction => "construction",
-        Verdict::Refuted => "refuted",
-        Verdict::Inconclusive => "inconclusive",
-        Verdict::Defined => "defined",
-    }
-}
-
-/// The Mermaid dependency diagram: the environment's claims (definitions, background and
-/// controls left out) and the statements and steps of other environments that they use.
-pub fn mermaid(s: &Structure, env: &Environment) -> String {
-    let own: Vec<&ClaimResult> = s
-        .claims(env, None)
-        .into_iter()
-        .filter(|r| {
-            s.places.get(&r.id).is_some_and(|p| {
-                matches!(
-                    p.role,
-                    Role::Statement | Role::ProofStep | Role::Consequence
-                )
-            })
-        })
-        .collect();
-    let own_ids: BTreeSet<&str> = own.iter().map(|r| r.id.as_str()).collect();
-    let mut nodes: Vec<(&ClaimResult, bool)> = own.iter().map(|r| (*r, true)).collect();
-    let mut edges: Vec<(String, String)> = Vec::new();
-    for r in &own {
-        for u in s.uses(&r.id) {
-            let Some(ur) = s.get(u) else { continue };
-            let wanted = own_ids.contains(u.as_str())
-                || s.places.get(u).is_some_and(|p| {
-                    matches!(
-                        p.role,
-                        Role::Statement | Role::ProofStep | Role::Consequence
-                    )
-                });
-            if !wanted {
-                continue;
-            }
-            if !nodes.iter().any(|(n, _)| n.id == *u) {
-                nodes.push((ur, false));
-            }
-            edges.push((u.clone(), r.id.clone()));
-        }
-    }
-    let key = |id: &str| nodes.iter().position(|(n, _)| n.id == id).unwrap_or(0);
-    let mut m = String::from("```mermaid\nflowchart TD\n");
-    for (j, (r, inside)) in nodes.iter().enumerate() {
-        let statement = s
-            .places
-            .get(&r.id)
-            .is_some_and(|p| p.role == Role::Statement && p.environment == *env);
-        let (open, close) = if statement { ("([", "])") } else { ("[", "]") };
-        let env_note = if *inside {
-            String::new()
-        } else {
-            s.places
-                .get(&r.id)
-                .map(|p| format!(" · {}", p.environment.name()))
-                .unwrap_or_default()
-        };
-        let _ = writeln!(
-            m,
-            "  n{j}{open}\"{}<br/>{}{env_note}\"{close}:::{}{}",
-            r.id,
-            result_badge(r),
-            verdict_class(r.verdict),
-            if *inside { "" } else { "_ext" }
-        );
-    }
-    for (a, b) in &edges {
-        let _ = writeln!(m, "  n{} --> n{}", key(a), key(b));
-    }
-    m.push_str(MERMAID_CLASSES);
-    m.push_str("```\n");
-    m
-}
-
-const MERMAID_CLASSES: &str = concat!(
-    "  classDef proved fill:#1a7f37,stroke:#116329,color:#ffffff\n",
-    "  classDef holds fill:#dafbe1,stroke:#1a7f37,color:#000000\n",
-    "  classDef refuted fill:#ffebe9,stroke:#cf222e,color:#000000\n",
-    "  classDef inconclusive fill:#fff8c5,stroke:#9a6700,color:#000000\n",
-    "  classDef defined fill:#f6f8fa,stroke:#57606a,color:#000000\n",
-    "  classDef proved_ext fill:#1a7f37,stroke:#116329,color:#ffffff,stroke-dasharray:4 3\n",
-    "  classDef holds_ext fill:#dafbe1,stroke:#1a7f37,color:#000000,stroke-dasharray:4 3\n",
-    "  classDef refuted_ext fill:#ffebe9,stroke:#cf222e,color:#000000,stroke-dasharray:4 3\n",
-    "  classDef inconclusive_ext fill:#fff8c5,stroke:#9a6700,color:#000000,stroke-dasharray:4 3\n",
-    "  classDef defined_ext fill:#f6f8fa,stroke:#57606a,color:#000000,stroke-dasharray:4 3\n",
-);
 
 /// One claim on an environment page: anchor, verdict, evidence link, printed excerpt,
 /// uses, corrections and counterexample.
@@ -490,7 +407,12 @@ fn claim_entry(input: &ReportInput, s: &Structure, r: &ClaimResult, n: usize) ->
     let _ = writeln!(t, "{}\n", r.location);
     t.push_str(&printed_markdown(input, &r.printed));
     if r.verdict != Verdict::Defined {
-        let _ = writeln!(t, "Best residual: {}; {}.\n", best_residual(r), r.reason);
+        let _ = writeln!(
+            t,
+            "Best residual: {}; {}.\n",
+            best_residual(r),
+            super::cells::tex_powers(&r.reason)
+        );
     }
     let uses = s.uses(&r.id);
     if !uses.is_empty() {
@@ -516,7 +438,11 @@ fn claim_entry(input: &ReportInput, s: &Structure, r: &ClaimResult, n: usize) ->
         );
     }
     if let Some(c) = &r.counterexample {
-        let _ = writeln!(t, "Counterexample:\n\n{}", counterexample_block(c));
+        let _ = writeln!(
+            t,
+            "Counterexample:\n\n{}",
+            counterexample_block(c, input.variables_of(&r.id))
+        );
     }
     t
 }
@@ -579,7 +505,11 @@ fn statement_section(input: &ReportInput, s: &Structure, env: &Environment) -> S
             );
         }
         if let Some(c) = &r.counterexample {
-            let _ = writeln!(t, "Counterexample:\n\n{}", counterexample_block(c));
+            let _ = writeln!(
+                t,
+                "Counterexample:\n\n{}",
+                counterexample_block(c, input.variables_of(&r.id))
+            );
         }
     }
     t
@@ -816,6 +746,33 @@ mod tests {
     }
 
     #[test]
+    fn a_graph_too_wide_and_too_deep_is_drawn_in_parts_that_fit() {
+        // s uses six chains c{i}.1 -> c{i}.2 -> ... -> c{i}.6
+        let mut rs = vec![result("s", H, "printed", None)];
+        let mut pl = BTreeMap::new();
+        let heads: Vec<String> = (1..=6).map(|i| format!("c{i}.1")).collect();
+        let head_refs: Vec<&str> = heads.iter().map(String::as_str).collect();
+        pl.insert("s".to_string(), place(5, Role::Statement, &head_refs));
+        for i in 1..=6 {
+            for j in 1..=6 {
+                let id = format!("c{i}.{j}");
+                let next = format!("c{i}.{}", j + 1);
+                let uses: Vec<&str> = if j < 6 { vec![next.as_str()] } else { vec![] };
+                rs.push(result(&id, H, "printed", None));
+                pl.insert(id, place(5, Role::ProofStep, &uses));
+            }
+        }
+        let st = Structure::new(&rs, &pl);
+        let m = mermaid(&st, &env_at(5));
+        // s with its six direct uses (left to right), then one diagram per chain
+        assert!(m.contains("drawn in 7 diagrams"), "{m}");
+        assert_eq!(m.matches("flowchart LR").count(), 1, "{m}");
+        assert_eq!(m.matches("flowchart TD").count(), 6, "{m}");
+        assert!(m.contains("What `c3.1` rests on:"), "{m}");
+        assert_eq!(m, mermaid(&st, &env_at(5)));
+    }
+
+    #[test]
     fn counterexamples_in_decimals_with_exact_values_folded() {
         let c = Counterexample {
             bits: 0,
@@ -827,7 +784,7 @@ mod tests {
             rhs: "5e-1".into(),
             log2_residual: None,
         };
-        let b = counterexample_block(&c);
+        let b = counterexample_block(&c, &[]);
         assert!(
             b.starts_with("- `A` = `0.333333333333`\n- left side = `2`\n- right side = `0.5`\n"),
             "{b}"
@@ -837,6 +794,40 @@ mod tests {
             "{b}"
         );
         let c = Counterexample { point: vec![], ..c };
-        assert!(!counterexample_block(&c).contains("<details>"));
+        assert!(!counterexample_block(&c, &[]).contains("<details>"));
+    }
+
+    #[test]
+    fn counterexample_variables_say_what_they_are() {
+        let named = |name: &str, value: &str| Named {
+            name: name.into(),
+            value: value.into(),
+        };
+        let c = Counterexample {
+            bits: 53,
+            point: vec![named("kK", "1.5"), named("x", "0.25")],
+            lhs: "1".into(),
+            rhs: "2".into(),
+            log2_residual: None,
+        };
+        let def = |name: &str, sampled: bool, text: &str, latex: &str| VarDef {
+            name: name.into(),
+            sampled,
+            text: text.into(),
+            latex: latex.into(),
+        };
+        let vars = [
+            def("kK", false, "K(k)", "K(k)"),
+            def("x", true, "uniform(0, 1)", "-"),
+        ];
+        let b = counterexample_block(&c, &vars);
+        assert!(
+            b.contains("- `kK` = `1.5`, where $\\mathrm{kK} = K(k)$\n"),
+            "{b}"
+        );
+        assert!(
+            b.contains("- `x` = `0.25`, drawn as `uniform(0, 1)`\n"),
+            "{b}"
+        );
     }
 }

@@ -303,3 +303,61 @@ fn verify_only_an_environment_runs_its_claims() {
     assert!(expected.len() > 1);
     assert_eq!(got, expected);
 }
+
+const LONG: &str = r#"
+[[claim]]
+id = "long.refuted"
+location = "Section 9, a deliberately long location that runs past forty characters to its very end"
+printed = 'x'
+kind = "identity"
+expect = "refuted"
+vars = [["x", "uniform(0.5, 1)"]]
+lhs = "exp(2*x)"
+rhs = "2*exp(x)"
+environment = "Section 2"
+role = "statement"
+"#;
+
+#[test]
+fn verify_text_has_a_legend_the_full_location_and_a_reason_line() {
+    let dir = temp_catalogue("long", LONG);
+    let out = bin()
+        .args(["verify", "--bits", "53,128", "--catalogue"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "refuted as expected");
+    let s = String::from_utf8(out.stdout).unwrap();
+    // the legend explains every column, g included, before the table
+    let head = s.find("\nid ").expect("a header row");
+    let legend = &s[..head];
+    for col in [
+        "form:",
+        "verdict:",
+        "expect",
+        "g: bits of precision lost",
+        "N bits:",
+    ] {
+        assert!(legend.contains(col), "{col} not explained: {s}");
+    }
+    assert!(legend.contains("slope s"), "{s}");
+    // the location is shown whole, wrapped at 40 characters
+    let words: Vec<&str> = s[head..]
+        .lines()
+        .skip(1)
+        .take_while(|l| !l.starts_with("    reason:"))
+        .flat_map(|l| l.split_whitespace())
+        .collect();
+    let text = words.join(" ");
+    assert!(text.contains("to its very end"), "{s}");
+    let row = s[head + 1..].lines().nth(1).unwrap();
+    assert!(row.starts_with("long.refuted"), "{s}");
+    assert!(!row.contains("very end"), "wrapped: {s}");
+    // one line of reason under the refuted claim
+    let reasons: Vec<&str> = s
+        .lines()
+        .filter(|l| l.starts_with("    reason: "))
+        .collect();
+    assert_eq!(reasons.len(), 1, "{s}");
+    assert!(reasons[0].len() > "    reason: ".len() + 10, "{s}");
+}

@@ -1496,9 +1496,13 @@ fn m16_audit_of_an_asymptotic_claim_explains_the_missing_fit() {
     let o = run(&["audit", "sec3.as.g1.printed", "--bits", "64,128"]);
     assert_eq!(o.code, Some(0), "{}", o.stderr);
     assert!(!o.stdout.contains("fewer than two rungs"), "{}", o.stdout);
+    // the slopes stand under a slope header, never under "residual"
+    let header = o.stdout.lines().nth(1).unwrap_or("");
+    assert!(header.contains("slope in h"), "{}", o.stdout);
+    assert!(!header.contains("residual"), "{}", o.stdout);
+    assert!(!o.stdout.contains("fitted slope: n/a"), "{}", o.stdout);
     assert!(
-        o.stdout
-            .contains("order of convergence in h, not a residual"),
+        o.stdout.contains("slope in h: ") && o.stdout.contains("order of convergence in h"),
         "{}",
         o.stdout
     );

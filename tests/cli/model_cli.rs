@@ -135,7 +135,22 @@ fn orbit_writes_csv_and_svg() {
     for x in &d {
         assert!((x - d[0]).abs() < 1e-12);
     }
-    assert!(std::fs::read_to_string(&svg).unwrap().contains("<svg"));
+    let figure = std::fs::read_to_string(&svg).unwrap();
+    assert!(figure.contains("<svg"));
+    // every tick label is readable: Δφ is constant to many digits, and the lower panel
+    // draws its deviation from δ, so no label repeats along an axis
+    let labels: Vec<&str> = figure
+        .split("<text")
+        .skip(1)
+        .filter_map(|t| t.split_once('>').and_then(|(_, r)| r.split_once("</text>")))
+        .map(|(l, _)| l.trim())
+        .collect();
+    assert!(labels.len() > 10, "{figure}");
+    for l in &labels {
+        let n = labels.iter().filter(|m| *m == l).count();
+        assert!(n <= 3, "tick label {l} drawn {n} times: {labels:?}");
+    }
+    assert!(figure.contains("dphi - delta"), "{figure}");
     std::fs::remove_dir_all(&dir).ok();
 }
 

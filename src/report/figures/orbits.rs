@@ -29,6 +29,8 @@ fn orbit_panel(area: &Area, data: &OrbitComparison, run: &DiscreteRun) -> io::Re
     chart
         .configure_mesh()
         .light_line_style(LIGHT)
+        .label_style(("sans-serif", 15))
+        .axis_desc_style(("sans-serif", 16))
         .x_desc("t")
         .y_desc("M_j")
         .draw()
@@ -62,6 +64,7 @@ fn orbit_panel(area: &Area, data: &OrbitComparison, run: &DiscreteRun) -> io::Re
     }
     chart
         .configure_series_labels()
+        .label_font(("sans-serif", 15))
         .position(SeriesLabelPosition::UpperRight)
         .border_style(BLACK)
         .background_style(WHITE.mix(0.8))

@@ -60,6 +60,8 @@ fn order_panel(area: &Area, p: &EllipticParams<f64>, fs: &[&OrderFit]) -> io::Re
     chart
         .configure_mesh()
         .light_line_style(LIGHT)
+        .label_style(("sans-serif", 15))
+        .axis_desc_style(("sans-serif", 16))
         .x_desc("h")
         .y_desc("‖M_N − M(T)‖∞")
         .x_label_formatter(&|v| format!("{v:.5}"))
@@ -80,6 +82,7 @@ fn order_panel(area: &Area, p: &EllipticParams<f64>, fs: &[&OrderFit]) -> io::Re
     reference_slope(&mut chart, fs, (hlo, hhi))?;
     chart
         .configure_series_labels()
+        .label_font(("sans-serif", 15))
         .position(SeriesLabelPosition::LowerRight)
         .border_style(BLACK)
         .background_style(WHITE.mix(0.8))

@@ -33,6 +33,8 @@ fn phase_panel(
     chart
         .configure_mesh()
         .light_line_style(LIGHT)
+        .label_style(("sans-serif", 15))
+        .axis_desc_style(("sans-serif", 16))
         .x_desc("φ̄ / K(k)")
         .y_desc("Δφ / (hν/2)")
         .y_label_formatter(&|v| format!("{v:.4}"))
@@ -67,6 +69,7 @@ fn phase_panel(
     }
     chart
         .configure_series_labels()
+        .label_font(("sans-serif", 15))
         .position(SeriesLabelPosition::UpperRight)
         .border_style(BLACK)
         .background_style(WHITE.mix(0.8))
