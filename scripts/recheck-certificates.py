@@ -66,8 +66,13 @@ This script:
   * derivatives: recomputed by the chain rule from the `dvar` table, whose entries are
     checked (roots: 2 r r' = a'; sn: s' = c d u' (+ the modulus terms); indeterminates;
     a `param`, a parameter of the proof's chart such as a phase step, moves with the
-    claim's variables as its chart equation says: no certificate states one, so a
-    derivative of a `param` is rejected rather than taken as 0);
+    claim's variables as the chart says: its stated derivative in x is taken as stated
+    and, once the certificate is read, every `coord NAME = tN` line (a claim's variable
+    the chart replaces, with its value in the chart's parameters) must have the
+    derivative 1 in x when NAME is x and 0 otherwise, computed with the stated
+    derivatives: the parameter moves exactly so that the claim's other variables stay
+    fixed (implicit differentiation of the chart); without a coord line a derivative of
+    a `param` is rejected);
   * a proof by parts of the domain writes one certificate per part, each from its own
     `# eulertop certificate` header; each part is rechecked with its own symbols, as the
     same name may stand for another root in another part;
@@ -333,6 +338,8 @@ class Cert:
         self.signsyms = {}  # sign symbol -> (index of the indeterminate x, sign c): sigma = sign(c x)
         self.facts = {}  # fact name -> a value proved positive (dn of a real argument)
         self.chart_counts = (0, 0)
+        self.coords = {}  # claim variable -> its value in the chart's parameters (`coord`)
+        self.param_dvars = []  # (x, param) of every stated derivative of a chart parameter
 
     # ---- the ring ----------------------------------------------------------------
     def declare(self, text):
@@ -1007,7 +1014,7 @@ class Cert:
             return self.const(1 if v == x else 0)
         if kind == "param" and v != x:
             raise CheckError(f"the derivative of the chart parameter {v} with respect to {x} is what the chart "
-                             "implies, and no chart equation gives it (a param is not held fixed by fiat)")
+                             "implies, and no `dvar` line states it (a param is not held fixed by fiat)")
         raise CheckError(f"no derivative of {v} with respect to {x}")
 
     def check_dvar(self, x, v, val):
@@ -1059,9 +1066,10 @@ class Cert:
             self.need(self.eq(val, self.const(0)), f"d{v}/d{x} must be 0")
         elif kind == "param" and v != x:
             # a parameter of the proof's chart (a phase step δ, with h a function of it)
-            # moves with the claim's variables as its chart equation says; none is stated
-            raise CheckError(f"d{v}/d{x}: the derivative of the chart parameter {v} is what the chart implies, "
-                             "and no chart equation gives it")
+            # moves with the claim's variables as the chart says: taken as stated, and
+            # checked against the `coord` lines once they are read (check_coordinates)
+            self.need(self.kinds.get(x) == "indeterminate", f"d{v}/d{x}: {x} is no indeterminate")
+            self.param_dvars.append((x, v))
         else:
             raise CheckError(f"cannot check the derivative of {v} ({kind})")
 
@@ -1195,6 +1203,11 @@ class Cert:
             self.conditions.append(rest)
         elif word == "chart":
             self.chart(rest)
+        elif word == "coord":
+            name, _, t = rest.partition(" = ")
+            self.need(re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*(\[\d+\])?", name.strip()) is not None
+                      and name.strip() not in self.coords, f"bad coord line {rest[:40]}")
+            self.coords[name.strip()] = self.vals[t.strip()]
         elif word in ("source", "premise"):
             pass  # the claim and the theorem's premises: checked for the whole file
         else:
@@ -1337,7 +1350,26 @@ class Cert:
             self.need(self.expected_claims == claims,
                       f"{claims} claim line(s) where the certificate announces {self.expected_claims}")
         self.check_branches()
+        self.check_coordinates()
         return claims
+
+    def check_coordinates(self):
+        """Every stated derivative of a chart parameter in x holds the claim's other
+        variables fixed: each `coord NAME = tN` (a claim's variable the chart replaces)
+        has the derivative 1 in x where NAME is x, else 0, computed with the stated
+        derivatives (the chart differentiated implicitly: for h = H(q, delta),
+        H_x + H_delta * delta' = 0).  Which claim variables need a coord line is checked
+        with the claim's formulas (certcheck.formula)."""
+        if not self.param_dvars:
+            return
+        self.need(self.coords, f"d{self.param_dvars[0][1]}/d{self.param_dvars[0][0]}: a derivative of a chart "
+                  "parameter, and no coord line gives a claim's variable the chart replaces")
+        for x in sorted({x for x, _ in self.param_dvars}):
+            for name, val in self.coords.items():
+                want = self.const(1 if name == x else 0)
+                self.need(self.eq(self.dfrac(val, x), want),
+                          f"coord {name}: with the stated derivatives of the chart's parameters, d{name}/d{x} "
+                          f"is not {1 if name == x else 0}: the chart does not hold the claim's other variables fixed")
 
     def chart(self, rest):
         """chart NAME(ARGS) value=tA,...: the value of an implicit map at the chart's

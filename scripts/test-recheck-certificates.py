@@ -149,6 +149,11 @@ class Cases:
         self.expect("a chart parameter with a false derivative is rejected",
                     recheck([os.path.join(DATA, "param-derivative.cert")], "--unbound"), False,
                     "chart parameter y")
+        self.expect("a chart parameter y with h = x + y held fixed: dy/dx = -1 is accepted",
+                    recheck([os.path.join(DATA, "param-coord.cert")], "--unbound"), True, "1 of 1")
+        self.expect("a chart parameter held fixed (dy/dx = 0) where h = x + y moves with x is rejected",
+                    recheck([os.path.join(DATA, "param-coord-moves.cert")], "--unbound"), False,
+                    "the chart does not hold the claim's other variables fixed")
         self.bound()
 
     def bound(self):
@@ -227,6 +232,27 @@ class Cases:
             path = write(t, f"self-{cid}.cert", prove(cid, t))
             self.expect(f"--self-test {cid}: each corruption is rejected",
                         recheck([], "--self-test", path), True, "self-test passes")
+
+    def chart_parameters(self):
+        """Proposition 3: the phase shift of step_gamma1 does not depend on phi, through the
+        phase step delta of the chart, which moves so that h stays fixed (`coord h`)."""
+        t = self.tmp
+        ps = prove("sec4.prop3.poisson-shift.g1.up", t)
+        lemma = write(t, "master-step.cert", prove("sec7.master12.step.up", t))
+        self.expect("a derivative in phi with the chart's phase step delta (coord h) rechecks",
+                    recheck([write(t, "ps.cert", ps), lemma]), True, "2 of 2 certificates recheck")
+        line = re.search(r"^coord h = (t\d+)$", ps, re.M)
+        phi = re.search(r"^node (t\d+) = phi$", ps, re.M)
+        self.expect("the coord line of h deleted is rejected",
+                    recheck([write(t, "ps-bad.cert", without(ps, r"coord h ")), lemma]), False,
+                    "no coord line gives a claim's variable the chart replaces")
+        self.expect("the coord line naming another variable than h is rejected",
+                    recheck([write(t, "ps-bad.cert", ps.replace(line.group(0), f"coord hh = {line.group(1)}")),
+                             lemma]), False, "the chart replaces the claim's variable h")
+        moved = ps.replace(line.group(0), f"coord h = {phi.group(1)}")
+        self.expect("the coord line of h at a value that moves with phi is rejected",
+                    recheck([write(t, "ps-bad.cert", moved), lemma]), False,
+                    "the chart does not hold the claim's other variables fixed")
 
     def hypothesis_signs(self):
         """Lemma 2: a square-root branch decided by the stated hypothesis
@@ -339,6 +365,7 @@ def main(argv):
     with tempfile.TemporaryDirectory() as tmp:
         cases = Cases(tmp)
         cases.run()
+        cases.chart_parameters()
         cases.hypothesis_signs()
         cases.multiples_of_roots()
         cases.sign_evidence()

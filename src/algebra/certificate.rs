@@ -28,6 +28,7 @@
 //! node t12 = sn b_1:2,b_2:-1 K:1 iKp:0 k=(…) -> …  # sn(2b₁ − b₂ + K/2) by DLMF 22.8, 22.4, 22.5
 //! node t15 = d t14 x -> …          # derivative; `dvar x v = …` lines give d v/d x
 //! inverse v k=(…) s=(…) c=(…) d=(…) z=Z_v   # an inverse of sn, cn, dn: sn v = s, …
+//! coord h = t17                  # a claim's variable a chart replaces: its value there
 //! claim t20 = t31
 //! part "M3" > 0                    # a proof by parts: the condition of this part
 //! assume branch step_gamma1 "…"    # a fact the derivation rests on (branch, lemma, hypothesis)
@@ -200,6 +201,7 @@ impl Ring {
         };
         self.equivalence_lines(&mut em, &names);
         self.chart_lines(&mut em);
+        self.coordinate_lines(&mut em);
         let mut claims = Vec::new();
         for (ln, rn) in &nodes {
             let a = em.visit(ln);
@@ -338,6 +340,27 @@ impl Ring {
             };
             let ids: Vec<String> = nodes.iter().map(|n| format!("t{}", em.visit(n))).collect();
             let _ = writeln!(em.out, "chart {key} value={}", ids.join(","));
+        }
+    }
+
+    /// The claim's variables that a chart replaces, with their values in the chart's
+    /// parameters: `coord NAME = tN`.  A recheck takes a derivative of a parameter that
+    /// is no claim variable (a phase step `δ`) in a claim's variable `x` as stated, and
+    /// then requires that every such coordinate has the derivative `[NAME = x]`: the
+    /// parameter moves so that the claim's other variables stay fixed, as the chart
+    /// implies.
+    fn coordinate_lines(&self, em: &mut Emitter<'_>) {
+        let Some(c) = self.state().coordinates.clone() else {
+            return;
+        };
+        for (i, (val, node)) in c.coords.iter().enumerate() {
+            let is_param = (c.params.iter())
+                .any(|(p, _)| (self.inner.v_add(p, val, true)).is_ok_and(|d| d.num.is_zero()));
+            let (Some(name), Some(node), false) = (c.names.get(i), node, is_param) else {
+                continue;
+            };
+            let id = em.visit(node);
+            let _ = writeln!(em.out, "coord {name} = t{id}");
         }
     }
 
