@@ -254,6 +254,34 @@ class Cases:
                     recheck([write(t, "ps-bad.cert", moved), lemma]), False,
                     "the chart does not hold the claim's other variables fixed")
 
+    def root_part_signs(self):
+        """Signs of values in a square root decided from the signs of their parts, some
+        by the condition of the part of the domain (`sign ... parts`), and the cover of
+        the domain by the parts of a proof by parts."""
+        def data(name):
+            return recheck([os.path.join(DATA, f"{name}.cert")], "--unbound")
+        self.expect("x + sqrt(2) y > 0 on the part x > 0, y > 0 is accepted", data("parts-sign"), True, "1 of 1")
+        self.expect("x - sqrt(2) y > 0 on the part x > 0, y > 0 is not decided by its parts",
+                    data("parts-sign-undecided"), False, "is not decided by the signs of its parts")
+        self.expect("x + sqrt(2) y < 0 on the part x > 0, y > 0 is rejected", data("parts-sign-opposite"), False,
+                    "is not decided by the signs of its parts")
+        self.expect("parts of the domain that leave out x < 0, y < 0 are rejected", data("parts-uncovered"), False,
+                    "the parts of the domain do not cover it")
+        t = self.tmp
+        sec = prove("sec4.sectors.up", t)
+        self.expect("sec4.sectors.up (its comparisons decided by the parts' conditions) rechecks, evaluated",
+                    recheck([write(t, "sec.cert", sec)]), True, "formulas: evaluated")
+        line = re.search(r"^sign value \(r_1\*M1\)/\(1\) > 0 parts$", sec, re.M).group(0)
+        self.expect("sec4.sectors.up with a sign by parts stated opposite is rejected",
+                    recheck([write(t, "sec-bad.cert", sec.replace(line, line.replace("> 0", "< 0"), 1))]), False,
+                    "is not decided by the signs of its parts")
+        self.expect("sec4.sectors.up with a part's condition negated is rejected",
+                    recheck([write(t, "sec-bad.cert", sec.replace('part "M1" > 0', 'part "M1" < 0', 1))]), False,
+                    "is not decided by the signs of its parts")
+        last = sec.rindex("# eulertop certificate")
+        self.expect("sec4.sectors.up without its last part is rejected",
+                    recheck([write(t, "sec-bad.cert", sec[:last])]), False, "the parts of the domain do not cover it")
+
     def hypothesis_signs(self):
         """Lemma 2: a square-root branch decided by the stated hypothesis
         omega-near-identity (tr omega > 1), and the corruptions of that evidence."""
@@ -366,6 +394,7 @@ def main(argv):
         cases = Cases(tmp)
         cases.run()
         cases.chart_parameters()
+        cases.root_part_signs()
         cases.hypothesis_signs()
         cases.multiples_of_roots()
         cases.sign_evidence()

@@ -532,10 +532,7 @@ impl Sym {
         }
         if self.is_positive_multiple_of_principal_root() {
             // √(c²a) = c·√a for c > 0, whatever the sign of a: a recheck finds its own
-            // evidence of the branch (c of a sign it proves, √a a positive or free root),
-            // but the recheck of such a proof (Section 8's Γ_VM) takes minutes of SymPy:
-            // it is left out of the certificates until the recheck is faster
-            ring.mark_uncertified("a square root c·√a with c > 0 and √a principal");
+            // evidence of the branch (c of a sign it proves, √a a positive or free root)
             return Ok(());
         }
         if radicand.decided_sign() == Some(-1) {
