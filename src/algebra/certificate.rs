@@ -254,15 +254,13 @@ impl Ring {
         // the parametrization too
         let factors = (evidence.iter())
             .any(|e| e.factor.num.as_constant().is_none() || e.factor.den.as_constant().is_none());
-        let Some(par) = (self.inner.opts.positivity.as_ref())
-            .filter(|_| {
-                !signs.is_empty()
-                    || factors
-                    || !facts.is_empty()
-                    || !valued.is_empty()
-                    || !by_parts.is_empty()
-            })
-        else {
+        let Some(par) = (self.inner.opts.positivity.as_ref()).filter(|_| {
+            !signs.is_empty()
+                || factors
+                || !facts.is_empty()
+                || !valued.is_empty()
+                || !by_parts.is_empty()
+        }) else {
             let mut out = hypothesis_sign_lines(&evidence, em);
             out.push_str(&self.fact_sign_lines(&facts, em));
             out.push_str(&root_sign_lines(&by_parts, em));
@@ -517,7 +515,10 @@ fn hypothesis_sign_lines(
 /// in a square root decided from the signs of its root-free parts, each proved, the
 /// condition of the part of the domain or a sign symbol's definition, which a recheck
 /// decides again (module [`super::root_signs`]).
-fn root_sign_lines(evidence: &[super::sign_state::RootSignEvidence], em: &mut Emitter<'_>) -> String {
+fn root_sign_lines(
+    evidence: &[super::sign_state::RootSignEvidence],
+    em: &mut Emitter<'_>,
+) -> String {
     let mut out = String::new();
     for e in evidence {
         let what = match &e.node {

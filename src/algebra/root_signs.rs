@@ -174,20 +174,21 @@ impl Sym {
         let known = (st.signs.root_signs.iter())
             .any(|e| e.sign == sign && e.value.num == self.val.num && e.value.den == self.val.den);
         if !known {
-            st.signs.root_signs.push(super::sign_state::RootSignEvidence {
-                node: self.node.clone(),
-                value: (*self.val).clone(),
-                sign,
-            });
+            st.signs
+                .root_signs
+                .push(super::sign_state::RootSignEvidence {
+                    node: self.node.clone(),
+                    value: (*self.val).clone(),
+                    sign,
+                });
         }
     }
 
     /// Is `source` the label of the condition of a part of the domain the proof is on
     /// (as [`Sym::part_condition_sign`] names it), not a stated hypothesis?
     fn is_part_condition(&self, source: &str) -> bool {
-        (self.ring.options().hypotheses.iter()).any(|(h, s)| {
-            source == format!("{} {} 0", h.what, if *s > 0 { ">" } else { "<" })
-        })
+        (self.ring.options().hypotheses.iter())
+            .any(|(h, s)| source == format!("{} {} 0", h.what, if *s > 0 { ">" } else { "<" }))
     }
 
     /// A root-free part of this value whose sign is undecided and can split the domain
