@@ -340,6 +340,15 @@ class Cases:
         self.expect("c * r where the sign of c is not proved is rejected",
                     recheck([os.path.join(DATA, "sqrt-multiple-unsigned.cert")], "--unbound"), False,
                     "square-root branch has no evidence")
+        self.expect("c * r with c = -x/z > 0 by the sign lines of x and z is accepted",
+                    recheck([os.path.join(DATA, "sqrt-multiple-stated.cert")], "--unbound"), True, "1 of 1")
+        self.expect("c * r with c = x/z < 0 by the sign lines of x and z, r a positive root, is rejected",
+                    recheck([os.path.join(DATA, "sqrt-multiple-stated-wrong.cert")], "--unbound"), False,
+                    "which the certificate contradicts")
+        t = self.tmp
+        gm = prove("sec8.GammaMV.up", t)
+        self.expect("(GammaMV): its root c * sqrt(a) with c > 0 rechecks, evaluated",
+                    recheck([write(t, "gm.cert", gm)]), True, "formulas: evaluated")
 
     def sign_evidence(self):
         """The sign evidence of sign symbols, of dn of a real argument and of values
