@@ -246,8 +246,11 @@ class Cases:
         self.expect("the coord line of h deleted is rejected",
                     recheck([write(t, "ps-bad.cert", without(ps, r"coord h ")), lemma]), False,
                     "no coord line gives a claim's variable the chart replaces")
-        self.expect("the coord line naming another variable than h is rejected",
+        self.expect("the coord line naming no variable of the claim is rejected",
                     recheck([write(t, "ps-bad.cert", ps.replace(line.group(0), f"coord hh = {line.group(1)}")),
+                             lemma]), False, "coord hh: not a variable of the claim")
+        self.expect("the coord line naming the claim's variable A instead of h is rejected",
+                    recheck([write(t, "ps-bad.cert", ps.replace(line.group(0), f"coord A = {line.group(1)}")),
                              lemma]), False, "the chart replaces the claim's variable h")
         moved = ps.replace(line.group(0), f"coord h = {phi.group(1)}")
         self.expect("the coord line of h at a value that moves with phi is rejected",

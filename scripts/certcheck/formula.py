@@ -107,12 +107,18 @@ def coordinate_binding(cert, src):
     claim's variables at which the claim calls an implicit map are bound to the chart's
     arguments (chart_variables): each one the chart replaces (bound to another value
     than its own symbol) needs a `coord` line with that value, which the recheck holds
-    fixed (Cert.check_coordinates)."""
+    fixed (Cert.check_coordinates); and each coord line must be such a variable, so that
+    the variables held fixed are the claim's."""
     if not getattr(cert, "param_dvars", None):
         return
     domain = next((v for k, v in src.items() if k.startswith("domain.")), {})
     names = {n for n, _ in list(domain.get("vars", [])) + list(src.get("claim.vars", []))}
-    for name, val in chart_variables(cert, src, {}).items():
+    bound = chart_variables(cert, src, {})
+    for name in cert.coords:
+        if name not in names or name not in bound:
+            raise FormulaMismatch(f"coord {name}: not a variable of the claim at which it calls a map of "
+                                  "the certificate's charts")
+    for name, val in bound.items():
         if name not in names or isinstance(val, tuple):
             continue
         if cert.kinds.get(name) == "indeterminate" and cert.eq(val, cert.frac(name)):
