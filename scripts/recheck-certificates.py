@@ -52,6 +52,17 @@ This script:
     (F)/(G)` then needs tN = fact * F/G with F/G of the stated sign, proved here;
   * `sign value (N)/(D) > 0`: the sign of a value written out (one the derivation made
     only for a decision), proved here like any other sign line;
+  * `sign tN > 0 parts` (or `sign value (N)/(D) > 0 parts`): a sign of a value in a square
+    root decided from the signs of its parts: for a numerator or denominator
+    p = a + b*r in a posroot r whose radicand has a sign so decided, the sign of b where
+    a = 0, of a and b where they agree, else of a times that of a**2 - b**2 * radicand;
+    each part's sign proved by the parametrization, by a sign line checked before, by a
+    sign symbol's definition, by the condition of this part of the domain (a `part`
+    line: the part is the condition times a rational number or a factor of proved
+    sign), or by its own parts in turn.  A comparison of the claim's formulas is
+    decided the same way;
+  * a proof by parts: the `part` lines of its certificates must cover the domain, as
+    the leaves of a tree of splits (each split value with a part for each sign);
   * sn, cn, dn: recomputed from the base symbols with the addition theorems
     (DLMF 22.8.1-3), the quarter-period shifts (DLMF 22.4.3) and the half-period values,
     and the argument is checked to be the stated combination of the bases;
@@ -66,8 +77,13 @@ This script:
   * derivatives: recomputed by the chain rule from the `dvar` table, whose entries are
     checked (roots: 2 r r' = a'; sn: s' = c d u' (+ the modulus terms); indeterminates;
     a `param`, a parameter of the proof's chart such as a phase step, moves with the
-    claim's variables as its chart equation says: no certificate states one, so a
-    derivative of a `param` is rejected rather than taken as 0);
+    claim's variables as the chart says: its stated derivative in x is taken as stated
+    and, once the certificate is read, every `coord NAME = tN` line (a claim's variable
+    the chart replaces, with its value in the chart's parameters) must have the
+    derivative 1 in x when NAME is x and 0 otherwise, computed with the stated
+    derivatives: the parameter moves exactly so that the claim's other variables stay
+    fixed (implicit differentiation of the chart); without a coord line a derivative of
+    a `param` is rejected);
   * a proof by parts of the domain writes one certificate per part, each from its own
     `# eulertop certificate` header; each part is rechecked with its own symbols, as the
     same name may stand for another root in another part;
@@ -333,6 +349,9 @@ class Cert:
         self.signsyms = {}  # sign symbol -> (index of the indeterminate x, sign c): sigma = sign(c x)
         self.facts = {}  # fact name -> a value proved positive (dn of a real argument)
         self.chart_counts = (0, 0)
+        self.part_conditions = []  # (value, sign) of each `part` line: this part of the domain
+        self.coords = {}  # claim variable -> its value in the chart's parameters (`coord`)
+        self.param_dvars = []  # (x, param) of every stated derivative of a chart parameter
 
     # ---- the ring ----------------------------------------------------------------
     def declare(self, text):
@@ -1007,7 +1026,7 @@ class Cert:
             return self.const(1 if v == x else 0)
         if kind == "param" and v != x:
             raise CheckError(f"the derivative of the chart parameter {v} with respect to {x} is what the chart "
-                             "implies, and no chart equation gives it (a param is not held fixed by fiat)")
+                             "implies, and no `dvar` line states it (a param is not held fixed by fiat)")
         raise CheckError(f"no derivative of {v} with respect to {x}")
 
     def check_dvar(self, x, v, val):
@@ -1059,9 +1078,10 @@ class Cert:
             self.need(self.eq(val, self.const(0)), f"d{v}/d{x} must be 0")
         elif kind == "param" and v != x:
             # a parameter of the proof's chart (a phase step δ, with h a function of it)
-            # moves with the claim's variables as its chart equation says; none is stated
-            raise CheckError(f"d{v}/d{x}: the derivative of the chart parameter {v} is what the chart implies, "
-                             "and no chart equation gives it")
+            # moves with the claim's variables as the chart says: taken as stated, and
+            # checked against the `coord` lines once they are read (check_coordinates)
+            self.need(self.kinds.get(x) == "indeterminate", f"d{v}/d{x}: {x} is no indeterminate")
+            self.param_dvars.append((x, v))
         else:
             raise CheckError(f"cannot check the derivative of {v} ({kind})")
 
@@ -1195,6 +1215,11 @@ class Cert:
             self.conditions.append(rest)
         elif word == "chart":
             self.chart(rest)
+        elif word == "coord":
+            name, _, t = rest.partition(" = ")
+            self.need(re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*(\[\d+\])?", name.strip()) is not None
+                      and name.strip() not in self.coords, f"bad coord line {rest[:40]}")
+            self.coords[name.strip()] = self.vals[t.strip()]
         elif word in ("source", "premise"):
             pass  # the claim and the theorem's premises: checked for the whole file
         else:
@@ -1212,17 +1237,23 @@ class Cert:
         `sign value (N)/(D) > 0 ...` states the sign of a value written out (one the
         derivation made only for a decision) with the same evidence."""
         m = re.fullmatch(r"(t\d+|value .+?) ([<>]) 0(?: square (.+?))?(?: hypothesis (\S+) factor (.+))?"
-                         r"(?: fact (F\d+) factor (.+))?", rest.strip())
+                         r"(?: fact (F\d+) factor (.+))?( parts)?", rest.strip())
         self.need(m is not None, f"bad sign line {rest[:40]}")
-        t, rel, square, label, factor, fact, ffactor = m.groups()
+        t, rel, square, label, factor, fact, ffactor, by_parts = m.groups()
         self.need(fact is None or (label is None and square is None), f"bad sign line {rest[:40]}")
+        self.need(by_parts is None or (fact is None and label is None and square is None), f"bad sign line {rest[:40]}")
         want = 1 if rel == ">" else -1
         value = self.vals[t] if t.startswith("t") else self.frac(t[len("value "):])
         base = value if square is None else self.frac(square)
+        if by_parts is not None:
+            self.need(self.parts_sign(value) == want,
+                      f"sign {t[:40]} {rel} 0 is not decided by the signs of its parts")
         if square is not None:
             self.need(want == 1 and self.eq(value, self.mul(base, base)),
                       f"sign {t} {rel} 0: {t} is not the square of {square[:60]}")
-        if fact is not None:
+        if by_parts is not None:
+            pass
+        elif fact is not None:
             self.need(fact in self.facts, f"sign {t[:40]} {rel} 0: no fact {fact}")
             f = self.frac(ffactor)
             self.need(self.eq(value, self.mul(self.facts[fact], f)),
@@ -1243,6 +1274,68 @@ class Cert:
         self.proved_signs.append((value, want))
         if want == 1 and t.startswith("t"):
             self.sign_lines.add(t)
+
+    # ---- signs from the signs of the parts in a square root (`sign ... parts`) --------
+    def parts_sign(self, f):
+        """The sign of f = N/D from the signs of the parts of N and D in their positive
+        roots (part_poly_sign), or None."""
+        n, d = self.part_poly_sign(f.num, 0), self.part_poly_sign(f.den, 0)
+        return None if n is None or d is None else n * d
+
+    def part_poly_sign(self, p, depth):
+        """The sign of the polynomial p: proved by the parametrization (tower_sign), a
+        sign line checked before, or the condition of this part of the domain
+        (known_sign); else, for p = a + b*r in a positive root r (a posroot, not a sign
+        symbol) whose radicand has a sign decided so: the sign of b where a = 0, of a and
+        b where they agree, else of a times that of a**2 - b**2 * radicand, which is
+        (a + b r)(a - b r), a - b r having the sign of a."""
+        if not p:
+            return None
+        if p.is_ground:
+            return 1 if p.LC > 0 else -1
+        s = self.tower_sign(p) or self.known_sign(Frac(p, self.ring.one))
+        if s is not None or depth >= 6:
+            return s
+        used = [k for k, deg in enumerate(p.degrees()) if deg > 0]
+        for name, i, rad in reversed(self.roots):
+            if i not in used or name in self.signsyms or name not in self.posroots or rad == self.ring.one:
+                continue
+            if any(m[i] > 1 for m in p.itermonoms()) or self.part_poly_sign(rad, depth + 1) != 1:
+                continue
+            a = self.ring.from_dict({m: c for m, c in p.iterterms() if m[i] == 0})
+            b = self.ring.from_dict({m[:i] + (0,) + m[i + 1:]: c for m, c in p.iterterms() if m[i] == 1})
+            sb = self.part_poly_sign(b, depth + 1)
+            sa = self.part_poly_sign(a, depth + 1) if a else 0
+            if sb is None or sa is None:
+                continue
+            if sa in (0, sb):
+                return sb
+            sq = self.part_poly_sign(self.reduce(a * a - b * b * rad), depth + 1)
+            if sq is not None:
+                return sa * sq
+        return None
+
+    def known_sign(self, f):
+        """The sign of f where a sign line checked before states the sign of f (or of
+        -f), or where f is the condition c of this part of the domain (a `part` line)
+        times a rational number, or times a factor whose sign the parametrization proves
+        (f/c, or f*c, of proved sign); None otherwise."""
+        for val, s in self.proved_signs:
+            if self.eq(val, f):
+                return s
+            if self.eq(val, self.neg(f)):
+                return -s
+        for c, s in self.part_conditions:
+            q = self.div(f, c)
+            r = self.rational(q)
+            if r is not None:
+                if r != 0:
+                    return s * (1 if r > 0 else -1)
+                continue
+            qs = self.frac_sign(q) or self.frac_sign(self.mul(f, c))
+            if qs in (1, -1):
+                return s * qs
+        return None
 
     def proved_sign(self, f):
         """The sign of f: a rational constant's, or proved by a parametrization."""
@@ -1321,6 +1414,13 @@ class Cert:
 
     def run(self, text, first_line=1):
         self.declare(text)
+        # the conditions of this part of the domain (`part "X" > 0`, written last), which
+        # decide the signs of the parts in a square root (`sign ... parts`)
+        for line in text.splitlines():
+            if line.startswith("part "):
+                m = re.fullmatch(r'part (".*") ([<>]) 0', line.split("  #", 1)[0].rstrip())
+                self.need(m is not None, f"bad part line {line[:40]}")
+                self.part_conditions.append((self.frac(json.loads(m.group(1))), 1 if m.group(2) == ">" else -1))
         claims = 0
         for ln, line in enumerate(text.splitlines(), first_line):
             line = line.split("  #", 1)[0].rstrip() if not line.startswith("#") else ""
@@ -1337,7 +1437,26 @@ class Cert:
             self.need(self.expected_claims == claims,
                       f"{claims} claim line(s) where the certificate announces {self.expected_claims}")
         self.check_branches()
+        self.check_coordinates()
         return claims
+
+    def check_coordinates(self):
+        """Every stated derivative of a chart parameter in x holds the claim's other
+        variables fixed: each `coord NAME = tN` (a claim's variable the chart replaces)
+        has the derivative 1 in x where NAME is x, else 0, computed with the stated
+        derivatives (the chart differentiated implicitly: for h = H(q, delta),
+        H_x + H_delta * delta' = 0).  Which claim variables need a coord line is checked
+        with the claim's formulas (certcheck.formula)."""
+        if not self.param_dvars:
+            return
+        self.need(self.coords, f"d{self.param_dvars[0][1]}/d{self.param_dvars[0][0]}: a derivative of a chart "
+                  "parameter, and no coord line gives a claim's variable the chart replaces")
+        for x in sorted({x for x, _ in self.param_dvars}):
+            for name, val in self.coords.items():
+                want = self.const(1 if name == x else 0)
+                self.need(self.eq(self.dfrac(val, x), want),
+                          f"coord {name}: with the stated derivatives of the chart's parameters, d{name}/d{x} "
+                          f"is not {1 if name == x else 0}: the chart does not hold the claim's other variables fixed")
 
     def chart(self, rest):
         """chart NAME(ARGS) value=tA,...: the value of an implicit map at the chart's
@@ -1384,7 +1503,11 @@ class Cert:
 
     def single_root(self, val):
         """(root name, sign of c) when val = c * r with r a root symbol that is no sign
-        symbol and c free of r, a nonzero constant or of a sign proved here, else None."""
+        symbol and c free of r, a nonzero constant or of a sign proved here, else None.
+        The candidates are tried first with the signs of sign lines checked before (of
+        c's numerator and denominator), then with the parametrizations, whose test of a
+        factor with a large root can take minutes."""
+        cands = []
         for name, i, a in self.roots:
             if a == self.ring.one or val.den.degree(i) > 0 or val.num.degree(i) != 1:
                 continue
@@ -1392,7 +1515,12 @@ class Cert:
             rest = val.num - val.num.coeff_wrt(x, 1) * x
             if rest:
                 continue
-            c = Frac(val.num.coeff_wrt(x, 1), val.den)
+            cands.append((name, Frac(val.num.coeff_wrt(x, 1), val.den)))
+        for name, c in cands:
+            s = self.stated_sign(c)
+            if s in (1, -1):
+                return name, s
+        for name, c in cands:
             r = self.rational(c)
             s = ((r > 0) - (r < 0)) if r is not None else (
                 self.frac_sign(c) if self.pring is not None else None) or (
@@ -1400,6 +1528,19 @@ class Cert:
             if s in (1, -1):
                 return name, s
         return None
+
+    def stated_sign(self, f):
+        """The sign of f = N/D from rational constants and the sign lines checked before
+        (of N and of D, each up to its negative), or None: no sign test."""
+        signs = []
+        for p in (f.num, f.den):
+            if p.is_ground:
+                signs.append((p.LC > 0) - (p.LC < 0))
+                continue
+            x = Frac(p, self.ring.one)
+            signs.append(next((s * t for val, s in self.proved_signs
+                               for t, y in ((1, x), (-1, self.neg(x))) if self.eq(val, y)), None))
+        return None if None in signs else signs[0] * signs[1]
 
 
 PRIME = 2147483647  # 2**31 - 1
@@ -1565,6 +1706,25 @@ def check_premises(text, claim, catalogue, assumes):
     return prem
 
 
+def covers(cases):
+    """Do the parts of a proof by parts cover the domain: the conditions of the parts (a
+    list of (value, '>' or '<') per part) are the leaves of a tree of splits, where every
+    part under a split states its value's sign and both signs have their parts?  (Where
+    a split value vanishes, on a set of measure zero, no part holds.)  A certificate
+    without conditions covers what is left (as do the cases of a discrete variable,
+    which state none)."""
+    if [] in cases:
+        return True
+    first = cases[0][0][0]
+    if not all(any(v == first for v, _ in c) for c in cases):
+        return False
+    for rel in (">", "<"):
+        sub = [[(v, r) for v, r in c if v != first] for c in cases if (first, rel) in c]
+        if not sub or not covers(sub):
+            return False
+    return True
+
+
 def check_text(name, text, catalogue=None):
     """A Result: ok when the certificate is bound to its claim in the catalogue (none:
     the derivation alone), every part rechecks with symbols of its own, its formulas
@@ -1576,18 +1736,23 @@ def check_text(name, text, catalogue=None):
         src, claim = {}, None
         if catalogue is not None:
             res.claim, claim, src = binding.bind(text, catalogue)
-        assumes, modes, charts, used = [], set(), [0, 0], {}
+        assumes, modes, charts, used, conditions = [], set(), [0, 0], {}, []
         for first, part in parts(text):
             cert = Cert(name)
             claims += cert.run(part, first)
             checked += cert.checked
             assumes += cert.assumes
             res.cases.append(" and ".join(cert.conditions))
+            conditions.append(cert.conditions)
             if catalogue is not None:
                 domain.check(cert, src)
                 modes.add(formula.check(cert, src, catalogue))
                 charts = [a + b for a, b in zip(charts, cert.chart_counts)]
             used.update(hypothesis.check(cert, src, catalogue, claim, binding.premises(text)))
+        cases = [[tuple(c.rsplit(" ", 2)[:2]) for c in cert_conditions] for cert_conditions in conditions]
+        if not covers(cases):
+            raise CheckError("the parts of the domain do not cover it: each split value needs a part for "
+                             "each of its signs (" + "; ".join(c or "the rest" for c in res.cases) + ")")
         res.premises = [(k, s, f"{used[s]['when']}: {st} (paper: {used[s]['paper']})" if s in used else st)
                         for k, s, st in check_premises(text, claim, catalogue, assumes)]
         res.lemmas = [s for k, s, _ in res.premises if k == "lemma"]

@@ -149,6 +149,11 @@ class Cases:
         self.expect("a chart parameter with a false derivative is rejected",
                     recheck([os.path.join(DATA, "param-derivative.cert")], "--unbound"), False,
                     "chart parameter y")
+        self.expect("a chart parameter y with h = x + y held fixed: dy/dx = -1 is accepted",
+                    recheck([os.path.join(DATA, "param-coord.cert")], "--unbound"), True, "1 of 1")
+        self.expect("a chart parameter held fixed (dy/dx = 0) where h = x + y moves with x is rejected",
+                    recheck([os.path.join(DATA, "param-coord-moves.cert")], "--unbound"), False,
+                    "the chart does not hold the claim's other variables fixed")
         self.bound()
 
     def bound(self):
@@ -228,6 +233,58 @@ class Cases:
             self.expect(f"--self-test {cid}: each corruption is rejected",
                         recheck([], "--self-test", path), True, "self-test passes")
 
+    def chart_parameters(self):
+        """Proposition 3: the phase shift of step_gamma1 does not depend on phi, through the
+        phase step delta of the chart, which moves so that h stays fixed (`coord h`)."""
+        t = self.tmp
+        ps = prove("sec4.prop3.poisson-shift.g1.up", t)
+        lemma = write(t, "master-step.cert", prove("sec7.master12.step.up", t))
+        self.expect("a derivative in phi with the chart's phase step delta (coord h) rechecks",
+                    recheck([write(t, "ps.cert", ps), lemma]), True, "2 of 2 certificates recheck")
+        line = re.search(r"^coord h = (t\d+)$", ps, re.M)
+        phi = re.search(r"^node (t\d+) = phi$", ps, re.M)
+        self.expect("the coord line of h deleted is rejected",
+                    recheck([write(t, "ps-bad.cert", without(ps, r"coord h ")), lemma]), False,
+                    "no coord line gives a claim's variable the chart replaces")
+        self.expect("the coord line naming no variable of the claim is rejected",
+                    recheck([write(t, "ps-bad.cert", ps.replace(line.group(0), f"coord hh = {line.group(1)}")),
+                             lemma]), False, "coord hh: not a variable of the claim")
+        self.expect("the coord line naming the claim's variable A instead of h is rejected",
+                    recheck([write(t, "ps-bad.cert", ps.replace(line.group(0), f"coord A = {line.group(1)}")),
+                             lemma]), False, "the chart replaces the claim's variable h")
+        moved = ps.replace(line.group(0), f"coord h = {phi.group(1)}")
+        self.expect("the coord line of h at a value that moves with phi is rejected",
+                    recheck([write(t, "ps-bad.cert", moved), lemma]), False,
+                    "the chart does not hold the claim's other variables fixed")
+
+    def root_part_signs(self):
+        """Signs of values in a square root decided from the signs of their parts, some
+        by the condition of the part of the domain (`sign ... parts`), and the cover of
+        the domain by the parts of a proof by parts."""
+        def data(name):
+            return recheck([os.path.join(DATA, f"{name}.cert")], "--unbound")
+        self.expect("x + sqrt(2) y > 0 on the part x > 0, y > 0 is accepted", data("parts-sign"), True, "1 of 1")
+        self.expect("x - sqrt(2) y > 0 on the part x > 0, y > 0 is not decided by its parts",
+                    data("parts-sign-undecided"), False, "is not decided by the signs of its parts")
+        self.expect("x + sqrt(2) y < 0 on the part x > 0, y > 0 is rejected", data("parts-sign-opposite"), False,
+                    "is not decided by the signs of its parts")
+        self.expect("parts of the domain that leave out x < 0, y < 0 are rejected", data("parts-uncovered"), False,
+                    "the parts of the domain do not cover it")
+        t = self.tmp
+        sec = prove("sec4.sectors.up", t)
+        self.expect("sec4.sectors.up (its comparisons decided by the parts' conditions) rechecks, evaluated",
+                    recheck([write(t, "sec.cert", sec)]), True, "formulas: evaluated")
+        line = re.search(r"^sign value \(r_1\*M1\)/\(1\) > 0 parts$", sec, re.M).group(0)
+        self.expect("sec4.sectors.up with a sign by parts stated opposite is rejected",
+                    recheck([write(t, "sec-bad.cert", sec.replace(line, line.replace("> 0", "< 0"), 1))]), False,
+                    "is not decided by the signs of its parts")
+        self.expect("sec4.sectors.up with a part's condition negated is rejected",
+                    recheck([write(t, "sec-bad.cert", sec.replace('part "M1" > 0', 'part "M1" < 0', 1))]), False,
+                    "is not decided by the signs of its parts")
+        last = sec.rindex("# eulertop certificate")
+        self.expect("sec4.sectors.up without its last part is rejected",
+                    recheck([write(t, "sec-bad.cert", sec[:last])]), False, "the parts of the domain do not cover it")
+
     def hypothesis_signs(self):
         """Lemma 2: a square-root branch decided by the stated hypothesis
         omega-near-identity (tr omega > 1), and the corruptions of that evidence."""
@@ -286,6 +343,15 @@ class Cases:
         self.expect("c * r where the sign of c is not proved is rejected",
                     recheck([os.path.join(DATA, "sqrt-multiple-unsigned.cert")], "--unbound"), False,
                     "square-root branch has no evidence")
+        self.expect("c * r with c = -x/z > 0 by the sign lines of x and z is accepted",
+                    recheck([os.path.join(DATA, "sqrt-multiple-stated.cert")], "--unbound"), True, "1 of 1")
+        self.expect("c * r with c = x/z < 0 by the sign lines of x and z, r a positive root, is rejected",
+                    recheck([os.path.join(DATA, "sqrt-multiple-stated-wrong.cert")], "--unbound"), False,
+                    "which the certificate contradicts")
+        t = self.tmp
+        gm = prove("sec8.GammaMV.up", t)
+        self.expect("(GammaMV): its root c * sqrt(a) with c > 0 rechecks, evaluated",
+                    recheck([write(t, "gm.cert", gm)]), True, "formulas: evaluated")
 
     def sign_evidence(self):
         """The sign evidence of sign symbols, of dn of a real argument and of values
@@ -339,6 +405,8 @@ def main(argv):
     with tempfile.TemporaryDirectory() as tmp:
         cases = Cases(tmp)
         cases.run()
+        cases.chart_parameters()
+        cases.root_part_signs()
         cases.hypothesis_signs()
         cases.multiples_of_roots()
         cases.sign_evidence()

@@ -2,7 +2,10 @@
 language), with the certificate's own exact arithmetic.
 
 A comparison in an `if` is decided only by a sign the certificate proves (a `sign tN`
-line whose node has the compared value, up to its negative) or by a rational constant;
+line whose node has the compared value, up to its negative), by a rational constant, or
+by the condition of the part of the domain the certificate is on (a `part` line: the
+compared value is the condition times a factor of proved sign, or a value in a square
+root whose parts' signs these decide, as for a `sign ... parts` line);
 a square root only as a `sqrt` node of the certificate with that radicand (whose branch
 has its own evidence).  Anything else raises Unsupported.
 """
@@ -109,6 +112,10 @@ class Evaluator:
                 return s
             if self.c.eq(val, self.c.neg(v)):
                 return -s
+        if self.c.part_conditions:
+            s = self.c.parts_sign(v)
+            if s in (1, -1):
+                return s
         raise Unsupported("a comparison whose sign the certificate does not prove")
 
     def compare(self, op, a, b):

@@ -102,6 +102,34 @@ def chart_variables(cert, src, env):
     return env
 
 
+def coordinate_binding(cert, src):
+    """Where the derivation takes a derivative of a chart parameter (a phase step), the
+    claim's variables at which the claim calls an implicit map are bound to the chart's
+    arguments (chart_variables): each one the chart replaces (bound to another value
+    than its own symbol) needs a `coord` line with that value, which the recheck holds
+    fixed (Cert.check_coordinates); and each coord line must be such a variable, so that
+    the variables held fixed are the claim's."""
+    if not getattr(cert, "param_dvars", None):
+        return
+    domain = next((v for k, v in src.items() if k.startswith("domain.")), {})
+    names = {n for n, _ in list(domain.get("vars", [])) + list(src.get("claim.vars", []))}
+    bound = chart_variables(cert, src, {})
+    for name in cert.coords:
+        if name not in names or name not in bound:
+            raise FormulaMismatch(f"coord {name}: not a variable of the claim at which it calls a map of "
+                                  "the certificate's charts")
+    for name, val in bound.items():
+        if name not in names or isinstance(val, tuple):
+            continue
+        if cert.kinds.get(name) == "indeterminate" and cert.eq(val, cert.frac(name)):
+            continue
+        if name not in cert.coords:
+            raise FormulaMismatch(f"the chart replaces the claim's variable {name}, whose derivative the "
+                                  "derivation's chart parameter keeps fixed, and no coord line states it")
+        if not cert.eq(cert.coords[name], val):
+            raise FormulaMismatch(f"coord {name}: the value is not the chart's argument at {name}")
+
+
 def claim_scope(cert, src):
     """(evaluator, environment) of the claim: its variables as the certificate's
     symbols and its `let` names bound, the definitions its formulas call."""
@@ -178,6 +206,7 @@ def check(cert, src, catalogue=None):
     here, 'text' when the evaluator does not cover the claim (it is then bound by the
     text of its formulas only); FormulaMismatch with the first difference otherwise."""
     cert.chart_counts = chart_checks(cert, catalogue) if catalogue is not None and cert.charts else (0, 0)
+    coordinate_binding(cert, src)
     try:
         lhs, rhs = sides(cert, src)
     except Unsupported as e:

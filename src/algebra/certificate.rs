@@ -19,6 +19,7 @@
 //! sign t8 > 0 hypothesis hypothesis.H factor (1)/(2)   # t8 = (H's value)·(1/2): by H
 //! sign t9 > 0 square (a)/(b) hypothesis hypothesis.H factor (F)/(G)  # t9 = (a/b)²
 //! sign value (N)/(D) > 0           # a value without a derivation, written out
+//! sign t11 > 0 parts               # decided from the signs of its parts in a square root
 //! signsym sgnx = sign (x)/(1)      # a sign symbol's definition: sgnx·x > 0
 //! fact F0 dn base b_1_2 value (D)  # dn of a base of real argument, 0 < k² < 1: D > 0
 //! fact F1 dn t14                   # dn node t14 of a real argument: its value > 0
@@ -28,6 +29,7 @@
 //! node t12 = sn b_1:2,b_2:-1 K:1 iKp:0 k=(…) -> …  # sn(2b₁ − b₂ + K/2) by DLMF 22.8, 22.4, 22.5
 //! node t15 = d t14 x -> …          # derivative; `dvar x v = …` lines give d v/d x
 //! inverse v k=(…) s=(…) c=(…) d=(…) z=Z_v   # an inverse of sn, cn, dn: sn v = s, …
+//! coord h = t17                   # a claim's variable a chart replaces: its value there
 //! claim t20 = t31
 //! part "M3" > 0                    # a proof by parts: the condition of this part
 //! assume branch step_gamma1 "…"    # a fact the derivation rests on (branch, lemma, hypothesis)
@@ -200,6 +202,7 @@ impl Ring {
         };
         self.equivalence_lines(&mut em, &names);
         self.chart_lines(&mut em);
+        self.coordinate_lines(&mut em);
         let mut claims = Vec::new();
         for (ln, rn) in &nodes {
             let a = em.visit(ln);
@@ -239,19 +242,28 @@ impl Ring {
             (st.signs.proved_signs.clone(), vars, roots)
         };
         let evidence = self.state().signs.evidence.clone();
-        let (facts, valued) = {
+        let (facts, valued, by_parts) = {
             let st = self.state();
-            (st.signs.fact_evidence.clone(), st.signs.valued.clone())
+            (
+                st.signs.fact_evidence.clone(),
+                st.signs.valued.clone(),
+                st.signs.root_signs.clone(),
+            )
         };
         // a factor of a hypothesis' value that is no constant has its sign proved with
         // the parametrization too
         let factors = (evidence.iter())
             .any(|e| e.factor.num.as_constant().is_none() || e.factor.den.as_constant().is_none());
-        let Some(par) = (self.inner.opts.positivity.as_ref())
-            .filter(|_| !signs.is_empty() || factors || !facts.is_empty() || !valued.is_empty())
-        else {
+        let Some(par) = (self.inner.opts.positivity.as_ref()).filter(|_| {
+            !signs.is_empty()
+                || factors
+                || !facts.is_empty()
+                || !valued.is_empty()
+                || !by_parts.is_empty()
+        }) else {
             let mut out = hypothesis_sign_lines(&evidence, em);
             out.push_str(&self.fact_sign_lines(&facts, em));
+            out.push_str(&root_sign_lines(&by_parts, em));
             return out;
         };
         let mut out = par.certificate_lines(&vars);
@@ -274,6 +286,7 @@ impl Ring {
         }
         out.push_str(&hypothesis_sign_lines(&evidence, em));
         out.push_str(&self.fact_sign_lines(&facts, em));
+        out.push_str(&root_sign_lines(&by_parts, em));
         out
     }
 
@@ -338,6 +351,27 @@ impl Ring {
             };
             let ids: Vec<String> = nodes.iter().map(|n| format!("t{}", em.visit(n))).collect();
             let _ = writeln!(em.out, "chart {key} value={}", ids.join(","));
+        }
+    }
+
+    /// The claim's variables that a chart replaces, with their values in the chart's
+    /// parameters: `coord NAME = tN`.  A recheck takes a derivative of a parameter that
+    /// is no claim variable (a phase step `δ`) in a claim's variable `x` as stated, and
+    /// then requires that every such coordinate has the derivative `[NAME = x]`: the
+    /// parameter moves so that the claim's other variables stay fixed, as the chart
+    /// implies.
+    fn coordinate_lines(&self, em: &mut Emitter<'_>) {
+        let Some(c) = self.state().coordinates.clone() else {
+            return;
+        };
+        for (i, (val, node)) in c.coords.iter().enumerate() {
+            let is_param = (c.params.iter())
+                .any(|(p, _)| (self.inner.v_add(p, val, true)).is_ok_and(|d| d.num.is_zero()));
+            let (Some(name), Some(node), false) = (c.names.get(i), node, is_param) else {
+                continue;
+            };
+            let id = em.visit(node);
+            let _ = writeln!(em.out, "coord {name} = t{id}");
         }
     }
 
@@ -473,6 +507,26 @@ fn hypothesis_sign_lines(
             e.label,
             nf_text(&e.factor.num, &e.factor.den, em.names)
         );
+    }
+    out
+}
+
+/// The `sign tN > 0 parts` (or `sign value (N)/(D) > 0 parts`) lines: a sign of a value
+/// in a square root decided from the signs of its root-free parts, each proved, the
+/// condition of the part of the domain or a sign symbol's definition, which a recheck
+/// decides again (module [`super::root_signs`]).
+fn root_sign_lines(
+    evidence: &[super::sign_state::RootSignEvidence],
+    em: &mut Emitter<'_>,
+) -> String {
+    let mut out = String::new();
+    for e in evidence {
+        let what = match &e.node {
+            Some(n) => format!("t{}", em.visit(n)),
+            None => format!("value {}", nf_text(&e.value.num, &e.value.den, em.names)),
+        };
+        let rel = if e.sign > 0 { ">" } else { "<" };
+        let _ = writeln!(out, "sign {what} {rel} 0 parts");
     }
     out
 }

@@ -27,6 +27,17 @@ impl Ring {
     /// expressions in the indeterminates `params` (as many as `coords`): from now on
     /// [`Sym::derivative`] with respect to a coordinate uses the chain rule.
     pub fn set_coordinates(&self, coords: Vec<Sym>, params: Vec<Sym>) -> AlgResult<()> {
+        self.set_named_coordinates(coords, Vec::new(), params)
+    }
+
+    /// [`Ring::set_coordinates`] with the claim's name of each coordinate, which a
+    /// certificate states with the coordinate's value in the parameters (a `coord` line).
+    pub fn set_named_coordinates(
+        &self,
+        coords: Vec<Sym>,
+        names: Vec<String>,
+        params: Vec<Sym>,
+    ) -> AlgResult<()> {
         if coords.len() != params.len() {
             return Err(AlgebraError::Derivative(format!(
                 "{} coordinates for {} parameters",
@@ -36,6 +47,7 @@ impl Ring {
         }
         self.state().coordinates = Some(Coordinates {
             coords: coords.iter().map(Sym::stored).collect(),
+            names,
             params: params.iter().map(Sym::stored).collect(),
             inverse: None,
         });

@@ -139,32 +139,10 @@ impl Ring {
             v.num.render(&names),
             v.den.render(&names)
         );
-        self.note_chart_parameter_derivative(idx, jx)?;
         let mut st = self.state();
         st.dcache.insert((idx, jx), v.clone());
         st.derivation_lines.push(line);
         Ok(v)
-    }
-
-    /// A certificate states no derivative of a chart parameter (a phase step `δ`) in
-    /// another variable: the chart implies it, and no chart equation in the certificate
-    /// gives it, so a recheck rejects the line; the proof then has no certificate.
-    fn note_chart_parameter_derivative(&self, idx: usize, jx: usize) -> AlgResult<()> {
-        let inner = &self.inner;
-        if !self.certifying() || inner.root_of_var(idx).is_some() || idx == inner.kvar(jx) {
-            return Ok(());
-        }
-        let j = idx - inner.opts.max_roots;
-        let opaque = matches!(
-            self.state().vars[j].kind,
-            VarKind::Opaque { constant: false }
-        );
-        if opaque && self.is_coordinate_parameter(j)? {
-            self.mark_uncertified(
-                "the derivative of a chart parameter (a phase step) in another variable, which the chart implies and no certificate line gives",
-            );
-        }
-        Ok(())
     }
 
     fn root_derivative(&self, i: usize, jx: usize) -> AlgResult<Val> {

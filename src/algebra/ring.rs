@@ -230,6 +230,8 @@ pub(crate) type ImplicitValue = (String, Vec<Stored>);
 #[derive(Clone, Default)]
 pub(crate) struct Coordinates {
     pub coords: Vec<Stored>,
+    /// The claim's name of each coordinate (`x`, or `M[2]` for a component), where known.
+    pub names: Vec<String>,
     pub params: Vec<Stored>,
     pub inverse: Option<Vec<Vec<Stored>>>,
 }

@@ -164,7 +164,31 @@ impl Sym {
             used.push(q);
             sa * sq
         };
-        combine(s * sd, &used, &self.ring)
+        combine(s * sd, &used, self)
+    }
+
+    /// Records, for a certificate, the sign `sign` of this value decided from its parts
+    /// (a `sign … > 0 parts` line, decided again by a recheck), once per value.
+    fn record_root_sign(&self, sign: i32) {
+        let mut st = self.ring.state();
+        let known = (st.signs.root_signs.iter())
+            .any(|e| e.sign == sign && e.value.num == self.val.num && e.value.den == self.val.den);
+        if !known {
+            st.signs
+                .root_signs
+                .push(super::sign_state::RootSignEvidence {
+                    node: self.node.clone(),
+                    value: (*self.val).clone(),
+                    sign,
+                });
+        }
+    }
+
+    /// Is `source` the label of the condition of a part of the domain the proof is on
+    /// (as [`Sym::part_condition_sign`] names it), not a stated hypothesis?
+    fn is_part_condition(&self, source: &str) -> bool {
+        (self.ring.options().hypotheses.iter())
+            .any(|(h, s)| source == format!("{} {} 0", h.what, if *s > 0 { ">" } else { "<" }))
     }
 
     /// A root-free part of this value whose sign is undecided and can split the domain
@@ -195,15 +219,23 @@ impl Sym {
 /// The decision of a sign made from `used`: by a hypothesis where one of them is (the
 /// first one's source), else by a definition.  `None` where every part is proved: rule 2
 /// of [`super::decide`] has decided such a value already, or could not, and the proof
-/// goes on as it would without this module.  Such a sign is not recorded by the
-/// certificate format.
-fn combine(sign: i32, used: &[Decision], ring: &super::ring::Ring) -> Option<Decision> {
+/// goes on as it would without this module.  A certificate records the sign (a recheck
+/// decides it again from the parts, a part by a proved sign, the condition of the part
+/// of the domain or a sign symbol's definition); a part decided by a stated hypothesis
+/// it does not record.
+fn combine(sign: i32, used: &[Decision], value: &Sym) -> Option<Decision> {
     if used.iter().all(|d| matches!(d, Decision::Proved(_))) {
         return None;
     }
-    ring.mark_uncertified(
-        "a sign in a square root decided from the signs of its parts, some by a condition or a definition",
-    );
+    let stated = (used.iter())
+        .any(|d| matches!(d, Decision::Hypothesis(_, source) if !value.is_part_condition(source)));
+    if stated {
+        value.ring.mark_uncertified(
+            "a sign in a square root decided from the signs of its parts, one by a stated hypothesis",
+        );
+    } else if value.ring.certifying() {
+        value.record_root_sign(sign);
+    }
     for d in used {
         if let Decision::Hypothesis(_, source) = d {
             return Some(Decision::Hypothesis(sign, source.clone()));

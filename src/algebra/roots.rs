@@ -530,12 +530,15 @@ impl Sym {
             }
             _ => {}
         }
-        if self.is_positive_multiple_of_principal_root() {
+        if let Some(c) = self.positive_multiple_of_principal_root() {
             // √(c²a) = c·√a for c > 0, whatever the sign of a: a recheck finds its own
             // evidence of the branch (c of a sign it proves, √a a positive or free root),
-            // but the recheck of such a proof (Section 8's Γ_VM) takes minutes of SymPy:
-            // it is left out of the certificates until the recheck is faster
-            ring.mark_uncertified("a square root c·√a with c > 0 and √a principal");
+            // which a sign of c by a hypothesis or a part's condition is not
+            if matches!(c, Decision::Hypothesis(..)) {
+                ring.mark_uncertified(
+                    "a square root c·√a with √a principal and c > 0 by a hypothesis or a part's condition",
+                );
+            }
             return Ok(());
         }
         if radicand.decided_sign() == Some(-1) {
@@ -604,24 +607,25 @@ impl Sym {
         Ok((inner.v_div(&cand, &dval)?, fresh))
     }
 
-    /// Whether this value is `c·r` for a root `r` that is the principal root of its
+    /// Where this value is `c·r` for a root `r` that is the principal root of its
     /// radicand by definition (adjoined with its principal values) and a factor `c`
-    /// free of `r` with a decided positive sign: then, as the value's square is
-    /// `c²·r²`, the value is the principal root of its square, whatever the sign of `r²`.
-    fn is_positive_multiple_of_principal_root(&self) -> bool {
+    /// free of `r` with a decided positive sign, the decision of that sign: then, as the
+    /// value's square is `c²·r²`, the value is the principal root of its square,
+    /// whatever the sign of `r²`.
+    fn positive_multiple_of_principal_root(&self) -> Option<Decision> {
         let ring = &self.ring;
-        self.val.num.used_vars().into_iter().any(|v| {
-            let Some(i) = ring.inner.root_of_var(v) else {
-                return false;
-            };
+        self.val.num.used_vars().into_iter().find_map(|v| {
+            let i = ring.inner.root_of_var(v)?;
             if !ring.state().roots[i].principal {
-                return false;
+                return None;
             }
-            let Ok(c) = self.try_div(&ring.root_sym(i)) else {
-                return false;
-            };
+            let c = self.try_div(&ring.root_sym(i)).ok()?;
             let free = |p: &Poly| !p.used_vars().contains(&v);
-            free(&c.val.num) && free(&c.val.den) && c.decided_sign() == Some(1)
+            if !(free(&c.val.num) && free(&c.val.den)) {
+                return None;
+            }
+            let d = c.decision();
+            (d.sign() == Some(1)).then_some(d)
         })
     }
 

@@ -94,6 +94,17 @@ pub(crate) struct SignEvidence {
     pub factor: Val,
 }
 
+/// A sign of a value in a square root decided from the signs of its root-free parts
+/// (module [`super::root_signs`]), some by the condition of the part of the domain the
+/// proof is on or by a sign symbol's definition: a certificate states the value (by its
+/// derivation, or written out) and its sign, which a recheck decides again from the parts.
+#[derive(Clone, Debug)]
+pub(crate) struct RootSignEvidence {
+    pub node: Option<Arc<Node>>,
+    pub value: Val,
+    pub sign: i32,
+}
+
 /// The sign-only state of a ring (see the module).
 #[derive(Default)]
 pub(crate) struct SignState {
@@ -122,4 +133,7 @@ pub(crate) struct SignState {
     pub real_opaque: Vec<usize>,
     /// The signs decided by a stated hypothesis, with their evidence (for certificates).
     pub evidence: Vec<SignEvidence>,
+    /// The signs decided from the signs of their parts in a square root (for
+    /// certificates), in the order decided (a part's before its value's).
+    pub root_signs: Vec<RootSignEvidence>,
 }

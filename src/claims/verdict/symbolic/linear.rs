@@ -231,17 +231,27 @@ pub(super) fn declare_coordinates(
             .filter(|c| c.as_rational().is_none())
             .collect()
     };
-    let (mut coords, mut params) = (Vec::new(), Vec::new());
+    let (mut coords, mut params, mut names) = (Vec::new(), Vec::new(), Vec::new());
     for (name, role, _) in roles {
         if *role != Role::Free {
             continue;
         }
         let Some(v) = ev.lookup(name) else { continue };
+        let comps = v.components();
+        for (i, c) in comps.iter().enumerate() {
+            if c.as_rational().is_none() {
+                names.push(if comps.len() == 1 {
+                    name.clone()
+                } else {
+                    format!("{name}[{}]", i + 1)
+                });
+            }
+        }
         coords.extend(symbolic(v));
         if !replaced.contains(name) {
             params.extend(symbolic(v));
         }
     }
     params.extend(new_params);
-    ring.set_coordinates(coords, params)
+    ring.set_named_coordinates(coords, names, params)
 }
