@@ -32,9 +32,23 @@ use crate::numbers::Scalar;
 /// The equations `E(x, h)` of a system, as components.
 pub type Equations<'a> = dyn Fn(&[Series], &Series) -> Result<Vec<Series>, String> + 'a;
 
-/// The power-series root of `e(x, h) = 0` with `x(0) = x0(0)` (see the module doc).
+/// The power-series root of `e(x, h) = 0` with `x(0) = x0(0)` (see the module doc), for
+/// equations whose other arguments do not depend on `h`.
 pub fn solve(x0: Vec<Series>, e: &Equations<'_>, h: &Series) -> Result<Vec<Series>, String> {
-    let inv = linearization_inverse(&x0, e, h)?;
+    solve_at(x0, e, e, h)
+}
+
+/// [`solve`] where the equations' other arguments may depend on `h`: `at_zero` is `e`
+/// with those arguments at `h = 0` (their constant terms), from which the linearization
+/// `L = ∂E/∂x (x₀(0), 0)` is taken (with `e` itself, the perturbation of `x` and the
+/// arguments' own `h` would share one series variable).
+pub fn solve_at(
+    x0: Vec<Series>,
+    e: &Equations<'_>,
+    at_zero: &Equations<'_>,
+    h: &Series,
+) -> Result<Vec<Series>, String> {
+    let inv = linearization_inverse(&x0, at_zero, h)?;
     let mut x = x0;
     let rounds = h.precision().max(1) + 2;
     for _ in 0..rounds {

@@ -14,7 +14,7 @@
 use super::euler_top::{ModelFn, err, inertia, params, v3};
 use crate::algebra::AssumptionKind;
 use crate::algebra::series::Series;
-use crate::algebra::series_solve::solve;
+use crate::algebra::series_solve::{Equations, solve_at};
 use crate::claims::implicit::Implicit;
 use crate::claims::value::Value;
 use crate::linalg::{Mat3, Vec3};
@@ -67,11 +67,16 @@ pub(super) fn series(f: ModelFn, args: &[Value<Series>]) -> Result<Value<Series>
 fn midpoint(gamma: Gamma, args: &[Value<Series>], h: &Series) -> Result<Value<Series>, String> {
     let i = inertia(args, 2)?;
     let m = v3(&args[0])?;
+    let m0 = Vec3::new(at_zero(&m.0[0]), at_zero(&m.0[1]), at_zero(&m.0[2]));
     let e = |x: &[Series], hh: &Series| -> Result<Vec<Series>, String> {
         let mh = Vec3::new(x[0].clone(), x[1].clone(), x[2].clone());
         Ok(residual(&i, gamma, &m, &mh, hh).map_err(err)?.0.to_vec())
     };
-    let x = solve(m.0.to_vec(), &e, h)?;
+    let e0 = |x: &[Series], hh: &Series| -> Result<Vec<Series>, String> {
+        let mh = Vec3::new(x[0].clone(), x[1].clone(), x[2].clone());
+        Ok(residual(&i, gamma, &m0, &mh, hh).map_err(err)?.0.to_vec())
+    };
+    let x = solve_at(m.0.to_vec(), &e, &e0, h)?;
     Ok(Value::Vec3(Vec3::new(
         x[0].clone(),
         x[1].clone(),
@@ -84,12 +89,17 @@ fn vm(f: ModelFn, args: &[Value<Series>], h: &Series) -> Result<Value<Series>, S
     let i = inertia(args, 2)?;
     let m = v3(&args[0])?;
     let j = Mat3::diag(&j_diag(&i));
+    let m0 = Vec3::new(at_zero(&m.0[0]), at_zero(&m.0[1]), at_zero(&m.0[2]));
     let e = |x: &[Series], hh: &Series| -> Result<Vec<Series>, String> {
         let v = Vec3::new(x[0].clone(), x[1].clone(), x[2].clone());
         Ok(omega_residual(&v, &j, &hat(&m).scale(hh)).0.to_vec())
     };
+    let e0 = |x: &[Series], hh: &Series| -> Result<Vec<Series>, String> {
+        let v = Vec3::new(x[0].clone(), x[1].clone(), x[2].clone());
+        Ok(omega_residual(&v, &j, &hat(&m0).scale(hh)).0.to_vec())
+    };
     let zero = h.zero();
-    let x = solve(vec![zero.clone(), zero.clone(), zero], &e, h)?;
+    let x = solve_at(vec![zero.clone(), zero.clone(), zero], &e, &e0, h)?;
     let w = cayley(&Vec3::new(x[0].clone(), x[1].clone(), x[2].clone()));
     Ok(match f {
         ModelFn::VmOmega => Value::Mat3(w),
@@ -99,6 +109,27 @@ fn vm(f: ModelFn, args: &[Value<Series>], h: &Series) -> Result<Value<Series>, S
 
 /// The master equation of a phase step in `δ`, from `δ = 0`.
 fn phase(f: ModelFn, args: &[Value<Series>], h: &Series) -> Result<Value<Series>, String> {
+    let args0: Vec<Value<Series>> = args
+        .iter()
+        .map(|a| a.map(&mut |x: &Series| at_zero(x)))
+        .collect();
+    let eq = |args: &[Value<Series>]| phase_equation(f, args, h);
+    let (e, e0) = (eq(args)?, eq(&args0)?);
+    let x = solve_at(vec![h.zero()], &e, &e0, h)?;
+    Ok(Value::Real(x[0].clone()))
+}
+
+/// The value at `h = 0` (the constant term) of a series.
+fn at_zero(x: &Series) -> Series {
+    Series::constant(&x.coefficient(0).unwrap_or_else(|| x.ring().integer(0)))
+}
+
+/// The master equation of a phase step in `δ` at the arguments `args`.
+fn phase_equation<'a>(
+    f: ModelFn,
+    args: &[Value<Series>],
+    h: &Series,
+) -> Result<Box<Equations<'a>>, String> {
     let (i, p) = params(args)?;
     let (a, b) = match f {
         ModelFn::Delta1 => (p.alpha1(), h.zero()),
@@ -108,14 +139,14 @@ fn phase(f: ModelFn, args: &[Value<Series>], h: &Series) -> Result<Value<Series>
             .ok_or("(MV alphabeta) is not given on the separatrix")?,
     };
     let nu2 = p.nu() * h.from_ratio(1, 2);
-    let e = |x: &[Series], hh: &Series| -> Result<Vec<Series>, String> {
-        let (sn, cn, dn) = sncndn_params(&x[0], &p).map_err(err)?;
-        let hn = hh.clone() * nu2.clone();
-        Ok(vec![match f {
-            ModelFn::DeltaVm => mv_master_equation(&a, &b, &hn, &sn, &cn, &dn),
-            _ => master12_equation(&a, &hn, &sn, &cn, &dn),
-        }])
-    };
-    let x = solve(vec![h.zero()], &e, h)?;
-    Ok(Value::Real(x[0].clone()))
+    Ok(Box::new(
+        move |x: &[Series], hh: &Series| -> Result<Vec<Series>, String> {
+            let (sn, cn, dn) = sncndn_params(&x[0], &p).map_err(err)?;
+            let hn = hh.clone() * nu2.clone();
+            Ok(vec![match f {
+                ModelFn::DeltaVm => mv_master_equation(&a, &b, &hn, &sn, &cn, &dn),
+                _ => master12_equation(&a, &hn, &sn, &cn, &dn),
+            }])
+        },
+    ))
 }

@@ -396,3 +396,20 @@ fn proposition_4_is_proved_for_every_map() {
         assert!(ok, "sec6.prop4.{g}: {why}");
     }
 }
+
+/// A stated value substituted into a map's equations solves them; the proof also shows
+/// that it is the map's branch (the difference of the two as power series in h is
+/// O(h)), so the Corollary's step, whose map argument moves with h, is proved with it.
+#[test]
+fn a_stated_value_is_shown_to_be_the_branch() {
+    let cat = super::support::with_catalogue(String::new());
+    for id in ["sec6.corollary.up", "sec7.master12.step.lo"] {
+        let p = super::support::attempt(&cat, id);
+        assert!(p.is_proved(), "{id}: {:?}", p.reason);
+        assert!(
+            p.notes.iter().any(|n| n.starts_with("the stated value is the map's branch")),
+            "{id}: {:?}",
+            p.notes
+        );
+    }
+}

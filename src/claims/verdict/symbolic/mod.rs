@@ -101,7 +101,7 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
     {
         small_h(ctx, &mut joint);
         joint.ms = t0.elapsed().as_secs_f64() * 1e3;
-        return with_lemmas(ctx, joint);
+        return with_lemmas(ctx, on_the_branch(ctx, (lhs, rhs), joint));
     }
     let mut info = ProofInfo::none("");
     info.reason = None;
@@ -132,7 +132,33 @@ pub fn prove(ctx: Ctx<'_>, lhs: &PExpr, rhs: &PExpr, certificate: bool) -> Proof
     }
     small_h(ctx, &mut info);
     info.ms = t0.elapsed().as_secs_f64() * 1e3;
+    let info = on_the_branch(ctx, (lhs, rhs), info);
     with_lemmas(ctx, by_ode_if_not_proved(ctx, (lhs, rhs), info))
+}
+
+/// A proof that substituted a stated value into an implicit map's equations stands only
+/// when that value is the map's branch ([`series::stated_value_is_the_branch`]).
+fn on_the_branch(ctx: Ctx<'_>, sides: (&PExpr, &PExpr), info: ProofInfo) -> ProofInfo {
+    let stated = info
+        .notes
+        .iter()
+        .any(|n| n.starts_with("the claim states the value of"));
+    if !info.is_proved() || !stated {
+        return info;
+    }
+    match series::stated_value_is_the_branch(ctx, sides) {
+        Ok(()) => {
+            let mut info = info;
+            info.notes.push(
+                "the stated value is the map's branch: with the call solved as the power series of its branch continuous at h = 0, lhs - rhs = O(h), and near h = 0 that branch is the only solution (implicit function theorem)".into(),
+            );
+            info
+        }
+        Err(why) => ProofInfo {
+            ms: info.ms,
+            ..ProofInfo::none(why)
+        },
+    }
 }
 
 /// The ODE method ([`ode`]) where the normal form does not prove the claim and a side

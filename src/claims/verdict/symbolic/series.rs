@@ -457,3 +457,56 @@ fn positive_for_small_h(ev: &Evaluator<'_, Series>, condition: &PExpr, sign: i32
     let ring = d.ring().clone();
     matches!(d.sign(), Ok(1)) && ring.error().is_none()
 }
+
+/// Where a symbolic proof substituted a stated value into an implicit map's equations
+/// ([`super::binding::stated_value`]), that value solves them; it is the map's value
+/// only if it is the branch the map takes, the one continuous at `h = 0`.  By the
+/// implicit function theorem that branch is, for small `h`, the only solution near its
+/// value at `h = 0`, so it suffices that the stated value tends to it: `lhs − rhs`,
+/// with the call solved as the power series of its branch, is `O(h)`.  `Ok` when the
+/// claim states no such value; the reason otherwise.
+pub(super) fn stated_value_is_the_branch(
+    ctx: Ctx<'_>,
+    (lhs, rhs): (&PExpr, &PExpr),
+) -> Result<(), String> {
+    let implicit = |p: &PExpr| {
+        matches!(&p.expr.kind, ExprKind::Call(name, _)
+            if ctx.cat.registry.ext(name).is_some_and(|r| r.f.implicit().is_some()))
+    };
+    if !(implicit(lhs) || implicit(rhs)) {
+        return Ok(());
+    }
+    use crate::claims::ast::{BinOp, Expr};
+    let span = lhs.expr.span;
+    let diff = Expr {
+        kind: ExprKind::Binary(
+            BinOp::Sub,
+            Box::new(lhs.expr.clone()),
+            Box::new(rhs.expr.clone()),
+        ),
+        span,
+    };
+    let expr = PExpr {
+        expr: Expr {
+            kind: ExprKind::Call("vnorm_inf".into(), vec![diff]),
+            span,
+        },
+        text: format!("vnorm_inf(({}) - ({}))", lhs.text.trim(), rhs.text.trim()),
+        origin: lhs.origin.clone(),
+    };
+    let info = prove_order(
+        ctx,
+        Order {
+            expr: &expr,
+            var: "h",
+            order: 1.0,
+        },
+    );
+    if info.is_proved() {
+        return Ok(());
+    }
+    Err(format!(
+        "the stated value solves the map's equations, but it is not shown to be the map's branch, continuous at h = 0 (the difference of the two as power series in h is not shown to be O(h): {})",
+        info.reason.unwrap_or_default()
+    ))
+}
