@@ -407,7 +407,9 @@ fn a_stated_value_is_shown_to_be_the_branch() {
         let p = super::support::attempt(&cat, id);
         assert!(p.is_proved(), "{id}: {:?}", p.reason);
         assert!(
-            p.notes.iter().any(|n| n.starts_with("the stated value is the map's branch")),
+            p.notes
+                .iter()
+                .any(|n| n.starts_with("the stated value is the map's branch")),
             "{id}: {:?}",
             p.notes
         );
