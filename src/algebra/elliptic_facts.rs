@@ -81,19 +81,7 @@ impl Ring {
 
     /// Is the modulus of table `t` real with `0 < k² < 1` (proved)?
     fn real_modulus(&self, t: usize) -> bool {
-        let (k, k2) = {
-            let st = self.state();
-            (st.tables[t].k.clone(), st.tables[t].k2.clone())
-        };
-        if !self.is_real(&k, 0) {
-            return false;
-        }
-        let k2 = Sym::from_val(self, k2, None);
-        let one = self.integer(1);
-        let Ok(rest) = one.try_sub(&k2) else {
-            return false;
-        };
-        positive(&k2) && positive(&rest)
+        self.real_quarter_period(t, true) && self.real_quarter_period(t, false)
     }
 
     /// Is `K(k)` (`K′(k)` when `complementary`) of table `t` real: `k` real with

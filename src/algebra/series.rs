@@ -17,7 +17,7 @@
 //!   (`s′ = c·d·u′`, `c′ = −s·d·u′`, `d′ = −k²·s·c·u′`) from `(sn, cn, dn)(u₀)`;
 //!   circular and hyperbolic functions at moduli 0 and 1 (DLMF 22.5.ii); a modulus
 //!   that moves with `h` gives the values at its limit, known to the order at which it
-//!   moves ([`super::series_modulus`]).  Functions of
+//!   moves (module `series_modulus`).  Functions of
 //!   values that do not depend on `h` are the ring's own.  Everything else poisons the
 //!   ring (the proof then fails with the reason).
 //! * **Comparisons** of values that depend on `h` are decided by the sign of the leading
