@@ -154,7 +154,7 @@ from sympy.polys.rings import ring  # noqa: E402
 assert GROUND_TYPES != "flint", "the recheck must not run on FLINT"
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from certcheck import binding, domain, formula, hypothesis  # noqa: E402
+from certcheck import binding, domain, formula, hypothesis, series  # noqa: E402
 
 
 class CheckError(Exception):
@@ -338,6 +338,7 @@ class Cert:
         self.proved_signs = []  # (value, +1 or -1) of every checked sign line
         self.sqrt_nodes = []  # (radicand, value): the evaluator's square roots
         self.claim_pairs = []  # (tA, tB) of every claim line, in order
+        self.trace = None  # the power series of a proof by series (certcheck.series)
         self.expected_claims = None  # the `claims N` line
         self.assumes = []  # (kind, name, statement) of the `assume` lines
         self.conditions = []  # the `part` lines: the conditions of this part of the domain
@@ -1220,6 +1221,18 @@ class Cert:
             self.need(re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*(\[\d+\])?", name.strip()) is not None
                       and name.strip() not in self.coords, f"bad coord line {rest[:40]}")
             self.coords[name.strip()] = self.vals[t.strip()]
+        elif word in ("series", "sseries", "sclaim"):
+            if self.trace is None:
+                self.trace = series.Trace(self)
+            try:
+                if word == "series":
+                    self.trace.header_line(rest)
+                elif word == "sseries":
+                    self.trace.record(rest)
+                else:
+                    return self.trace.claim(rest)
+            except series.SeriesError as e:
+                raise CheckError(str(e))
         elif word in ("source", "premise"):
             pass  # the claim and the theorem's premises: checked for the whole file
         else:

@@ -12,7 +12,8 @@ import os
 import re
 import tomllib
 
-CLAIM_FIELDS = ["kind", "domain", "vars", "where", "let", "lhs", "rhs", "expr", "wrt", "hypotheses"]
+CLAIM_FIELDS = ["kind", "domain", "vars", "where", "let", "lhs", "rhs", "expr", "wrt", "var", "order",
+                "hypotheses"]
 IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 
 

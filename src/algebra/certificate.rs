@@ -177,6 +177,22 @@ impl Emitter<'_> {
     }
 }
 
+/// The `sseries` lines of a proof by power series (module [`super::series_trace`]),
+/// their leaves' nodes emitted first, and its `sclaim` lines; `None` when a leaf has no
+/// derivation.
+fn series_lines(em: &mut Emitter<'_>, trace: &super::series_trace::SeriesTrace) -> Option<String> {
+    let mut claims = String::new();
+    for (i, r) in trace.records.iter().enumerate() {
+        let mut node = |x: &Sym| Some(em.visit(x.node.as_ref()?));
+        let line = super::series_trace::record_line(i + 1, r, &mut node)?;
+        em.out.push_str(&line);
+    }
+    for (id, j, below) in &trace.claims {
+        let _ = writeln!(claims, "sclaim s{id} component {j} below {below}");
+    }
+    Some(claims)
+}
+
 impl Ring {
     /// The certificate of `lhs = rhs` (see the module doc), or `None` when the ring does
     /// not record derivations.
@@ -193,7 +209,13 @@ impl Ring {
         let _ = writeln!(out, "# eulertop certificate 1");
         let _ = writeln!(out, "# claim: {}", title.replace('\n', " "));
         // the number of claim lines: a deleted one is noticed
-        let _ = writeln!(out, "claims {}", pairs.len());
+        let series_claims = self.state().series.claims.len();
+        let count = if series_claims > 0 {
+            series_claims
+        } else {
+            pairs.len()
+        };
+        let _ = writeln!(out, "claims {count}");
         out.push_str(&self.symbol_lines(&names));
         let mut em = Emitter {
             names: &names,
@@ -203,17 +225,28 @@ impl Ring {
         self.equivalence_lines(&mut em, &names);
         self.chart_lines(&mut em);
         self.coordinate_lines(&mut em);
+        let trace = self.state().series.clone();
+        let series = if trace.claims.is_empty() {
+            None
+        } else {
+            Some(series_lines(&mut em, &trace)?)
+        };
         let mut claims = Vec::new();
-        for (ln, rn) in &nodes {
-            let a = em.visit(ln);
-            let b = em.visit(rn);
-            claims.push((a, b));
+        if series.is_none() {
+            for (ln, rn) in &nodes {
+                let a = em.visit(ln);
+                let b = em.visit(rn);
+                claims.push((a, b));
+            }
         }
         let signs = self.sign_lines(&mut em);
         out.push_str(&em.out);
         out.push_str(&signs);
         for (a, b) in claims {
             let _ = writeln!(out, "claim t{a} = t{b}");
+        }
+        if let Some(s) = series {
+            out.push_str(&s);
         }
         for (h, s) in &self.inner.opts.hypotheses {
             let rel = if *s > 0 { ">" } else { "<" };

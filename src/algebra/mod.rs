@@ -137,6 +137,7 @@ pub mod series;
 mod series_modulus;
 mod series_scalar;
 pub mod series_solve;
+mod series_trace;
 pub mod shadow;
 pub mod sign_state;
 pub mod split;

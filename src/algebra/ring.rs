@@ -274,6 +274,8 @@ pub(crate) struct State {
     pub values_table: Option<Arc<Vec<Vec<Complex>>>>,
     /// The sign-only state: proved signs, stated hypotheses, facts, sign symbols.
     pub signs: SignState,
+    /// The operations that made the power series of a proof (module `series_trace`).
+    pub series: super::series_trace::SeriesTrace,
     /// Field variables algebraic over the others: `(FLINT variable, defining
     /// polynomial)` (module `algebraic`).
     pub algebraic: Vec<(usize, Arc<Poly>)>,
@@ -341,6 +343,7 @@ impl Ring {
             opaque_args: std::collections::BTreeMap::new(),
             opaque_zeta: std::collections::BTreeMap::new(),
             values_table: None,
+            series: Default::default(),
             signs: SignState::default(),
             algebraic: Vec::new(),
         };

@@ -41,6 +41,7 @@
 
 use super::error::{AlgResult, AlgebraError};
 use super::ring::Ring;
+use super::series_trace::SOp;
 use super::sym::Sym;
 use std::cell::Cell;
 
@@ -75,17 +76,30 @@ pub struct Series {
     lo: i32,
     c: Vec<Sym>,
     hi: i32,
+    /// The id of the operation that made it, when the ring records certificates
+    /// (module [`super::series_trace`]).
+    id: Option<u32>,
 }
 
 impl Series {
     /// The series variable `h` itself.
     pub fn var(ring: &Ring) -> Series {
-        Series::from_coefficients(ring, 1, vec![ring.integer(1)], cap())
+        Series::from_coefficients(ring, 1, vec![ring.integer(1)], cap()).traced(SOp::Var, &[])
     }
 
     /// A value that does not depend on `h`.
     pub fn constant(x: &Sym) -> Series {
         Series::from_coefficients(x.ring(), 0, vec![x.clone()], cap())
+            .traced(SOp::Const(x.clone()), &[])
+    }
+
+    /// The id of the operation that made this value (module [`super::series_trace`]).
+    pub(crate) fn trace_id(&self) -> Option<u32> {
+        self.id
+    }
+
+    pub(crate) fn set_trace_id(&mut self, id: u32) {
+        self.id = Some(id);
     }
 
     /// `Σ c[i] h^(lo+i) + O(h^hi)`, normalised (leading zeros dropped, cut at the
@@ -97,6 +111,7 @@ impl Series {
             lo,
             c,
             hi,
+            id: None,
         };
         let keep = usize::try_from((hi - lo).max(0)).unwrap_or(0);
         s.c.truncate(keep);
@@ -163,6 +178,7 @@ impl Series {
     /// The same value known only to `O(h^hi)` (the smaller of `hi` and its precision).
     pub(crate) fn cut(&self, hi: i32) -> Series {
         Series::from_coefficients(&self.ring, self.lo, self.c.clone(), hi.min(self.hi))
+            .traced(SOp::Cut(hi), &[self])
     }
 
     /// `self − o`.
@@ -183,6 +199,7 @@ impl Series {
             lo: 0,
             c: vec![self.ring.nan()],
             hi: cap(),
+            id: None,
         }
     }
 
@@ -190,7 +207,7 @@ impl Series {
     /// of its leading coefficient is not decided.
     pub(crate) fn bound(&self) -> Series {
         let v = self.lo;
-        Series::from_coefficients(&self.ring, v, Vec::new(), v)
+        Series::from_coefficients(&self.ring, v, Vec::new(), v).traced(SOp::Bound, &[self])
     }
 
     /// `self ± o`.
@@ -202,7 +219,8 @@ impl Series {
             let (a, b) = (self.coef(e), o.coef(e));
             c.push(if sub { a.try_sub(&b)? } else { a.try_add(&b)? });
         }
-        Ok(Series::from_coefficients(&self.ring, lo, c, hi))
+        let op = if sub { SOp::Sub } else { SOp::Add };
+        Ok(Series::from_coefficients(&self.ring, lo, c, hi).traced(op, &[self, o]))
     }
 
     /// `self · o`.
@@ -218,7 +236,7 @@ impl Series {
                 .collect();
             c.push(sum_of_products(&self.ring, &pairs)?);
         }
-        Ok(Series::from_coefficients(&self.ring, lo, c, hi))
+        Ok(Series::from_coefficients(&self.ring, lo, c, hi).traced(SOp::Mul, &[self, o]))
     }
 
     /// `self / o`; `o` must have a known nonzero coefficient.
@@ -241,15 +259,18 @@ impl Series {
             let rest = sum_of_products(&self.ring, &pairs)?;
             q.push(self.coef(self.lo + i).try_sub(&rest)?.try_mul(&inv)?);
         }
-        Ok(Series::from_coefficients(&self.ring, lo, q, lo + n))
+        Ok(Series::from_coefficients(&self.ring, lo, q, lo + n).traced(SOp::Div, &[self, o]))
     }
 
     /// `√self`, the constant term's branch decided by [`Sym::sqrt`] (proved on the
     /// domain); the valuation must be even.
     pub fn try_sqrt(&self) -> AlgResult<Series> {
         let Some(a0) = self.c.first() else {
+            // √(O(h^hi)) = O(h^⌊hi/2⌋): the square root of the bound
             let hi = self.hi.div_euclid(2);
-            return Ok(Series::from_coefficients(&self.ring, hi, Vec::new(), hi));
+            let out = Series::from_coefficients(&self.ring, hi, Vec::new(), hi);
+            let zero = self.ring.integer(0);
+            return Ok(out.traced(SOp::Sqrt(zero), &[self]));
         };
         if self.lo % 2 != 0 {
             return Err(AlgebraError::Domain(format!(
@@ -258,6 +279,7 @@ impl Series {
             )));
         }
         let s0 = a0.sqrt()?;
+        let root = s0.clone();
         let inv = self.ring.integer(2).try_mul(&s0)?.try_powi(-1)?;
         let n = self.hi - self.lo;
         let mut s = vec![s0];
@@ -269,7 +291,7 @@ impl Series {
             s.push(self.coef(self.lo + i).try_sub(&rest)?.try_mul(&inv)?);
         }
         let lo = self.lo / 2;
-        Ok(Series::from_coefficients(&self.ring, lo, s, lo + n))
+        Ok(Series::from_coefficients(&self.ring, lo, s, lo + n).traced(SOp::Sqrt(root), &[self]))
     }
 
     /// The sign for small `h > 0`: that of the leading coefficient, proved on the
@@ -290,12 +312,10 @@ impl Series {
         for e in self.lo..self.hi {
             c.push(self.coef(e).try_mul(&self.ring.integer(i64::from(e)))?);
         }
-        Ok(Series::from_coefficients(
-            &self.ring,
-            self.lo - 1,
-            c,
-            self.hi - 1,
-        ))
+        Ok(
+            Series::from_coefficients(&self.ring, self.lo - 1, c, self.hi - 1)
+                .traced(SOp::Deriv, &[self]),
+        )
     }
 
     /// Maps a function of the ring over a value independent of `h`; `what` names it
@@ -353,6 +373,7 @@ impl Series {
         } else {
             u0.sncndn(&k0)?
         };
+        let base = [s0.clone(), c0.clone(), d0.clone()];
         let du = self.derivative()?;
         let k2 = k0.try_mul(&k0)?;
         let n = self.hi as usize;
@@ -372,8 +393,11 @@ impl Series {
             d.push(step(&sc, &k2.negate())?);
         }
         let hi = self.hi;
-        let mk = |v: Vec<Sym>| Series::from_coefficients(&self.ring, 0, v, hi);
-        Ok((mk(s), mk(c), mk(d)))
+        let mk = |v: Vec<Sym>, f: u8| {
+            Series::from_coefficients(&self.ring, 0, v, hi)
+                .traced(SOp::Jacobi(f, base.clone()), &[self, k])
+        };
+        Ok((mk(s, 0), mk(c, 1), mk(d, 2)))
     }
 }
 

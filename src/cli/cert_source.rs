@@ -23,7 +23,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
 /// The fields of a `[[claim]]` table that state what is claimed, in the order written.
-pub const CLAIM_FIELDS: [&str; 10] = [
+pub const CLAIM_FIELDS: [&str; 12] = [
     "kind",
     "domain",
     "vars",
@@ -33,6 +33,8 @@ pub const CLAIM_FIELDS: [&str; 10] = [
     "rhs",
     "expr",
     "wrt",
+    "var",
+    "order",
     "hypotheses",
 ];
 

@@ -11,7 +11,7 @@ use crate::claims::catalogue::lookup::{Scope, find};
 use crate::claims::catalogue::{Body, Catalogue, Claim, PExpr};
 use crate::claims::verdict::context::Ctx;
 use crate::claims::verdict::independence::derivative_sides;
-use crate::claims::verdict::symbolic::{ProofInfo, prove};
+use crate::claims::verdict::symbolic::{Order, ProofInfo, prove, prove_order};
 use clap::Parser;
 use std::io::Write;
 
@@ -70,6 +70,9 @@ pub fn derivation(id: &str, printed: &str, p: &ProofInfo) -> String {
         None if p.method == crate::claims::verdict::ProofMethod::Ode => out.push_str(
             "both sides solve the ODE with the same initial values: proved by the ODE method\n",
         ),
+        None if p.method == crate::claims::verdict::ProofMethod::Series => out.push_str(
+            "every coefficient below the order has normal form 0: proved by exact power series\n",
+        ),
         None => out.push_str("normal form of lhs - rhs: 0: proved\n"),
         Some(r) => out.push_str(&format!("not proved: {r}\n")),
     }
@@ -103,10 +106,15 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             sel.what
         )));
     }
-    let provable = |c: &Claim| matches!(c.body, Body::Identity { .. } | Body::Independence { .. });
+    let provable = |c: &Claim| {
+        matches!(
+            c.body,
+            Body::Identity { .. } | Body::Independence { .. } | Body::Asymptotic { .. }
+        )
+    };
     if !sel.claims.iter().any(|c| provable(c)) {
         return Err(CliError(format!(
-            "none of the {} claims of {} is an identity or an independence claim, the kinds proved symbolically",
+            "none of the {} claims of {} is an identity, an independence or an asymptotic claim, the kinds proved symbolically",
             sel.claims.len(),
             sel.what
         )));
@@ -127,8 +135,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             .map_err(&err)?;
             continue;
         }
-        let (lhs, rhs) = sides(claim)?;
-        let p = prove(Ctx { cat: &cat, claim }, &lhs, &rhs, false);
+        let p = attempt(Ctx { cat: &cat, claim }, false)?;
         all_proved &= p.is_proved();
         out.write_all(derivation(&claim.id, &claim.printed, &p).as_bytes())
             .and_then(|()| out.flush())
@@ -138,23 +145,44 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     Ok(i32::from(!all_proved))
 }
 
-/// The two sides whose difference the proof reduces to zero: an identity's, or
-/// `d(expr, wrt) = 0` for an independence claim.
-fn sides(claim: &Claim) -> Result<(PExpr, PExpr), CliError> {
-    match &claim.body {
-        Body::Identity { lhs, rhs } => Ok((lhs.clone(), rhs.clone())),
-        Body::Independence { expr, wrt, .. } => Ok(derivative_sides(expr, wrt)),
-        _ => Err(CliError(format!(
-            "claim '{}' is of kind {}, and only identities and independence claims are proved symbolically",
-            claim.id,
-            claim.kind.name()
-        ))),
-    }
+/// The symbolic proof of the claim: of `lhs − rhs = 0` for an identity, of
+/// `d(expr, wrt) = 0` for an independence claim, by exact power series for an
+/// asymptotic claim ([`prove_order`]); recording its certificate if `certify`.
+fn attempt(ctx: Ctx<'_>, certify: bool) -> Result<ProofInfo, CliError> {
+    let claim = ctx.claim;
+    let (lhs, rhs): (PExpr, PExpr) = match &claim.body {
+        Body::Identity { lhs, rhs } => (lhs.clone(), rhs.clone()),
+        Body::Independence { expr, wrt, .. } => derivative_sides(expr, wrt),
+        Body::Asymptotic {
+            expr, var, order, ..
+        } => {
+            let order = Order {
+                expr,
+                var,
+                order: *order,
+                certificate: certify,
+            };
+            return Ok(prove_order(ctx, order));
+        }
+        _ => {
+            return Err(CliError(format!(
+                "claim '{}' is of kind {}, and only identities, independence and asymptotic claims are proved symbolically",
+                claim.id,
+                claim.kind.name()
+            )));
+        }
+    };
+    Ok(prove(ctx, &lhs, &rhs, certify))
 }
 
 /// Proves one claim, with the certificate if asked for.
 fn prove_one(args: &Args, cat: &Catalogue, claim: &Claim) -> Result<i32, CliError> {
-    let (lhs, rhs) = sides(claim)?;
+    if !matches!(
+        claim.body,
+        Body::Identity { .. } | Body::Independence { .. } | Body::Asymptotic { .. }
+    ) {
+        attempt(Ctx { cat, claim }, false)?;
+    }
     for (flag, path) in [("--certificate", &args.certificate), ("--coq", &args.coq)] {
         if let Some(path) = path {
             super::check_output_path(flag, std::path::Path::new(path))?;
@@ -168,7 +196,7 @@ fn prove_one(args: &Args, cat: &Catalogue, claim: &Claim) -> Result<i32, CliErro
         )));
     }
     let certify = args.certificate.is_some() || args.coq.is_some();
-    let p = prove(Ctx { cat, claim }, &lhs, &rhs, certify);
+    let p = attempt(Ctx { cat, claim }, certify)?;
     let bound = match &p.certificate {
         Some(cert) if certify => {
             let source = super::catalogue_arg::CatalogueSource::new(args.catalogue.as_deref())

@@ -284,6 +284,7 @@ fn asymptotic_verdict(
             expr: spec.expr,
             var: spec.var,
             order: spec.order,
+            certificate: false,
         };
         symbolic::judge_order(ctx, order, &mut ev);
     }

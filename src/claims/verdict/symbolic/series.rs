@@ -65,6 +65,9 @@ pub struct Order<'a> {
     pub var: &'a str,
     /// The claimed order `p`.
     pub order: f64,
+    /// Record the derivation of every coefficient as a certificate
+    /// ([`crate::algebra::certificate`]).
+    pub certificate: bool,
 }
 
 /// Attempts the series proof of `expr = O(var^order)` on the claim's domain (every case
@@ -175,9 +178,11 @@ fn prove_case_in(
     let opts = RingOptions {
         points: points.len(),
         positivity: signs.positivity.clone(),
+        certificate: claim.certificate,
         ..RingOptions::default()
     };
     let labels = std::sync::Mutex::new(Vec::new());
+
     let mut proof = prove_components(opts, &ctx.claim.id, |ring| {
         let (pairs, names): (Vec<_>, Vec<_>) =
             (in_powers(ctx, ring, roles, points, claim, (step, extra))?)
@@ -187,6 +192,9 @@ fn prove_case_in(
         Ok(pairs)
     });
     let names = labels.into_inner().unwrap_or_else(|e| e.into_inner());
+    if let Some(c) = proof.certificate.as_mut() {
+        *c = series_line(c, claim, step, working_precision(claim, (step, extra)));
+    }
     let rename = |text: &mut String| {
         let named = (names.iter().enumerate().rev())
             .find_map(|(i, n)| Some((text.strip_prefix(&format!("component {}: ", i + 1))?, n)));
@@ -219,8 +227,14 @@ fn in_powers(
     claim: Order<'_>,
     (step, extra): (i32, i32),
 ) -> AlgResult<Vec<((Sym, Sym), String)>> {
-    let n = (claim.order * peeled(claim.expr).1 * f64::from(step)).ceil() as i32 + 1 + extra;
+    let n = working_precision(claim, (step, extra));
     with_precision(n, || coefficients(ctx, ring, roles, points, claim, step))
+}
+
+/// The working precision `n` (series cut at `O(tⁿ)`) of a proof with `var = tˢᵗᵉᵖ`,
+/// `extra` orders beyond the claimed one.
+fn working_precision(claim: Order<'_>, (step, extra): (i32, i32)) -> i32 {
+    (claim.order * peeled(claim.expr).1 * f64::from(step)).ceil() as i32 + 1 + extra
 }
 
 /// The part of the message of a coefficient beyond the working precision.
@@ -286,8 +300,30 @@ fn coefficients(
             ));
             e += 1;
         }
+        s.claim_vanishing(j + 1, e);
     }
     Ok(pairs)
+}
+
+/// The certificate `cert` of one case with its `series` line after the `claims N` line:
+/// `series VAR step S order P precision N`, the series variable `t` with `VAR = tˢ`,
+/// the claimed order, and the working precision (module
+/// [`crate::algebra::certificate`]).
+fn series_line(cert: &str, claim: Order<'_>, step: i32, n: i32) -> String {
+    let line = format!(
+        "series {} step {step} order {} precision {n}\n",
+        claim.var, claim.order
+    );
+    let mut out = String::with_capacity(cert.len() + line.len());
+    let mut done = false;
+    for l in cert.split_inclusive('\n') {
+        out.push_str(l);
+        if !done && l.starts_with("claims ") {
+            out.push_str(&line);
+            done = true;
+        }
+    }
+    out
 }
 
 /// The claim's variables as constant series, the small variable `var` as `at` (the
@@ -500,6 +536,7 @@ pub(super) fn stated_value_is_the_branch(
             expr: &expr,
             var: "h",
             order: 1.0,
+            certificate: false,
         },
     );
     if info.is_proved() {
