@@ -389,6 +389,44 @@ class Cases:
                     recheck([write(t, "rt-none.cert", without(rt, r"signsym sgnM3 "))]), False,
                     "is not proved by the parametrization")
 
+    def power_series(self):
+        """Proofs by power series: every series operation redone here from the leaves."""
+        def data(name):
+            return recheck([os.path.join(DATA, f"{name}.cert")], "--unbound")
+        self.expect("sn(t, k) - t = O(t^3) by integrating DLMF 22.13.1-3 is accepted", data("series-sn"), True,
+                    "1 of 1")
+        self.expect("sn(t, k) - t = O(t^4) is rejected: its t^3 coefficient is not 0", data("series-sn-order"), False,
+                    "the coefficient of t^3 is not 0")
+        self.expect("sn, cn, dn(0) stated as (1, 0, 1) are rejected", data("series-sn-base"), False,
+                    "the base values are not sn, cn, dn at the constant term")
+        self.expect("sqrt(1 + t) - 1 - t/2 = O(t^2) is accepted", data("series-sqrt"), True, "1 of 1")
+        self.expect("the square root of 1 + t with the root -1 stated is rejected", data("series-sqrt-branch"), False,
+                    "is no square-root node")
+        self.expect("sn at a modulus 1/2 + t^2 known to O(t^2) from sn at 1/2 is accepted", data("series-moving"),
+                    True, "1 of 1")
+        self.expect("sn at a modulus 1/2 + t^2 is not known to O(t^3)", data("series-moving-order"), False,
+                    "is not known (O(t^2))")
+        self.expect("sn at 1/2 does not stand for sn at a modulus 1/3 + t^2", data("series-moving-other"), False,
+                    "the modulus's constant term is not")
+        t = self.tmp
+        cid = "sec3.as.g1.corrected"
+        cert = prove(cid, t)
+        self.expect(f"{cid} (a map's order, by its power series) rechecks, order and coefficients bound",
+                    recheck([write(t, "as.cert", cert)]), True, "order, variable and coefficients bound")
+        self.expect(f"{cid} with its coefficients claimed 0 below h^1 only (O(h^1.5) needs h^0, h^1) is rejected",
+                    recheck([write(t, "as-short.cert", cert.replace(" below 2", " below 1"))]), False,
+                    "needs those below t^2")
+        self.expect(f"{cid} with an sclaim line deleted is rejected",
+                    recheck([write(t, "as-del.cert", without(cert, r"sclaim "))]), False, "claim line(s) where")
+        lines = cert.splitlines()
+        last = max(i for i, ln in enumerate(lines) if re.match(r"sseries s\d+ = mul ", ln))
+        lines[last] = lines[last].replace(" = mul ", " = add ")
+        self.expect(f"{cid} with its last product turned into a sum is rejected",
+                    recheck([write(t, "as-op.cert", "\n".join(lines) + "\n")]), False, "is not 0")
+        cat = changed_catalogue(t, {cid})
+        self.expect(f"{cid} against a catalogue copy whose expr is changed is rejected",
+                    recheck([write(t, "as-cat.cert", cert)], "--catalogue", cat), False, "claim.expr")
+
     def all_changed(self, cert_dir):
         certs = [f for f in os.listdir(cert_dir) if f.endswith(".cert")]
         cat = changed_catalogue(self.tmp)
@@ -410,6 +448,7 @@ def main(argv):
         cases.hypothesis_signs()
         cases.multiples_of_roots()
         cases.sign_evidence()
+        cases.power_series()
         if argv[1:2] == ["--all"] and len(argv) == 3:
             cases.all_changed(argv[2])
     print(f"{cases.count - len(cases.failures)} of {cases.count} recheck tests pass")

@@ -201,10 +201,55 @@ def chart_claim(cert, catalogue, name, argv, claim):
     return len(lhs) == len(rhs) and all(cert.eq(x, y) for x, y in zip(lhs, rhs))
 
 
+def peeled(expr):
+    """The expression whose coefficients a proof of `expr = O(h^p)` examines, and the
+    factor of the order: ||X||, ||X||_inf and |x| are O(h^p) exactly when every real
+    component of X (or x) is, and sqrt(x) is O(h^p) exactly when x is O(h^(2p))."""
+    tree, factor = Parser(expr).whole(), 1
+    while tree[0] == "call" and len(tree[2]) == 1 and tree[1] in ("norm", "vnorm_inf", "abs", "sqrt"):
+        if tree[1] == "sqrt":
+            factor *= 2
+        tree = tree[2][0]
+    return tree, factor
+
+
+def series_binding(cert, src):
+    """An asymptotic claim `expr = O(var^order)` proved by power series: the series line
+    names the claim's variable and order, and the sclaim lines claim, for components
+    1..n of the examined value, every coefficient of t^e with e < order * factor * step
+    (h = t^step; factor from peeled) to be 0.  The components' series are bound by
+    the text of the formulas (this evaluator does not compute power series)."""
+    import math
+    from fractions import Fraction
+    tr = cert.trace
+    if tr is None or tr.header is None:
+        raise FormulaMismatch("an asymptotic claim whose certificate has no series line")
+    hd = tr.header
+    if hd["var"] != src.get("claim.var"):
+        raise FormulaMismatch(f"the series variable {hd['var']} is not the claim's {src.get('claim.var')}")
+    order = Fraction(str(src.get("claim.order")))
+    if hd["order"] != order:
+        raise FormulaMismatch(f"the series line's order {hd['order']} is not the claim's {order}")
+    _, factor = peeled(src["claim.expr"])
+    below = math.ceil(order * factor * hd["step"])
+    comps = sorted(j for j, _, _ in tr.claims)
+    if comps != list(range(1, len(comps) + 1)) or not comps:
+        raise FormulaMismatch(f"the sclaim lines name components {comps}, not 1..n once each")
+    for j, b, name in tr.claims:
+        if b != below:
+            raise FormulaMismatch(f"sclaim {name}: coefficients below t^{b} claimed 0, where O({hd['var']}^{order}) "
+                                  f"needs those below t^{below}")
+    return f"text (the series of the formula; order, variable and coefficients bound)"
+
+
 def check(cert, src, catalogue=None):
     """'evaluated' when the derivation's claim lines are the claim's sides evaluated
     here, 'text' when the evaluator does not cover the claim (it is then bound by the
     text of its formulas only); FormulaMismatch with the first difference otherwise."""
+    if src.get("claim.kind") == "asymptotic" or cert.trace is not None:
+        if src.get("claim.kind") != "asymptotic":
+            raise FormulaMismatch("power series in the certificate of a claim that is not asymptotic")
+        return series_binding(cert, src)
     cert.chart_counts = chart_checks(cert, catalogue) if catalogue is not None and cert.charts else (0, 0)
     coordinate_binding(cert, src)
     try:

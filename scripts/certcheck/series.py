@@ -22,6 +22,11 @@ the root relations), taking nothing from the prover but the leaves:
                                         s' = c d u', c' = -s d u', d' = -k**2 s c u'
                                         (DLMF 22.13.1-3) from there
   sseries sI = deriv sA | cut sA H | bound sA
+  sseries sI = moving sS sK             sS is sn, cn or dn at the constant term k0 of sK, and
+                                        sK = k0 + O(t**v): the value at sK, known to O(t**v)
+                                        (sn, cn, dn are analytic in (u, m) at real u and m:
+                                        the prover takes it only where u(0) and k0 are real
+                                        by construction, which is not rechecked here)
   sclaim sI component J below E         every coefficient of t**e, e < E, of sI is 0 (and
                                         known: E <= its precision)
 """
@@ -53,6 +58,7 @@ class Trace:
 
     def __init__(self, cert):
         self.cert, self.series, self.header, self.claims = cert, {}, None, []
+        self.moduli = {}  # the constant modulus of each sn, cn, dn series
 
     # ---- the certificate's lines -----------------------------------------------------
     def header_line(self, rest):
@@ -71,7 +77,10 @@ class Trace:
         name, t = name.strip(), body.split()
         if name in self.series or not name.startswith("s") or not t:
             raise SeriesError(f"bad sseries line {rest[:60]}")
+        self.pending_modulus = None
         self.series[name] = self.operation(t)
+        if self.pending_modulus is not None:
+            self.moduli[name] = self.pending_modulus
 
     def claim(self, rest):
         t = rest.split()
@@ -126,7 +135,11 @@ class Trace:
         if op == "sqrt" and len(args) == 3 and args[1] == "root":
             return self.sqrt(self.get(args[0]), args[2])
         if op in ("sn", "cn", "dn") and len(args) == 6 and args[2] == "base":
-            return self.jacobi(op, self.get(args[0]), self.get(args[1]), args[3:])
+            out = self.jacobi(op, self.get(args[0]), self.get(args[1]), args[3:])
+            self.pending_modulus = self.get(args[1]).coef(0, z)
+            return out
+        if op == "moving" and len(args) == 2:
+            return self.moving(args[0], self.get(args[1]))
         if op == "deriv" and len(args) == 1:
             a = self.get(args[0])
             cs = [c.mul(c.const(e), a.coef(e, z)) for e in range(a.lo, a.hi)]
@@ -138,6 +151,16 @@ class Trace:
             v = self.get(args[0]).lo
             return S(v, v, [])
         raise SeriesError(f"unknown series operation {' '.join(t)[:60]}")
+
+    def moving(self, name, k):
+        z = self.cert.zero
+        if name not in self.moduli:
+            raise SeriesError(f"moving {name}: not sn, cn or dn at a constant modulus")
+        if k.lo < 0 or k.hi <= 0 or not self.cert.eq(k.coef(0, z), self.moduli[name]):
+            raise SeriesError(f"moving {name}: the modulus's constant term is not {name}'s modulus")
+        v = next((e for e in range(1, k.hi) if not self.is_zero(k.coef(e, z))), k.hi)
+        a = self.get(name)
+        return self.make(a.lo, list(a.c), min(v, a.hi))
 
     def add(self, a, b, sign=1):
         z = self.cert.zero

@@ -181,6 +181,14 @@ impl Series {
             .traced(SOp::Cut(hi), &[self])
     }
 
+    /// The value `self` of `sn`, `cn` or `dn` at the constant term `k₀` of a modulus
+    /// `k(h) = k₀ + O(hᵛ)`, as the value at `k`: known to `O(hᵛ)` (module
+    /// `series_modulus`).
+    pub(crate) fn at_moving_modulus(&self, k: &Series, v: i32) -> Series {
+        Series::from_coefficients(&self.ring, self.lo, self.c.clone(), v.min(self.hi))
+            .traced(SOp::Moving, &[self, k])
+    }
+
     /// `self − o`.
     pub fn try_add_neg(&self, o: &Series) -> AlgResult<Series> {
         self.try_add(o, true)

@@ -52,7 +52,11 @@ impl Series {
             ));
         }
         let (s, c, d) = self.sncndn(&Series::constant(&k0))?;
-        Ok((s.cut(v), c.cut(v), d.cut(v)))
+        Ok((
+            s.at_moving_modulus(k, v),
+            c.at_moving_modulus(k, v),
+            d.at_moving_modulus(k, v),
+        ))
     }
 
     /// `K(k)` (or `K′(k)` when `complementary`) for a modulus `k(h) = k₀ + O(hᵛ)`:

@@ -16,6 +16,7 @@
 //! sseries s4 = sqrt s3 root t9          # the constant term's root is node t9
 //! sseries s5 = sn s3 s2 base t11 t12 t13   # sn(u, k), k constant, from sn, cn, dn(u(0))
 //! sseries s6 = cut s5 3                 # known to O(t^3) only
+//! sseries s8 = moving s5 s7             # s5 = sn(u, k₀), k₀ s7's constant term: sn(u, s7)
 //! sclaim s6 component 1 below 2         # the coefficients of t^e, e < 2, are 0
 //! ```
 
@@ -44,6 +45,9 @@ pub(crate) enum SOp {
     Cut(i32),
     /// `O(tᵛ)` for the operand's valuation `v`.
     Bound,
+    /// `sn`, `cn` or `dn` at a modulus `k(t) = k₀ + O(tᵛ)` (the second operand): the
+    /// first operand, their value at `k₀`, known to `O(tᵛ)`.
+    Moving,
 }
 
 /// One operation: its kind and the ids of its operands.
@@ -128,6 +132,7 @@ pub(crate) fn record_line(
         SOp::Deriv => format!("deriv {}", a(0)),
         SOp::Cut(h) => format!("cut {} {h}", a(0)),
         SOp::Bound => format!("bound {}", a(0)),
+        SOp::Moving => format!("moving {} {}", a(0), a(1)),
     };
     Some(format!("sseries s{i} = {body}\n"))
 }
