@@ -1221,7 +1221,7 @@ class Cert:
             self.need(re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*(\[\d+\])?", name.strip()) is not None
                       and name.strip() not in self.coords, f"bad coord line {rest[:40]}")
             self.coords[name.strip()] = self.vals[t.strip()]
-        elif word in ("series", "sseries", "sclaim"):
+        elif word in ("series", "sseries", "sclaim", "schart"):
             if self.trace is None:
                 self.trace = series.Trace(self)
             try:
@@ -1229,6 +1229,8 @@ class Cert:
                     self.trace.header_line(rest)
                 elif word == "sseries":
                     self.trace.record(rest)
+                elif word == "schart":
+                    self.trace.chart(rest)
                 else:
                     return self.trace.claim(rest)
             except series.SeriesError as e:

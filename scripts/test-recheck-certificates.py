@@ -411,8 +411,9 @@ class Cases:
         t = self.tmp
         cid = "sec3.as.g1.corrected"
         cert = prove(cid, t)
-        self.expect(f"{cid} (a map's order, by its power series) rechecks, order and coefficients bound",
-                    recheck([write(t, "as.cert", cert)]), True, "order, variable and coefficients bound")
+        self.expect(f"{cid} (a map's order, by its power series) rechecks, evaluated through the map's series "
+                    "chart, which satisfies (impl spec)",
+                    recheck([write(t, "as.cert", cert)]), True, "formulas: evaluated; charts: 4 equation(s)")
         self.expect(f"{cid} with its coefficients claimed 0 below h^1 only (O(h^1.5) needs h^0, h^1) is rejected",
                     recheck([write(t, "as-short.cert", cert.replace(" below 2", " below 1"))]), False,
                     "needs those below t^2")
@@ -423,6 +424,12 @@ class Cases:
         lines[last] = lines[last].replace(" = mul ", " = add ")
         self.expect(f"{cid} with its last product turned into a sum is rejected",
                     recheck([write(t, "as-op.cert", "\n".join(lines) + "\n")]), False, "is not 0")
+        dl = prove("sec7.delta12-asym.g1.up", t)
+        self.expect("sec7.delta12-asym.g1.up: the phase step's series chart satisfies (master12) and the formula "
+                    "evaluates", recheck([write(t, "dl.cert", dl)]), True, "formulas: evaluated; charts: 8 equation(s)")
+        wrong = re.sub(r"^(schart delta1\(.*\) value=)s\d+$", r"\1s1", dl, count=1, flags=re.M)
+        self.expect("sec7.delta12-asym.g1.up with the phase step's series chart replaced by t is rejected",
+                    recheck([write(t, "dl-bad.cert", wrong)]), False, "does not satisfy sec7.master12")
         cat = changed_catalogue(t, {cid})
         self.expect(f"{cid} against a catalogue copy whose expr is changed is rejected",
                     recheck([write(t, "as-cat.cert", cert)], "--catalogue", cat), False, "claim.expr")

@@ -27,6 +27,12 @@ the root relations), taking nothing from the prover but the leaves:
                                         (sn, cn, dn are analytic in (u, m) at real u and m:
                                         the prover takes it only where u(0) and k0 are real
                                         by construction, which is not rechecked here)
+  schart NAME(sA, ...; sB; ...) value=sV,...
+                                        the power series of the implicit map NAME at those
+                                        arguments (components by ', ', arguments by '; '):
+                                        substituted into the map's equations as the catalogue
+                                        states them (module formula), and the map's value
+                                        where a formula calls it there (module series_eval)
   sclaim sI component J below E         every coefficient of t**e, e < E, of sI is 0 (and
                                         known: E <= its precision)
 """
@@ -59,6 +65,7 @@ class Trace:
     def __init__(self, cert):
         self.cert, self.series, self.header, self.claims = cert, {}, None, []
         self.moduli = {}  # the constant modulus of each sn, cn, dn series
+        self.charts = {}  # NAME -> [(arguments' components, value's components)] as series
 
     # ---- the certificate's lines -----------------------------------------------------
     def header_line(self, rest):
@@ -81,6 +88,14 @@ class Trace:
         self.series[name] = self.operation(t)
         if self.pending_modulus is not None:
             self.moduli[name] = self.pending_modulus
+
+    def chart(self, rest):
+        head, _, value = rest.rpartition(" value=")
+        name, _, args = head.partition("(")
+        if not (args.endswith(")") and value and name):
+            raise SeriesError(f"malformed schart line {rest[:40]}")
+        argv = [[self.get(x.strip()) for x in a.split(", ")] for a in args[:-1].split("; ")]
+        self.charts.setdefault(name, []).append((argv, [self.get(x) for x in value.split(",")]))
 
     def claim(self, rest):
         t = rest.split()
@@ -199,17 +214,22 @@ class Trace:
         return self.make(lo, q, lo + n)
 
     def sqrt(self, a, root):
-        c, z = self.cert, self.cert.zero
+        c = self.cert
         if not a.c:
             h = a.hi // 2
             return S(h, h, [])
-        if a.lo % 2:
-            raise SeriesError("the square root of a series of odd valuation")
         s0 = self.node(root)
         ops = c.ops.get(root, [])
         r = c.rational(s0)
         if not ((ops and ops[0] == "sqrt") or (r is not None and r >= 0)):
             raise SeriesError(f"sqrt: the root {root} is no square-root node (no branch evidence)")
+        return self.sqrt_from(a, s0, root)
+
+    def sqrt_from(self, a, s0, root="the root"):
+        """sqrt(a) whose leading coefficient's root is s0 (a branch with its evidence)."""
+        c, z = self.cert, self.cert.zero
+        if a.lo % 2:
+            raise SeriesError("the square root of a series of odd valuation")
         if not c.eq(c.mul(s0, s0), a.c[0]):
             raise SeriesError(f"sqrt: {root} squared is not the leading coefficient")
         inv = c.inv(c.mul(c.const(2), s0))
@@ -225,10 +245,7 @@ class Trace:
 
     def jacobi(self, f, u, k, base):
         c, z = self.cert, self.cert.zero
-        if not (k.lo >= 0 and k.hi >= self.header["precision"] and len(k.c) <= 1 and (k.lo == 0 or not k.c)):
-            raise SeriesError(f"{f} at a modulus that depends on t")
-        if u.lo < 0 or u.hi <= 0:
-            raise SeriesError(f"{f} of a series with a pole or no constant term")
+        self.constant_modulus(f, u, k)
         u0, k0 = u.coef(0, z), k.coef(0, z)
         s0, c0, d0 = (self.node(t) for t in base)
         if self.is_zero(u0):
@@ -237,9 +254,20 @@ class Trace:
             ok = all(c.eq(v, self.at(g, u0, k0)) for g, v in (("sn", s0), ("cn", c0), ("dn", d0)))
         if not ok:
             raise SeriesError(f"{f}: the base values are not sn, cn, dn at the constant term")
+        return self.jacobi_from(u, k0, (s0, c0, d0))["sn cn dn".split().index(f)]
+
+    def constant_modulus(self, f, u, k):
+        if not (k.lo >= 0 and k.hi >= self.header["precision"] and len(k.c) <= 1 and (k.lo == 0 or not k.c)):
+            raise SeriesError(f"{f} at a modulus that depends on t")
+        if u.lo < 0 or u.hi <= 0:
+            raise SeriesError(f"{f} of a series with a pole or no constant term")
+
+    def jacobi_from(self, u, k0, base):
+        """(sn, cn, dn)(u(t), k0) from their values at u(0), by integrating DLMF 22.13.1-3."""
+        c, z = self.cert, self.cert.zero
         k2 = c.mul(k0, k0)
         du = [c.mul(c.const(j + 1), u.coef(j + 1, z)) for j in range(u.hi)]
-        s, cc, d = [s0], [c0], [d0]
+        s, cc, d = [base[0]], [base[1]], [base[2]]
         conv = lambda x, y, m: _sum(c, [c.mul(x[i], y[m - i]) for i in range(m + 1)])  # noqa: E731
         cd, sd, sc = [], [], []
         for m in range(u.hi - 1):
@@ -250,7 +278,7 @@ class Trace:
             s.append(c.mul(conv(cd, du, m), inv))
             cc.append(c.neg(c.mul(conv(sd, du, m), inv)))
             d.append(c.neg(c.mul(c.mul(conv(sc, du, m), k2), inv)))
-        return self.make(0, {"sn": s, "cn": cc, "dn": d}[f], u.hi)
+        return tuple(self.make(0, v, u.hi) for v in (s, cc, d))
 
     def at(self, g, u0, k0):
         """The certificate's g(u0, k0) (an elliptic node or its bases), as the evaluator

@@ -187,6 +187,16 @@ fn series_lines(em: &mut Emitter<'_>, trace: &super::series_trace::SeriesTrace) 
         let line = super::series_trace::record_line(i + 1, r, &mut node)?;
         em.out.push_str(&line);
     }
+    for (name, args, value) in &trace.charts {
+        let ids = |xs: &[u32]| xs.iter().map(|i| format!("s{i}")).collect::<Vec<_>>();
+        let argv: Vec<String> = args.iter().map(|a| ids(a).join(", ")).collect();
+        let _ = writeln!(
+            em.out,
+            "schart {name}({}) value={}",
+            argv.join("; "),
+            ids(value).join(",")
+        );
+    }
     for (id, j, below) in &trace.claims {
         let _ = writeln!(claims, "sclaim s{id} component {j} below {below}");
     }

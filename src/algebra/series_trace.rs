@@ -17,6 +17,7 @@
 //! sseries s5 = sn s3 s2 base t11 t12 t13   # sn(u, k), k constant, from sn, cn, dn(u(0))
 //! sseries s6 = cut s5 3                 # known to O(t^3) only
 //! sseries s8 = moving s5 s7             # s5 = sn(u, k₀), k₀ s7's constant term: sn(u, s7)
+//! schart delta1(s2; s3; s2; s2; s3; s1) value=s9   # an implicit map's series there
 //! sclaim s6 component 1 below 2         # the coefficients of t^e, e < 2, are 0
 //! ```
 
@@ -65,6 +66,9 @@ pub(crate) struct SeriesTrace {
     pub claims: Vec<(u32, usize, i32)>,
     /// The working precision of the series.
     pub precision: i32,
+    /// The charts of implicit maps: the map's name, its arguments' components and its
+    /// value's components, as series ids.
+    pub charts: Vec<(String, Vec<Vec<u32>>, Vec<u32>)>,
 }
 
 impl Series {
@@ -88,6 +92,28 @@ impl Series {
         drop(st);
         self.set_trace_id(id);
         self
+    }
+
+    /// Records that `value` is the power series of the implicit map `name` at `args`
+    /// (each argument's components): the certificate's `schart` line, which the recheck
+    /// substitutes into the map's equations as the catalogue states them.
+    pub(crate) fn record_chart(name: &str, args: &[Vec<Series>], value: &[Series]) {
+        let Some(ring) = value.first().map(|v| v.ring().clone()) else {
+            return;
+        };
+        if !ring.certifying() {
+            return;
+        }
+        let ids = |xs: &[Series]| {
+            xs.iter()
+                .map(Series::trace_id)
+                .collect::<Option<Vec<u32>>>()
+        };
+        let argv: Option<Vec<Vec<u32>>> = args.iter().map(|a| ids(a)).collect();
+        match (argv, ids(value)) {
+            (Some(a), Some(v)) => ring.state().series.charts.push((name.to_string(), a, v)),
+            _ => ring.mark_uncertified("a power series whose computation is not recorded"),
+        }
     }
 
     /// Records that the coefficients of this value below `t^below` are 0 (component

@@ -53,14 +53,17 @@ pub(super) fn series(f: ModelFn, args: &[Value<Series>]) -> Result<Value<Series>
         f.name(),
         f.equations()
     ));
-    match f {
+    let out = match f {
         ModelFn::StepVm | ModelFn::VmOmega => vm(f, args, &h),
         ModelFn::Delta1 | ModelFn::Delta2 | ModelFn::DeltaVm => phase(f, args, &h),
         ModelFn::StepGamma0 => midpoint(Gamma::G0, args, &h),
         ModelFn::StepGamma1 => midpoint(Gamma::G1, args, &h),
         ModelFn::StepGamma2 => midpoint(Gamma::G2, args, &h),
         _ => Err("not an implicit map".into()),
-    }
+    }?;
+    let argv: Vec<Vec<Series>> = args.iter().map(Value::components).collect();
+    Series::record_chart(f.name(), &argv, &out.components());
+    Ok(out)
 }
 
 /// (impl spec 1–3): `M̂ − M − ¼hγ f(M + M̂) = 0` from `M̂ = M`.
