@@ -1221,7 +1221,7 @@ class Cert:
             self.need(re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*(\[\d+\])?", name.strip()) is not None
                       and name.strip() not in self.coords, f"bad coord line {rest[:40]}")
             self.coords[name.strip()] = self.vals[t.strip()]
-        elif word in ("series", "sseries", "sclaim", "schart"):
+        elif word in ("series", "sseries", "sclaim", "schart", "ssolution"):
             if self.trace is None:
                 self.trace = series.Trace(self)
             try:
@@ -1231,6 +1231,8 @@ class Cert:
                     self.trace.record(rest)
                 elif word == "schart":
                     self.trace.chart(rest)
+                elif word == "ssolution":
+                    return self.trace.solution_line(rest)
                 else:
                     return self.trace.claim(rest)
             except series.SeriesError as e:

@@ -430,6 +430,13 @@ class Cases:
         wrong = re.sub(r"^(schart delta1\(.*\) value=)s\d+$", r"\1s1", dl, count=1, flags=re.M)
         self.expect("sec7.delta12-asym.g1.up with the phase step's series chart replaced by t is rejected",
                     recheck([write(t, "dl-bad.cert", wrong)]), False, "does not satisfy sec7.master12")
+        ex = prove("sec3.impl-map.existence", t)
+        self.expect("sec3.impl-map.existence: the series solution solves (impl), its Jacobian at h = 0 has a "
+                    "proved sign, and it lies in the stated set", recheck([write(t, "ex.cert", ex)]), True,
+                    "formulas: evaluated")
+        moved = re.sub(r"^ssolution x1 = s\d+", "ssolution x1 = s1", ex, count=1, flags=re.M)
+        self.expect("sec3.impl-map.existence with the solution's first component replaced by h is rejected",
+                    recheck([write(t, "ex-bad.cert", moved)]), False, "at the series solution: a known coefficient")
         cat = changed_catalogue(t, {cid})
         self.expect(f"{cid} against a catalogue copy whose expr is changed is rejected",
                     recheck([write(t, "as-cat.cert", cert)], "--catalogue", cat), False, "claim.expr")

@@ -269,6 +269,69 @@ def series_binding(cert, src, catalogue=None):
     return "evaluated"
 
 
+def existence_binding(cert, src, catalogue=None):
+    """An existence claim proved for small h by the implicit function theorem: its
+    solution's power series X (the ssolution line) solves the claim's equations,
+    evaluated here (every known coefficient 0, so E(X(0), 0) = 0); the Jacobian
+    dE/dx at (X(0), h = 0), the t coefficients of E(X(0) + t e_j, 0), has a determinant
+    whose sign the certificate proves, so a solution x(h) = X + O(t^n) exists for small
+    h; and the claim's set condition, evaluated on X, holds (each comparison decided by
+    a coefficient below the precision).  Unlike the other kinds, an existence claim the
+    evaluator does not reach is rejected: its formulas are its proof."""
+    from . import series_eval
+    tr = cert.trace
+    if tr is None or tr.header is None or tr.solution is None:
+        raise FormulaMismatch("an existence claim whose certificate has no series solution")
+    unknowns = list(src.get("claim.unknowns") or [])
+    if [u for u, _ in tr.solution] != unknowns:
+        raise FormulaMismatch(f"the ssolution line names {[u for u, _ in tr.solution]}, not the claim's unknowns")
+    try:
+        ev = series_eval.SeriesEvaluator(tr, [v for k, v in sorted(src.items()) if k.startswith("define.")])
+        base = series_eval.environment(tr, environment(cert, src, charts=False))
+        eqs = [Parser(e).whole() for e in src.get("claim.equations") or []]
+
+        def residuals(h, xs):
+            env = dict(base)
+            env["h"] = h
+            ev.let(src.get("claim.let"), env)
+            env.update(dict(zip(unknowns, xs)))
+            return env, [ev.scalar(ev.eval(e, env)) for e in eqs]
+        env, res = residuals(series_eval.small_variable(tr), [x for _, x in tr.solution])
+        for j, r in enumerate(res, 1):
+            if r.c or r.hi < 1:
+                raise FormulaMismatch(f"equation {j} at the series solution: a known coefficient is not 0 "
+                                      f"(or nothing is known)")
+        x0 = [ev.c.const_of(x.coef(0, cert.zero)) for _, x in tr.solution]
+        t = series_eval.small_variable(tr)
+        cols = []
+        for j in range(len(x0)):
+            moved = [ev.c.add(x, t) if i == j else x for i, x in enumerate(x0)]
+            cols.append([r.coef(1, cert.zero) for r in residuals(ev.c.zero, moved)[1]])
+        det = determinant([[cols[j][i] for j in range(len(x0))] for i in range(len(x0))], cert)
+        if ev.sign(det) == 0:
+            raise FormulaMismatch("the Jacobian at h = 0 is singular")
+        in_set = src.get("claim.in")
+        if in_set and not ev.boolean(ev.eval(Parser(in_set).whole(), env)):
+            raise FormulaMismatch("the set condition fails on the series solution")
+    except Unsupported as e:
+        raise FormulaMismatch(f"the existence proof is not evaluated here: {e}")
+    return "evaluated"
+
+
+def determinant(m, cert):
+    """The determinant of a 1x1 or 3x3 matrix of field values."""
+    if len(m) == 1:
+        return m[0][0]
+    if len(m) != 3:
+        raise Unsupported(f"a system of {len(m)} unknowns")
+    acc = cert.zero
+    for j in range(3):
+        minor = cert.add(cert.mul(m[1][(j + 1) % 3], m[2][(j + 2) % 3]), cert.mul(m[1][(j + 2) % 3], m[2][(j + 1) % 3]),
+                         -1)
+        acc = cert.add(acc, cert.mul(m[0][j], minor))
+    return acc
+
+
 def series_components(cert, src):
     """The components of the peeled formula of an asymptotic claim, evaluated here on
     power series (module series_eval)."""
@@ -286,6 +349,8 @@ def check(cert, src, catalogue=None):
     """'evaluated' when the derivation's claim lines are the claim's sides evaluated
     here, 'text' when the evaluator does not cover the claim (it is then bound by the
     text of its formulas only); FormulaMismatch with the first difference otherwise."""
+    if src.get("claim.kind") == "existence":
+        return existence_binding(cert, src, catalogue)
     if src.get("claim.kind") == "asymptotic" or cert.trace is not None:
         if src.get("claim.kind") != "asymptotic":
             raise FormulaMismatch("power series in the certificate of a claim that is not asymptotic")

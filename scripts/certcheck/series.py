@@ -33,6 +33,8 @@ the root relations), taking nothing from the prover but the leaves:
                                         substituted into the map's equations as the catalogue
                                         states them (module formula), and the map's value
                                         where a formula calls it there (module series_eval)
+  ssolution x = sA; y = sB              an existence claim's solution for small h (module
+                                        formula checks it against the claim)
   sclaim sI component J below E         every coefficient of t**e, e < E, of sI is 0 (and
                                         known: E <= its precision)
 """
@@ -66,6 +68,7 @@ class Trace:
         self.cert, self.series, self.header, self.claims = cert, {}, None, []
         self.moduli = {}  # the constant modulus of each sn, cn, dn series
         self.charts = {}  # NAME -> [(arguments' components, value's components)] as series
+        self.solution = None  # an existence claim's unknowns and their series
 
     # ---- the certificate's lines -----------------------------------------------------
     def header_line(self, rest):
@@ -96,6 +99,15 @@ class Trace:
             raise SeriesError(f"malformed schart line {rest[:40]}")
         argv = [[self.get(x.strip()) for x in a.split(", ")] for a in args[:-1].split("; ")]
         self.charts.setdefault(name, []).append((argv, [self.get(x) for x in value.split(",")]))
+
+    def solution_line(self, rest):
+        if self.solution is not None:
+            raise SeriesError("a second ssolution line")
+        pairs = [p.split(" = ") for p in rest.split("; ")]
+        if not all(len(p) == 2 for p in pairs):
+            raise SeriesError(f"malformed ssolution line {rest[:40]}")
+        self.solution = [(u.strip(), self.get(v.strip())) for u, v in pairs]
+        return 1
 
     def claim(self, rest):
         t = rest.split()

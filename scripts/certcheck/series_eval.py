@@ -122,7 +122,7 @@ class SeriesEvaluator(Evaluator):
                 raise Unsupported("a comparison of values whose known coefficients vanish")
             s = 0
         else:
-            s = self.base.sign_of(d.c[0])
+            s = self.sign(d.c[0])
         return {"<": s < 0, ">": s > 0, "<=": s <= 0, ">=": s >= 0, "==": s == 0, "!=": s != 0}[op]
 
     def derivative(self, name, args, env):
@@ -146,7 +146,89 @@ class SeriesEvaluator(Evaluator):
     def call(self, name, args, env):
         if name in self.c.t.charts and name not in self.funcs:
             return self.implicit(name, [self.eval(a, env) for a in args])
+        if name in ("abs", "norm", "min", "max") and name not in self.funcs and name not in env:
+            vals = [self.eval(a, env) for a in args]
+            if name == "abs" and len(vals) == 1:
+                return self.absolute(self.scalar(vals[0]))
+            if name == "norm" and len(vals) == 1:
+                comps = self.components(vals[0])
+                return self.sqrt(self.dot(comps, comps))
+            if name in ("min", "max") and vals:
+                best = self.scalar(vals[0])
+                for v in vals[1:]:
+                    if self.compare("<" if name == "min" else ">", self.scalar(v), best):
+                        best = self.scalar(v)
+                return best
         return super().call(name, args, env)
+
+    def binop(self, op, ea, eb, env):
+        """`min(xs) op b` and `max(xs) op b` compared argument by argument (min(xs) > b
+        when every x > b, min(xs) < b when some x < b; max the other way), so that the
+        arguments need not be ordered among themselves."""
+        if op in ("<", ">", "<=", ">=") and ea[0] == "call" and ea[1] in ("min", "max") and \
+                ea[1] not in self.funcs and ea[2]:
+            b = self.eval(eb, env)
+            tests = [self.compare(op, self.eval(x, env), b) for x in ea[2]]
+            every = (ea[1] == "min") == (op in (">", ">="))
+            return all(tests) if every else any(tests)
+        return super().binop(op, ea, eb, env)
+
+    def absolute(self, x):
+        """|x| for every small enough t > 0: x or -x by the sign of its leading
+        coefficient, as the certificate proves it; where that sign is not proved, only
+        |x| = O(t^v) for the valuation v (no coefficient of it known)."""
+        if not x.c:
+            return S(x.hi, x.hi, [])  # |O(t^hi)| = O(t^hi)
+        try:
+            s = self.sign(x.c[0])
+        except Unsupported:
+            return S(x.lo, x.lo, [])  # only |x| = O(t^v) is known, v the valuation
+        return x if s > 0 else self.c.neg(x)
+
+    def sign(self, v):
+        """The sign of a field value: by a sign line, a part's condition or a constant
+        (module evaluate), else proved here from the domain's parametrization (the
+        certificate's, checked against the catalogue by module domain)."""
+        try:
+            return self.base.sign_of(v)
+        except Unsupported:
+            s = self.domain_sign(v)
+            if s is None:
+                s = self.factor_sign(v)
+            if s is None:
+                raise
+            return s
+
+    def domain_sign(self, v):
+        cert = self.c.cert
+        if getattr(cert, "pring", None) is None:
+            return None
+        s = cert.frac_sign(v)
+        if s is None and cert.alt_lines:
+            s = cert.alt_sign(v)
+        return s if s in (1, -1) else None
+
+    def factor_sign(self, v):
+        """The sign of a value whose numerator and denominator factor over Q into
+        factors of proved sign: c * prod f_i^m_i has the sign of c times f_i's sign for
+        odd m_i (an even power of a factor of proved sign is positive)."""
+        out = 1
+        for p in (v.num, v.den):
+            if p.is_ground:
+                out *= 1 if p.LC > 0 else -1
+                continue
+            c, factors = p.factor_list()
+            out *= 1 if c > 0 else -1
+            for f, m in factors:
+                frac = type(v)(f, self.c.cert.ring.one)
+                try:
+                    fs = self.base.sign_of(frac)
+                except Unsupported:
+                    fs = self.domain_sign(frac)
+                if fs not in (1, -1):
+                    return None
+                out *= fs ** m
+        return out
 
 
 def chart_residuals(trace, catalogue, environment_of):

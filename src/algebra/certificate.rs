@@ -200,6 +200,12 @@ fn series_lines(em: &mut Emitter<'_>, trace: &super::series_trace::SeriesTrace) 
     for (id, j, below) in &trace.claims {
         let _ = writeln!(claims, "sclaim s{id} component {j} below {below}");
     }
+    if !trace.solution.is_empty() {
+        let parts: Vec<String> = (trace.solution.iter())
+            .map(|(u, id)| format!("{u} = s{id}"))
+            .collect();
+        let _ = writeln!(claims, "ssolution {}", parts.join("; "));
+    }
     Some(claims)
 }
 
@@ -219,7 +225,10 @@ impl Ring {
         let _ = writeln!(out, "# eulertop certificate 1");
         let _ = writeln!(out, "# claim: {}", title.replace('\n', " "));
         // the number of claim lines: a deleted one is noticed
-        let series_claims = self.state().series.claims.len();
+        let series_claims = {
+            let st = self.state();
+            st.series.claims.len() + usize::from(!st.series.solution.is_empty())
+        };
         let count = if series_claims > 0 {
             series_claims
         } else {
@@ -236,7 +245,7 @@ impl Ring {
         self.chart_lines(&mut em);
         self.coordinate_lines(&mut em);
         let trace = self.state().series.clone();
-        let series = if trace.claims.is_empty() {
+        let series = if trace.claims.is_empty() && trace.solution.is_empty() {
             None
         } else {
             Some(series_lines(&mut em, &trace)?)

@@ -19,6 +19,7 @@
 //! sseries s8 = moving s5 s7             # s5 = sn(u, k₀), k₀ s7's constant term: sn(u, s7)
 //! schart delta1(s2; s3; s2; s2; s3; s1) value=s9   # an implicit map's series there
 //! sclaim s6 component 1 below 2         # the coefficients of t^e, e < 2, are 0
+//! ssolution x = s12; y = s14            # an existence claim's solution, as series
 //! ```
 
 use super::series::Series;
@@ -69,6 +70,8 @@ pub(crate) struct SeriesTrace {
     /// The charts of implicit maps: the map's name, its arguments' components and its
     /// value's components, as series ids.
     pub charts: Vec<(String, Vec<Vec<u32>>, Vec<u32>)>,
+    /// The power-series solution of an existence claim: its unknowns' names and ids.
+    pub solution: Vec<(String, u32)>,
 }
 
 impl Series {
@@ -113,6 +116,23 @@ impl Series {
         match (argv, ids(value)) {
             (Some(a), Some(v)) => ring.state().series.charts.push((name.to_string(), a, v)),
             _ => ring.mark_uncertified("a power series whose computation is not recorded"),
+        }
+    }
+
+    /// Records `x` as the power-series solution of an existence claim in the `unknowns`:
+    /// the certificate's `ssolution` line, its claim.
+    pub(crate) fn record_solution(unknowns: &[String], x: &[Series]) {
+        let Some(ring) = x.first().map(|v| v.ring().clone()) else {
+            return;
+        };
+        if !ring.certifying() {
+            return;
+        }
+        match x.iter().map(Series::trace_id).collect::<Option<Vec<u32>>>() {
+            Some(ids) => {
+                ring.state().series.solution = unknowns.iter().cloned().zip(ids).collect();
+            }
+            None => ring.mark_uncertified("a power series whose computation is not recorded"),
         }
     }
 

@@ -23,7 +23,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
 /// The fields of a `[[claim]]` table that state what is claimed, in the order written.
-pub const CLAIM_FIELDS: [&str; 12] = [
+pub const CLAIM_FIELDS: [&str; 16] = [
     "kind",
     "domain",
     "vars",
@@ -35,6 +35,10 @@ pub const CLAIM_FIELDS: [&str; 12] = [
     "wrt",
     "var",
     "order",
+    "unknowns",
+    "equations",
+    "start",
+    "in",
     "hypotheses",
 ];
 

@@ -11,7 +11,9 @@ use crate::claims::catalogue::lookup::{Scope, find};
 use crate::claims::catalogue::{Body, Catalogue, Claim, PExpr};
 use crate::claims::verdict::context::Ctx;
 use crate::claims::verdict::independence::derivative_sides;
-use crate::claims::verdict::symbolic::{Order, ProofInfo, prove, prove_order};
+use crate::claims::verdict::symbolic::{
+    Order, ProofInfo, System, prove, prove_existence, prove_order,
+};
 use clap::Parser;
 use std::io::Write;
 
@@ -109,12 +111,15 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     let provable = |c: &Claim| {
         matches!(
             c.body,
-            Body::Identity { .. } | Body::Independence { .. } | Body::Asymptotic { .. }
+            Body::Identity { .. }
+                | Body::Independence { .. }
+                | Body::Asymptotic { .. }
+                | Body::Existence { .. }
         )
     };
     if !sel.claims.iter().any(|c| provable(c)) {
         return Err(CliError(format!(
-            "none of the {} claims of {} is an identity, an independence or an asymptotic claim, the kinds proved symbolically",
+            "none of the {} claims of {} is an identity, an independence, an asymptotic or an existence claim, the kinds proved symbolically",
             sel.claims.len(),
             sel.what
         )));
@@ -164,9 +169,25 @@ fn attempt(ctx: Ctx<'_>, certify: bool) -> Result<ProofInfo, CliError> {
             };
             return Ok(prove_order(ctx, order));
         }
+        Body::Existence {
+            unknowns,
+            equations,
+            start,
+            in_set,
+            ..
+        } => {
+            let sys = System {
+                unknowns,
+                equations,
+                start,
+                in_set: in_set.as_ref(),
+                certificate: certify,
+            };
+            return Ok(prove_existence(ctx, sys));
+        }
         _ => {
             return Err(CliError(format!(
-                "claim '{}' is of kind {}, and only identities, independence and asymptotic claims are proved symbolically",
+                "claim '{}' is of kind {}, and only identities, independence, asymptotic and existence claims are proved symbolically",
                 claim.id,
                 claim.kind.name()
             )));
@@ -179,7 +200,10 @@ fn attempt(ctx: Ctx<'_>, certify: bool) -> Result<ProofInfo, CliError> {
 fn prove_one(args: &Args, cat: &Catalogue, claim: &Claim) -> Result<i32, CliError> {
     if !matches!(
         claim.body,
-        Body::Identity { .. } | Body::Independence { .. } | Body::Asymptotic { .. }
+        Body::Identity { .. }
+            | Body::Independence { .. }
+            | Body::Asymptotic { .. }
+            | Body::Existence { .. }
     ) {
         attempt(Ctx { cat, claim }, false)?;
     }

@@ -305,6 +305,7 @@ fn existence_verdict(
             equations: spec.equations,
             start: spec.start,
             in_set: spec.in_set,
+            certificate: false,
         };
         symbolic::judge_existence(ctx, sys, &mut ev);
     }

@@ -41,6 +41,8 @@ pub struct System<'a> {
     pub start: &'a [PExpr],
     /// Membership predicate.
     pub in_set: Option<&'a PExpr>,
+    /// Record the derivation as a certificate (module [`crate::algebra::certificate`]).
+    pub certificate: bool,
 }
 
 /// The working precision of the series: the `in` condition's comparisons are decided
@@ -108,13 +110,17 @@ fn parts(
         points: points.len(),
         positivity: dom.positivity.clone(),
         hypotheses: conds.clone(),
+        certificate: sys.certificate,
         ..RingOptions::default()
     };
-    let p = prove_components(opts, &ctx.claim.id, |ring| {
+    let mut p = prove_components(opts, &ctx.claim.id, |ring| {
         with_precision(PRECISION, || {
             in_set_for_small_h(ctx, ring, (&dom.roles, &points), sys)
         })
     });
+    if let Some(c) = p.certificate.as_mut() {
+        *c = super::series::series_line(c, ("h", 0.0), 1, PRECISION);
+    }
     let split = match &p.split {
         Some(s)
             if !p.is_proved()
@@ -177,6 +183,7 @@ fn in_set_for_small_h(
         equations(base, sys, x)
     };
     let x = solve(x0, &e, &h).map_err(fail)?;
+    Series::record_solution(sys.unknowns, &x);
     ring.note(format!(
         "the start values at h = 0 solve the equations there exactly, and the Jacobian at h = 0 has a determinant of proved sign: by the implicit function theorem a solution exists for small h, with the power series {}",
         (sys.unknowns.iter().zip(&x))

@@ -193,7 +193,8 @@ fn prove_case_in(
     });
     let names = labels.into_inner().unwrap_or_else(|e| e.into_inner());
     if let Some(c) = proof.certificate.as_mut() {
-        *c = series_line(c, claim, step, working_precision(claim, (step, extra)));
+        let n = working_precision(claim, (step, extra));
+        *c = series_line(c, (claim.var, claim.order), step, n);
     }
     let rename = |text: &mut String| {
         let named = (names.iter().enumerate().rev())
@@ -307,13 +308,10 @@ fn coefficients(
 
 /// The certificate `cert` of one case with its `series` line after the `claims N` line:
 /// `series VAR step S order P precision N`, the series variable `t` with `VAR = tˢ`,
-/// the claimed order, and the working precision (module
+/// the claimed order (0 for an existence claim), and the working precision (module
 /// [`crate::algebra::certificate`]).
-fn series_line(cert: &str, claim: Order<'_>, step: i32, n: i32) -> String {
-    let line = format!(
-        "series {} step {step} order {} precision {n}\n",
-        claim.var, claim.order
-    );
+pub(super) fn series_line(cert: &str, (var, order): (&str, f64), step: i32, n: i32) -> String {
+    let line = format!("series {var} step {step} order {order} precision {n}\n");
     let mut out = String::with_capacity(cert.len() + line.len());
     let mut done = false;
     for l in cert.split_inclusive('\n') {
