@@ -78,6 +78,7 @@ fn series_proofs(c: &mut Criterion) {
             expr,
             var,
             order: *order,
+            certificate: false,
         };
         g.bench_function(id, |b| {
             b.iter(|| {
