@@ -95,9 +95,6 @@ pub(crate) struct Theta<R> {
     pub scale: Dd<R>,
     /// The quarter period in the scaled variable: `π/2` or `πK/(2K')`.
     pub period: Dd<R>,
-    /// Is `scale` good to about `2⁻⁸⁵` (then a reduction that the fast one declines is
-    /// done exactly; else first again with the precise scale)?
-    pub precise: bool,
     /// The largest quadrant and the smallest `|w|/|z|` the fast reduction accepts (see
     /// [`Theta::reduce_fast`]): `256` and `2⁻²⁰`, or less where the scale's error bound
     /// is larger (see [`Theta::with_bottom`]).
@@ -184,7 +181,6 @@ impl<R: Real> Theta<R> {
             } else {
                 Bottom::Series
             },
-            precise: j_max == J_FAST && cancel == CANCEL_PRECISE,
             j_max,
             inv_period: if imaginary {
                 1.0 / period.v()
@@ -645,17 +641,13 @@ mod tests {
                     let ep = rel(&th.period, &period);
                     assert!(ep < 2f64.powi(-84), "k = {k}: period error {ep:e}");
                     assert!(
-                        th.precise,
+                        th.cancel == CANCEL_PRECISE && th.j_max == J_FAST,
                         "k = {k}: the imaginary bottom's scale is precise"
                     );
                 }
             }
         }
         assert!(worst.iter().all(|w| *w > 0.0), "{worst:?}");
-        eprintln!(
-            "worst error / bound: series {:.3}, imaginary {:.3}",
-            worst[0], worst[1]
-        );
     }
 
     /// `scale` and `period` in double-double against MPFR (to 2⁻⁸⁴; the reduction needs
