@@ -34,9 +34,11 @@
 //! `q = ε + 2ε⁵ + 15ε⁹ + 150ε¹³ + 1707ε¹⁷ + …`, `ε = (1 − T)/(2(1 + T)) =
 //! λ²/(2(1 + λ')(1 + T)²)` (DLMF 22.2.2 and its inversion), and the scale
 //! `π/(2K_λ) = AGM(1, λ') = ((1 + T)/(2θ₃(0, q⁴)))²` (two AGM steps take `(1, λ')` to
-//! `θ₃(q⁴)²/θ₃(q)²·(1, …)`, DLMF 19.8.1 with 20.7.E: `θ₃(q)² = AGM(1, λ')⁻¹`), all in
-//! double-double (about `2⁻⁹⁵` relative), so that `ζ = u·π/(2K)` is exact enough for
-//! `|u| ≤ 256 K`.  At imaginary argument the period in `y = πt/(2K')` is
+//! `θ₃(q⁴)²/θ₃(q)²·(1, …)`, DLMF 19.8.1 with 20.7.E: `θ₃(q)² = AGM(1, λ')⁻¹`), with
+//! `θ₃(0, q⁴)⁻²` as a series in `ε⁴` ([`ScaleKind`]), in double-double (the scale to
+//! between `2⁻⁶⁴` and `2⁻⁹⁵` relative, depending on the modulus), so that `ζ = u·π/(2K)`
+//! is exact enough for `|u| ≤ 256 K` with the cancellation the fast reduction accepts
+//! ([`Theta::with_bottom`]).  At imaginary argument the period in `y = πt/(2K')` is
 //! `πK/(2K') = −ln(q')/2`, also in double-double ([`Dd::ln`]).
 
 use super::bottom::Bottom;
