@@ -1,11 +1,13 @@
 //! Times sn+cn+dn over the benchmark batch in-process (for scripts/bench_peers.py):
-//! `cargo run --release --example bench_batch -- BITS N REPEATS [all] [many] [fresh] [k=K]`
+//! `cargo run --release --example bench_batch -- BITS N REPEATS [all] [many] [fresh] [k=K]
+//! [kmin=A] [kmax=B]`
 //! prints the median and the minimum over REPEATS of the time per evaluation in
 //! nanoseconds (with `all`: every batch's time per evaluation).  By default every
 //! argument is one `sncndn(u, k)` call with the fixed modulus k = 0.8 (or `k=K`); with `many` the
 //! batch is one `sncndn_many(&us, k)` call (f64 only); with `fresh` every call has its
 //! own modulus `k_i = 0.05 + 0.94·frac(i·φ)` (φ the golden ratio, so no two calls share
-//! a modulus and the moduli fill [0.05, 0.99] evenly).  Time is wall-clock time of the
+//! a modulus and the moduli fill [0.05, 0.99] evenly; `kmin=A`, `kmax=B` fill [A, B]
+//! instead).  Time is wall-clock time of the
 //! batch (`std::time::Instant`; the per-thread CPU clocks of the build machine advance
 //! in scheduler ticks of 4 ms, too coarse for a batch of a few milliseconds), and both
 //! the median and the minimum are reported.
@@ -22,10 +24,10 @@ use rug::Float;
 use std::hint::black_box;
 use std::time::Instant;
 
-/// The modulus of call `i` in the fresh-modulus mode.
-fn fresh_k(i: usize) -> f64 {
+/// The modulus of call `i` in the fresh-modulus mode, in `[lo, hi]`.
+fn fresh_k(i: usize, (lo, hi): (f64, f64)) -> f64 {
     let phi = 0.618_033_988_749_894_9_f64;
-    0.05 + 0.94 * (i as f64 * phi).fract()
+    lo + (hi - lo) * (i as f64 * phi).fract()
 }
 
 fn main() {
@@ -36,16 +38,19 @@ fn main() {
     let (bits, n, reps) = (arg(1, 53) as u32, arg(2, 1000), arg(3, 5).max(1));
     let flag = |f: &str| a.iter().skip(4).any(|x| x == f);
     let fresh = flag("fresh");
-    let fixed_k: f64 = a
-        .iter()
-        .skip(4)
-        .find_map(|x| x.strip_prefix("k=").and_then(|v| v.parse().ok()))
-        .unwrap_or(0.8);
+    let value = |key: &str, default: f64| -> f64 {
+        a.iter()
+            .skip(4)
+            .find_map(|x| x.strip_prefix(key).and_then(|v| v.parse().ok()))
+            .unwrap_or(default)
+    };
+    let fixed_k = value("k=", 0.8);
+    let range = (value("kmin=", 0.05), value("kmax=", 0.99));
     let us: Vec<f64> = (0..n)
         .map(|i| -10.0 + 20.0 * (i as f64 + 0.5) / n as f64)
         .collect();
     let ks: Vec<f64> = (0..n)
-        .map(|i| if fresh { fresh_k(i) } else { fixed_k })
+        .map(|i| if fresh { fresh_k(i, range) } else { fixed_k })
         .collect();
     let p = bits.max(2);
     let us_mp: Vec<Float> = us.iter().map(|u| Float::with_val(p, *u)).collect();

@@ -2,8 +2,9 @@
 //! data ([`FixedModulus`]: the bottom, its theta data, the modulus transformation, all
 //! in double-double), the argument reduction, and the per-thread caches of `f64`:
 //!
-//! * the data of the two most recent moduli, shared by every `f64` call
-//!   ([`Real::PLAIN_F64`]; a complex argument needs a modulus and its complement);
+//! * the data of the two most recent moduli asked for more than once, shared by every
+//!   `f64` call ([`Real::PLAIN_F64`]; a complex argument needs a modulus and its
+//!   complement; a modulus met for the first time is evaluated without an entry);
 //!   other fixed-precision types (`Dual`, whose derivative parts differ from call to
 //!   call) build their data afresh;
 //! * the 150-bit quarter periods used by the exact reduction of large arguments.
@@ -226,22 +227,28 @@ impl<R: Real> FixedModulus<R> {
     }
 }
 
-/// The two most recent `f64` moduli, with the keys of their specs ([`Spec::key`]).
+/// The two most recent `f64` moduli that were asked for more than once, with the keys
+/// of their specs ([`Spec::key`]), and the keys of the two most recent ones (`seen`).
 struct Slots {
     slots: [Option<([u64; 2], FixedModulus<f64>)>; 2],
     next: usize,
+    seen: [[u64; 2]; 2],
 }
 
 thread_local! {
-    static FIXED_F64: RefCell<Slots> = const { RefCell::new(Slots { slots: [None, None], next: 0 }) };
+    static FIXED_F64: RefCell<Slots> = const {
+        RefCell::new(Slots { slots: [None, None], next: 0, seen: [[u64::MAX; 2]; 2] })
+    };
     static TRIPLES: RefCell<Vec<Triple>> = const { RefCell::new(Vec::new()) };
 }
 
 impl FixedModulus<f64> {
-    /// Runs `f` on the data of `spec` through the per-thread two-entry cache (a fresh
-    /// modulus replaces the older entry, so the pair of a modulus and its complement, as
-    /// a complex argument needs, stays cached).  The lookup, a new entry and `f` are
-    /// compiled together into the FMA clone ([`with_fma`]).
+    /// Runs `f` on the data of `spec` through the per-thread two-entry cache (a modulus
+    /// seen before among the last two replaces the older entry, so the pair of a
+    /// modulus and its complement, as a complex argument needs, stays cached; a modulus
+    /// seen for the first time is evaluated from data that stay in registers, since
+    /// storing them costs about as much as forming them).  The lookup, a new entry and
+    /// `f` are compiled together into the FMA clone ([`with_fma`]).
     #[inline(always)]
     fn with_cached<T>(spec: Spec<'_, f64>, f: impl FnOnce(&FixedModulus<f64>) -> T) -> T {
         let key = spec.key();
@@ -253,6 +260,10 @@ impl FixedModulus<f64> {
                     let c = &mut *c;
                     if let Some((_, data)) = c.slots.iter().flatten().find(|e| e.0 == key) {
                         return f(data);
+                    }
+                    if !c.seen.contains(&key) {
+                        c.seen = [key, c.seen[0]];
+                        return f(&FixedModulus::new(spec));
                     }
                     let i = c.next;
                     c.next = 1 - i;
@@ -278,28 +289,27 @@ pub(crate) fn sncndn_theta<R: Real>(
     let j = quadrant(th.ratio_of(u.to_f64()), u)?;
     match th.reduce_fast(u, u_lo, j) {
         Some((w, w_lo)) => Ok(th.eval(j, w, w_lo)),
-        None => reduce_precise(u, u_lo, th, m, mc, j),
+        // (the data by value: `th` need not be stored for the cold path)
+        None => reduce_precise(u, u_lo, m.clone(), mc.clone(), th.bottom, j),
     }
 }
 
-/// [`sncndn_theta`] when the fast reduction declined: again with the precise scale
-/// (series only), else the exact reduction.
+/// [`sncndn_theta`] when the fast reduction declined: again with the data of the
+/// precise scale (formed here, so that the caller's data need not be stored), else the
+/// exact reduction.
 #[cold]
 fn reduce_precise<R: Real>(
     u: &R,
     u_lo: f64,
-    th: &Theta<R>,
-    m: &Dd<R>,
-    mc: &Dd<R>,
+    m: Dd<R>,
+    mc: Dd<R>,
+    bottom: Bottom,
     j: i64,
 ) -> Result<(R, R, R), SpecialError> {
-    if th.precise {
-        return reduce_exact(u, u_lo, th, mc, j);
-    }
-    let precise = Theta::with_bottom(m, mc, th.bottom == Bottom::Imaginary, true);
+    let precise = Theta::with_bottom(&m, &mc, bottom == Bottom::Imaginary, true);
     match precise.reduce_fast(u, u_lo, j) {
         Some((w, w_lo)) => Ok(precise.eval(j, w, w_lo)),
-        None => reduce_exact(u, u_lo, &precise, mc, j),
+        None => reduce_exact(u, u_lo, &precise, &mc, j),
     }
 }
 

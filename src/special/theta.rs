@@ -34,9 +34,11 @@
 //! `q = ε + 2ε⁵ + 15ε⁹ + 150ε¹³ + 1707ε¹⁷ + …`, `ε = (1 − T)/(2(1 + T)) =
 //! λ²/(2(1 + λ')(1 + T)²)` (DLMF 22.2.2 and its inversion), and the scale
 //! `π/(2K_λ) = AGM(1, λ') = ((1 + T)/(2θ₃(0, q⁴)))²` (two AGM steps take `(1, λ')` to
-//! `θ₃(q⁴)²/θ₃(q)²·(1, …)`, DLMF 19.8.1 with 20.7.E: `θ₃(q)² = AGM(1, λ')⁻¹`), all in
-//! double-double (about `2⁻⁹⁵` relative), so that `ζ = u·π/(2K)` is exact enough for
-//! `|u| ≤ 256 K`.  At imaginary argument the period in `y = πt/(2K')` is
+//! `θ₃(q⁴)²/θ₃(q)²·(1, …)`, DLMF 19.8.1 with 20.7.E: `θ₃(q)² = AGM(1, λ')⁻¹`), with
+//! `θ₃(0, q⁴)⁻²` as a series in `ε⁴` ([`ScaleKind`]), in double-double (the scale to
+//! between `2⁻⁶⁴` and `2⁻⁹⁵` relative, depending on the modulus), so that `ζ = u·π/(2K)`
+//! is exact enough for `|u| ≤ 256 K` with the cancellation the fast reduction accepts
+//! ([`Theta::with_bottom`]).  At imaginary argument the period in `y = πt/(2K')` is
 //! `πK/(2K') = −ln(q')/2`, also in double-double ([`Dd::ln`]).
 
 use super::bottom::Bottom;
@@ -54,13 +56,33 @@ pub(crate) const SERIES_MAX_M: f64 = 0.81;
 /// quarter period known to 150 bits.
 const J_FAST: i64 = 256;
 
-/// Largest `κ²` for which the series takes the nome in `f64`: there `ε⁴ < 2⁻¹⁸` (at
-/// `ε⁴ = 2⁻¹⁸`, `κ² ≈ 0.5078`), so the scale's error is below `2⁻⁶⁵` (measured below
-/// `E·2⁻⁴⁸` with `E = 2q⁴ ≤ 2⁻¹⁷`, test `f64_nome_scale_against_mpfr`), as the fast
-/// reduction needs (see [`Theta::with_bottom`]); above it (`κ > 1/√2`) `ε` is a
-/// double-double.  The test is on `κ²`, known at once, rather than on `ε`, so that a
-/// new modulus does not wait for the nome to learn which way it goes.
+/// Largest `κ²` for which the series takes the nome in `f64` ([`ScaleKind::F64`]):
+/// there `ε⁴ < 2⁻¹⁸` (at `ε⁴ = 2⁻¹⁸`, `κ² ≈ 0.5078`), so the scale's error is below
+/// `2⁻⁶⁵` (measured below `E·2⁻⁴⁸` with `E = 2q⁴ ≤ 2⁻¹⁷`, test
+/// `scale_error_within_bound`), as the fast reduction needs for `|j| ≤ 64` (see
+/// [`Theta::with_bottom`]); above it (`κ > 1/√2`) `ε` is a double-double
+/// ([`ScaleKind::Series`]).  The test is on `κ²`, known at once, rather than on `ε`, so
+/// that a new modulus does not wait for the nome to learn which way it goes.
 const NOME_F64_MAX_M: f64 = 0.5;
+
+/// The relative cancellation `|w|/|z|` the fast reduction always accepts (with a scale
+/// good to `2⁻⁸⁵`: `|z| ≤ 2⁸·⁷` for `|j| ≤ 256`, so `w` keeps `2⁻⁵⁶`).
+const CANCEL_PRECISE: f64 = 9.5367431640625e-7; // 2⁻²⁰
+
+/// How the scale `π/(2K)` is formed ([`Nome::scale`]), from the cheapest to the most
+/// accurate.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum ScaleKind {
+    /// The nome in `f64`, `δ` from `E = 2q⁴ + 2q¹⁶` in `f64`: error `E·2⁻⁴⁸` (series,
+    /// `κ² ≤ NOME_F64_MAX_M`).
+    F64,
+    /// `ε` in double-double, `δ` from its series in `ε⁴` with the leading term in
+    /// double-double: error `ε⁸·2⁻⁴⁶ + 2⁻⁹⁵` (the other moduli).
+    Series,
+    /// `1/θ₃(0, q⁴)` in double-double: error `2⁻⁸⁵` (the retry of a declined
+    /// reduction).
+    Precise,
+}
 
 /// Per-modulus data of the fixed-precision theta bottoms.
 #[derive(Clone, Debug)]
@@ -75,10 +97,10 @@ pub(crate) struct Theta<R> {
     pub scale: Dd<R>,
     /// The quarter period in the scaled variable: `π/2` or `πK/(2K')`.
     pub period: Dd<R>,
-    /// Is `scale` good to about `2⁻⁸⁵` (else `2⁻⁶⁴`, see [`Theta::with_bottom`])?
-    pub precise: bool,
-    /// The cancellation the fast reduction accepts with the `f64`-nome scale (see
-    /// [`Theta::reduce_fast`]).
+    /// The largest quadrant and the smallest `|w|/|z|` the fast reduction accepts (see
+    /// [`Theta::reduce_fast`]): `256` and `2⁻²⁰`, or less where the scale's error bound
+    /// is larger (see [`Theta::with_bottom`]).
+    j_max: i64,
     cancel: f64,
     /// `1/period` rounded to `f64` (quadrant choice).
     inv_period: f64,
@@ -115,16 +137,26 @@ impl<R: Real> Theta<R> {
 
     /// [`Theta::new`] with the bottom chosen by the caller (`imaginary`); both forms are
     /// exact for every modulus, the choice only keeps the nome small (tests cross-check
-    /// them where both nomes are moderate).  `precise` asks for the scale to about
-    /// `2⁻⁸⁵` also for the series (the nome in double-double); otherwise the series scale
-    /// takes the nome in `f64` and is good to about `2⁻⁶⁴`, which the fast reduction
-    /// allows for `|u| ≤ 64K` and 8 bits of cancellation (see [`Theta::reduce_fast`]).
+    /// them where both nomes are moderate).  The scale ([`ScaleKind`], test
+    /// `scale_error_within_bound`): for the series up to `κ² = NOME_F64_MAX_M` from the
+    /// nome in `f64`, good to `E·2⁻⁴⁸` (about `2⁻⁶⁴`), which the fast reduction allows
+    /// for `|u| ≤ 64K` and `|w| ≥ |z|·2⁹E` (at most 8 bits of cancellation); above it
+    /// and at imaginary argument from the series of `δ` in `ε⁴`, good to
+    /// `ε⁸·2⁻⁴⁶ + 2⁻⁹⁵`: `2⁻⁸⁵` where `ε⁴ < 2⁻²⁰` (every imaginary bottom), `2⁻⁷²` at
+    /// `κ² = 0.81`, where the fast reduction accepts 15 bits of cancellation rather
+    /// than 20.  `precise` asks for the scale to about `2⁻⁸⁵` for every modulus
+    /// (through `1/θ₃(0, q⁴)` in double-double; the retry of a declined reduction).
     #[inline(always)]
     pub(crate) fn with_bottom(m: &Dd<R>, mc: &Dd<R>, imaginary: bool, precise: bool) -> Self {
         let (a, b) = if imaginary { (mc, m) } else { (m, mc) };
-        // the f64 nome is enough up to κ² = NOME_F64_MAX_M (the scale to 2⁻⁶⁵)
-        let precise = precise || imaginary || a.v() > NOME_F64_MAX_M;
-        let nome = Nome::new(a, b, precise);
+        let kind = if precise {
+            ScaleKind::Precise
+        } else if imaginary || a.v() > NOME_F64_MAX_M {
+            ScaleKind::Series
+        } else {
+            ScaleKind::F64
+        };
+        let nome = Nome::new(a, b, kind);
         let pow = powers(&nome.q);
         let scale = nome.scale();
         let one = m.hi.one();
@@ -136,9 +168,14 @@ impl<R: Real> Theta<R> {
                 lo: PI_2.1,
             }
         };
-        // the f64-nome scale is good to about E·2⁻⁴⁸, E = 2q⁴ ≈ 2ε⁴ (test
-        // `f64_nome_scale_against_mpfr`): w keeps 2⁻⁵⁷ relative where |w| ≥ |z|·2⁹E
-        let cancel = (nome.e4.to_f64() * 1024.0).clamp(2f64.powi(-40), 2f64.powi(-8));
+        // w keeps 2⁻⁵⁷ relative where |w| ≥ |z|·(error bound of the scale)·2⁵⁷ (test
+        // `scale_error_within_bound`)
+        let e4 = nome.e4.to_f64();
+        let (j_max, cancel) = match kind {
+            ScaleKind::F64 => (64, (e4 * 1024.0).clamp(2f64.powi(-40), 2f64.powi(-8))),
+            ScaleKind::Series => (J_FAST, (e4 * e4 * 2048.0).max(CANCEL_PRECISE)),
+            ScaleKind::Precise => (J_FAST, CANCEL_PRECISE),
+        };
         Theta {
             cancel,
             bottom: if imaginary {
@@ -146,7 +183,7 @@ impl<R: Real> Theta<R> {
             } else {
                 Bottom::Series
             },
-            precise: nome.precise,
+            j_max,
             inv_period: if imaginary {
                 1.0 / period.v()
             } else {
@@ -172,11 +209,11 @@ impl<R: Real> Theta<R> {
     }
 
     /// Fast reduction of `u + u_lo` (`|u_lo| ≤ ulp(u)`): `(w_hi, w_lo)` with
-    /// `u·scale = j·period + w`, or `None` when `|j| > 256` or `w` cancelled by more
-    /// than 20 bits (with the `f64`-nome scale of the series: `|j| > 64` or
-    /// `|w| < |z|·2⁹E`, at most 8 bits, fewer for small moduli, whose scale is more
-    /// accurate), so that `w` keeps about 56 bits of relative accuracy; then the caller
-    /// retries with the precise scale or reduces with the 150-bit quarter period.
+    /// `u·scale = j·period + w`, or `None` when `|j| > 256` or `|w| < |z|·cancel` (20
+    /// bits of cancellation, fewer for the moduli whose scale is less accurate, see
+    /// [`Theta::with_bottom`]), so that `w` keeps about 56 bits of relative accuracy;
+    /// then the caller retries with the precise scale or reduces with the 150-bit
+    /// quarter period.
     #[inline(always)]
     pub(crate) fn reduce_fast(&self, u: &R, u_lo: f64, j: i64) -> Option<(R, f64)> {
         let z = self.scale.mul_r(u);
@@ -184,12 +221,7 @@ impl<R: Real> Theta<R> {
         if j == 0 {
             return Some((z.hi, zl));
         }
-        let (j_max, cancel) = if self.precise {
-            (J_FAST, 2f64.powi(-20))
-        } else {
-            (64, self.cancel)
-        };
-        if j.abs() > j_max {
+        if j.abs() > self.j_max {
             return None;
         }
         let jf = j as f64;
@@ -197,7 +229,7 @@ impl<R: Real> Theta<R> {
         let zv = z.v();
         let r1 = zv - a;
         let (h, l) = two_sum(r1, (zl - ae) - jf * self.period.lo);
-        if h.abs() < zv.abs() * cancel {
+        if h.abs() < zv.abs() * self.cancel {
             return None;
         }
         let hi = z.hi - self.period.hi.clone() * u.from_i64(j);
@@ -321,8 +353,9 @@ impl<R: Real> Theta<R> {
 struct Nome<R> {
     /// `1 + T`.
     opt: Dd<R>,
-    /// `ε` (double-double when `precise`).
+    /// `ε` and `ε⁴` in double-double.
     eps: Dd<R>,
+    eps4: Dd<R>,
     /// `ε⁴`, `t₈ − 15ε⁸`, `t₈`, `w` in `R`.
     e4: R,
     tail12: R,
@@ -330,25 +363,34 @@ struct Nome<R> {
     w: R,
     /// The nome.
     q: R,
-    /// Is `ε` a double-double (scale to about `2⁻⁸⁵`)?
-    precise: bool,
+    /// How the scale is formed.
+    kind: ScaleKind,
 }
 
 impl<R: Real> Nome<R> {
     #[inline(always)]
-    fn new(a: &Dd<R>, b: &Dd<R>, precise: bool) -> Self {
+    fn new(a: &Dd<R>, b: &Dd<R>, kind: ScaleKind) -> Self {
         let one = a.hi.one();
         let t = quarter_root(b);
         let opt = t.add_r(&one);
         let den = t.sqr().add_r(&one).mul(&opt.sqr()).mul_2si(1);
-        let eps_f = a.hi.clone() / den.hi.clone();
-        let eps = if precise {
-            a.div(&den).norm_fast()
-        } else {
-            Dd::from(eps_f)
+        // (for the series the quotient itself, a few ulp off, not renormalised, so that
+        // the nome does not wait for its correction; the scale takes `ε⁴` from `eps4`)
+        let eps = match kind {
+            ScaleKind::F64 => Dd::from(a.hi.clone() / den.hi.clone()),
+            ScaleKind::Series => a.div(&den),
+            ScaleKind::Precise => a.div(&den).norm_fast(),
         };
         let e = eps.hi.clone();
         let e4 = e.sqr().sqr();
+        // ε⁴ in double-double: (ε + ε_lo)⁴ = p² + 2p·p_lo + 4p·ε·ε_lo with p + p_lo = ε²
+        let ev = e.to_f64();
+        let (p, p_lo) = two_prod(ev, ev);
+        let (_, p2_lo) = two_prod(p, p);
+        let eps4 = Dd {
+            hi: e4.clone(),
+            lo: p2_lo + 2.0 * p * (p_lo + 2.0 * ev * eps.lo),
+        };
         let c = |n: i64| one.from_i64(n);
         // Estrin's scheme in ε⁴ (a shorter dependency chain than Horner's)
         let e8 = e4.sqr();
@@ -358,57 +400,63 @@ impl<R: Real> Nome<R> {
                 + e8.clone()
                     * ((c(20910) + e4.clone() * c(268_616))
                         + e8.clone() * (c(3_567_400) + e4.clone() * c(48_555_069))));
-        let w_tail = e4.sqr() * c(15) + tail12.clone();
+        let w_tail = e8 * c(15) + tail12.clone();
         let w = e4.clone().mul_2si(1) + w_tail.clone();
-        let q = e.clone() + e * w.clone();
+        let q = e.clone() + e * w.clone() + one.from_f64(eps.lo);
         Nome {
             opt,
             eps,
+            eps4,
             e4,
             tail12,
             w_tail,
             w,
             q,
-            precise,
+            kind,
         }
     }
 
-    /// `ε⁴` (double-double when `precise`).
-    #[inline(always)]
-    fn eps4(&self) -> Dd<R> {
-        if self.precise {
-            self.eps.sqr().sqr()
-        } else {
-            Dd::from(self.e4.clone())
-        }
-    }
-
-    /// `π/(2K_λ) = AGM(1, λ') = ((1 + T)/(2θ₃(0, q⁴)))²` with `1/θ₃(0, q⁴) = 1 − c'`,
-    /// `c' = E/(1 + E)`, `E = 2q⁴ + 2q¹⁶`, and `q⁴ = ε⁴(1 + g)`,
-    /// `g = (1 + w)⁴ − 1 = 8ε⁴ + g₂`, `g₂ = 4t₈ + w²(6 + 4w + w²)` (about `84ε⁸`).
-    /// Everything comes from `ε⁴` and `w` (`q¹⁶` as `(q⁴)⁴`), not from the nome itself,
-    /// so the scale does not wait for the powers of `q`.
+    /// `π/(2K_λ) = AGM(1, λ') = ((1 + T)/2)²·(1 − δ)` (two AGM steps take `(1, λ')` to
+    /// `θ₃(q⁴)²/θ₃(q)²·(1, …)`, DLMF 19.8.1 with 20.7.E), `1 − δ = θ₃(0, q⁴)⁻²`.
     #[inline(always)]
     fn scale(&self) -> Dd<R> {
-        let one = self.q.one();
-        let (w, e4) = (&self.w, &self.e4);
         let half_opt = self.opt.mul_2si(-1);
-        if self.precise {
-            let g2 = self.w_tail.mul_2si(2)
-                + w.sqr() * (one.from_i64(6) + w.clone() * (one.from_i64(4) + w.clone()));
-            let eps4 = self.eps4();
-            let q4 = eps4.add(&eps4.sqr().mul_2si(3).add_r(&(eps4.hi.clone() * g2)));
-            let q16 = q4.hi.sqr().sqr();
-            let big_e = q4.add_r(&q16).mul_2si(1).norm_fast();
-            let ev = big_e.hi.clone();
-            let cprime = big_e.add_r(&(-(ev.sqr() / (one.clone() + ev))));
-            let neg = Dd {
-                hi: -half_opt.hi.clone(),
-                lo: -half_opt.lo,
-            };
-            // (the square is normalised to within an ulp: no renormalisation)
-            return half_opt.add(&neg.mul(&cprime)).sqr();
+        match self.kind {
+            ScaleKind::F64 => return self.scale_f64(&half_opt),
+            ScaleKind::Precise => return self.scale_precise(&half_opt),
+            ScaleKind::Series => {}
         }
+        let s0 = half_opt.sqr();
+        // δ = 1 − (1 + E)⁻², E = 2q⁴ + 2q¹⁶, as a series in e = ε⁴ (from Jacobi's series
+        // of the nome): δ = 4e + e²·P(e), P = 20 + 176e + 1876e² + 22064e³ + 275568e⁴ +
+        // 3584064e⁵ + 47995476e⁶ + 657037228e⁷ (next term 9150654952e¹⁰ < 2⁻⁹⁸ for
+        // e ≤ 2⁻¹³, κ² ≤ 0.81); 4e in double-double, e²·P in `R` (a few ulp), so the
+        // scale is good to e²·2⁻⁴⁶ (measured e²·2⁻⁴⁶·⁵, test `scale_error_within_bound`)
+        let one = self.q.one();
+        let c = |n: i64| one.from_i64(n);
+        let e = &(self.eps4.hi.clone() + one.from_f64(self.eps4.lo));
+        let e2 = e.sqr();
+        let e4 = e2.sqr();
+        let p = (c(20) + e.clone() * c(176))
+            + e2.clone() * (c(1876) + e.clone() * c(22064))
+            + e4 * ((c(275_568) + e.clone() * c(3_584_064))
+                + e2.clone() * (c(47_995_476) + e.clone() * c(657_037_228)));
+        let delta = self.eps4.mul_2si(2).add_r(&(e2 * p));
+        let sd = s0.mul(&delta);
+        // s0·(1 − δ) with 0 < δ < 2⁻¹⁰: a fast two-sum leaves it normalised to an ulp
+        let (h, l) = fast_two_sum(s0.v(), -sd.v());
+        Dd {
+            hi: with_value(&(s0.hi.clone() - sd.hi), h),
+            lo: l + (s0.lo - sd.lo),
+        }
+    }
+
+    /// [`Nome::scale`] from the nome in `f64` ([`ScaleKind::F64`]): `1 − δ = (1 + E)⁻²`,
+    /// `E = 2q⁴ + 2q¹⁶`, `q⁴ = ε⁴(1 + g)`, `g = 8ε⁴ + g₂`.
+    #[inline(always)]
+    fn scale_f64(&self, half_opt: &Dd<R>) -> Dd<R> {
+        let one = self.q.one();
+        let e4 = &self.e4;
         // (1 − c')² = (1 + E)⁻² = 1 − δ, δ = E(2 − 3E + 4E² − 5E³) + O(E⁵) with
         // E ≤ 2⁻¹⁷ (NOME_F64_MAX_M): no division after the nome; and with ε⁴ ≤ 2⁻¹⁸
         // `g₂ = 84ε⁸ + 992ε¹² + O(ε¹⁶)` (the next term moves `E` by under 2⁻⁷⁵), straight
@@ -429,6 +477,30 @@ impl<R: Real> Nome<R> {
         }
     }
 
+    /// [`Nome::scale`] to about `2⁻⁸⁵` for every modulus: `1 − δ = (1 − c')²`,
+    /// `1/θ₃(0, q⁴) = 1 − c'`, `c' = E/(1 + E)`, `E = 2q⁴ + 2q¹⁶`, and `q⁴ = ε⁴(1 + g)`,
+    /// `g = (1 + w)⁴ − 1 = 8ε⁴ + g₂`, `g₂ = 4t₈ + w²(6 + 4w + w²)` (about `84ε⁸`), in
+    /// double-double.
+    #[inline(always)]
+    fn scale_precise(&self, half_opt: &Dd<R>) -> Dd<R> {
+        let one = self.q.one();
+        let w = &self.w;
+        let g2 = self.w_tail.mul_2si(2)
+            + w.sqr() * (one.from_i64(6) + w.clone() * (one.from_i64(4) + w.clone()));
+        let eps4 = &self.eps4;
+        let q4 = eps4.add(&eps4.sqr().mul_2si(3).add_r(&(eps4.hi.clone() * g2)));
+        let q16 = q4.hi.sqr().sqr();
+        let big_e = q4.add_r(&q16).mul_2si(1).norm_fast();
+        let ev = big_e.hi.clone();
+        let cprime = big_e.add_r(&(-(ev.sqr() / (one.clone() + ev))));
+        let neg = Dd {
+            hi: -half_opt.hi.clone(),
+            lo: -half_opt.lo,
+        };
+        // (the square is normalised to within an ulp: no renormalisation)
+        half_opt.add(&neg.mul(&cprime)).sqr()
+    }
+
     /// `−ln(q)/2` (the quarter period `πK/(2K')` at imaginary argument):
     /// `ln q = ln ε + ln(1 + w)`, `ln(1 + w) = w − w²/2 + w³/3 − w⁴/4
     /// = 2ε⁴ + 13ε⁸ + (t₈ − 15ε⁸) − 2ε⁴t₈ − t₈²/2 + w³(1/3 − w/4)`, the first two terms
@@ -437,7 +509,7 @@ impl<R: Real> Nome<R> {
     fn half_log_period(&self) -> Dd<R> {
         let one = self.q.one();
         let (w, e4, w_tail) = (&self.w, &self.e4, &self.w_tail);
-        let eps4 = self.eps4();
+        let eps4 = &self.eps4;
         let low = self.tail12.clone()
             - (e4.clone() * w_tail.clone()).mul_2si(1)
             - w_tail.sqr().mul_2si(-1)
@@ -516,39 +588,68 @@ mod tests {
     use rug::Float;
     use rug::float::Constant;
 
-    /// The series scale `π/(2K) = AGM(1, κ')` from the nome in `f64` (where
-    /// [`Theta::with_bottom`] takes it, up to `κ ≈ 0.7`) against a 256-bit AGM, to the
-    /// `2⁻⁶⁴` the fast reduction assumes; moduli above that take the double-double nome.
-    #[test]
-    fn f64_nome_scale_against_mpfr() {
+    /// 256-bit `(π/(2K), π/(2K'), πK/(2K'))` of the modulus `k`.
+    fn reference(k: f64) -> [Float; 3] {
         let p = 256;
-        let mut f64_nomes = 0;
-        for i in 1..=2000 {
-            let k = 0.9 * f64::from(i) / 2000.0;
-            let k2 = Dd::from(k).sqr();
-            let (s, e) = two_sum(1.0, -k2.v());
-            let mc = Dd {
-                hi: s,
-                lo: e - k2.lo,
-            }
-            .norm();
-            let th = Theta::with_bottom(&k2, &mc, false, false);
-            if th.precise {
-                assert!(k > 0.6, "k = {k} takes the double-double nome");
-                continue;
-            }
-            f64_nomes += 1;
-            let kf = Float::with_val(p, k);
-            let kp = Float::with_val(p, 1 - Float::with_val(p, &kf * &kf)).sqrt();
-            let want = Float::with_val(p, 1).agm(&kp);
-            let got = Float::with_val(p, th.scale.hi) + th.scale.lo;
-            let rel = (got - &want).abs().to_f64() / want.to_f64();
-            assert!(rel < 2f64.powi(-64), "k = {k}: scale error {rel:e}");
+        let kf = Float::with_val(p, k);
+        let kp = Float::with_val(p, 1 - Float::with_val(p, &kf * &kf)).sqrt();
+        let pi = Float::with_val(p, Constant::Pi);
+        let agm = Float::with_val(p, 1).agm(&kp);
+        let agm_c = Float::with_val(p, 1).agm(&kf);
+        let period = Float::with_val(p, &pi * &agm_c) / (2 * agm.clone());
+        [agm, agm_c, period]
+    }
+
+    /// `|d − want|/want` at 256 bits.
+    fn rel(d: &Dd<f64>, want: &Float) -> f64 {
+        let got = Float::with_val(256, Float::with_val(256, d.hi) + d.lo);
+        (got - want).abs().to_f64() / want.to_f64()
+    }
+
+    /// The data of `k` as [`Theta::new`] builds it (`k² ≤ 0.81`: the series, else the
+    /// imaginary argument).
+    fn theta_of(k: f64) -> Theta<f64> {
+        let k2 = Dd::from(k).sqr();
+        let (s, e) = two_sum(1.0, -k2.v());
+        let mc = Dd {
+            hi: s,
+            lo: e - k2.lo,
         }
-        assert!(
-            f64_nomes > 1300,
-            "{f64_nomes} moduli of 2000 take the f64 nome"
-        );
+        .norm();
+        Theta::new(&k2, &mc)
+    }
+
+    /// The scale of every [`ScaleKind`] the fast reduction takes, against a 256-bit
+    /// AGM, within the bound that its accepted cancellation assumes (`cancel·2⁻⁵⁷`, so
+    /// that `w` keeps `2⁻⁵⁷` relative; up to `2⁻⁵⁶` for the nome in `f64`, whose error
+    /// reaches `E·2⁻⁴⁸`), over a dense sweep of moduli; the
+    /// period at imaginary argument to `2⁻⁸⁴`.
+    #[test]
+    fn scale_error_within_bound() {
+        let mut worst = [0f64; 2];
+        for i in 1..4000 {
+            let k = f64::from(i) / 4000.0;
+            for k in [k, 1.0 - (1.0 - k) * 1e-6] {
+                let th = theta_of(k);
+                let [agm, agm_c, period] = reference(k);
+                let imaginary = th.bottom == Bottom::Imaginary;
+                let scale = if imaginary { agm_c } else { agm };
+                let err = rel(&th.scale, &scale);
+                let slack = if th.j_max == J_FAST { 1.0 } else { 2.0 };
+                let bound = th.cancel * 2f64.powi(-57) * slack;
+                assert!(err < bound, "k = {k}: scale error {err:e}, bound {bound:e}");
+                worst[usize::from(imaginary)] = worst[usize::from(imaginary)].max(err / bound);
+                if imaginary {
+                    let ep = rel(&th.period, &period);
+                    assert!(ep < 2f64.powi(-84), "k = {k}: period error {ep:e}");
+                    assert!(
+                        th.cancel == CANCEL_PRECISE && th.j_max == J_FAST,
+                        "k = {k}: the imaginary bottom's scale is precise"
+                    );
+                }
+            }
+        }
+        assert!(worst.iter().all(|w| *w > 0.0), "{worst:?}");
     }
 
     /// `scale` and `period` in double-double against MPFR (to 2⁻⁸⁴; the reduction needs
@@ -565,34 +666,12 @@ mod tests {
             }
             .norm();
             let th = Theta::with_bottom(&k2, &mc, k2.v() > 0.5, true);
-            let p = 256;
-            let kf = Float::with_val(p, k);
-            let kp = Float::with_val(p, 1 - Float::with_val(p, &kf * &kf)).sqrt();
-            let pi = Float::with_val(p, Constant::Pi);
-            let big_k = Float::with_val(
-                p,
-                &pi / Float::with_val(p, 2 * Float::with_val(p, 1).agm(&kp)),
-            );
-            let big_kp = Float::with_val(
-                p,
-                &pi / Float::with_val(p, 2 * Float::with_val(p, 1).agm(&kf)),
-            );
+            let [agm, agm_c, period] = reference(k);
+            let half_pi = Float::with_val(256, Constant::Pi) / 2;
             let (scale, period) = if th.bottom == Bottom::Imaginary {
-                (
-                    Float::with_val(p, &pi / (2 * big_kp.clone())),
-                    Float::with_val(p, &pi * &big_k) / (2 * big_kp),
-                )
+                (agm_c, period)
             } else {
-                (
-                    Float::with_val(p, &pi / (2 * big_k)),
-                    Float::with_val(p, &pi / 2),
-                )
-            };
-            let rel = |d: &Dd<f64>, want: &Float| {
-                (Float::with_val(p, Float::with_val(p, d.hi) + d.lo) - want)
-                    .abs()
-                    .to_f64()
-                    / want.to_f64()
+                (agm, half_pi)
             };
             let (es, ep) = (rel(&th.scale, &scale), rel(&th.period, &period));
             assert!(
