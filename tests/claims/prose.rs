@@ -15,8 +15,8 @@ use std::path::Path;
 
 const GREEK: &[&str] = &[
     "alpha", "beta", "gamma", "delta", "epsilon", "eps", "kappa", "lambda", "lam", "mu", "nu",
-    "rho", "sigma", "phi", "psi", "omega", "theta", "pi", "Delta", "Gamma", "Phi", "Psi",
-    "Omega", "Pi",
+    "rho", "sigma", "phi", "psi", "omega", "theta", "pi", "Delta", "Gamma", "Phi", "Psi", "Omega",
+    "Pi",
 ];
 const FUNCTIONS: &[&str] = &[
     "sn", "cn", "dn", "det", "tr", "sqrt", "sin", "cos", "tanh", "sech", "cosh", "am",
@@ -116,7 +116,10 @@ fn ascii_math(s: &str, labels: &[String]) -> Vec<String> {
                 start = None;
                 let piece = t[s0..j].trim_start_matches('\'');
                 let at = s0 + (t[s0..j].len() - piece.len());
-                let w = piece.strip_suffix("'s").unwrap_or(piece).trim_end_matches('\'');
+                let w = piece
+                    .strip_suffix("'s")
+                    .unwrap_or(piece)
+                    .trim_end_matches('\'');
                 if !w.is_empty() && math_word(&t, w, at) {
                     found.push(w.to_string());
                 }
