@@ -66,7 +66,7 @@ fn math_word(t: &str, w: &str, at: usize) -> bool {
         || (w == "A"
             && (t[..at].trim_end().is_empty()
                 || t[..at].ends_with(". ")
-                || after.starts_with(|c: char| c == ' ')
+                || after.starts_with(' ')
                     && after[1..].starts_with(|c: char| c.is_ascii_lowercase())));
     let digits_at = w.find(|c: char| c.is_ascii_digit());
     let indexed = match digits_at {
