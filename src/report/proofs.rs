@@ -820,14 +820,15 @@ mod tests {
             b.contains("- `kK` = `1.5`, where $\\mathrm{kK} = K(k)$\n"),
             "{b}"
         );
+        assert!(
+            b.contains("- `x` = `0.25`, drawn as `uniform(0, 1)`\n"),
+            "{b}"
+        );
+        // with a description, the description first
         kk.about = Some("$K$, the quarter period".into());
         let b = counterexample_block(&c, &[kk]);
         assert!(
             b.contains("- `kK` = `1.5`, $K$, the quarter period, where $\\mathrm{kK} = K(k)$\n"),
-            "{b}"
-        );
-        assert!(
-            b.contains("- `x` = `0.25`, drawn as `uniform(0, 1)`\n"),
             "{b}"
         );
     }
