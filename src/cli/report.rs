@@ -251,6 +251,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
     } else {
         format!("eulertop report --bits {}", args.bits)
     };
+    let variables = crate::report::variables::definitions(&cat, &macros);
     let input = ReportInput {
         sections: sections(&cat),
         results: &results,
@@ -270,7 +271,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
         paper_environments: cat.all_environments(),
         paper: cat.paper.clone(),
         environments,
-        variables: crate::report::variables::definitions(&cat),
+        variables,
     };
     let written = stage_and_install(&input, out, model_figures)?;
     if let Some(r) = &readme {

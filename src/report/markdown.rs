@@ -196,7 +196,7 @@ fn every_claim(s: &mut String, input: &ReportInput) {
             stem_of(r),
             anchor(&r.id),
             r.form,
-            esc_cell(&r.location),
+            esc_cell(&input.prose(&r.location)),
             result_badge(r),
             mark,
             best_residual(r)
@@ -217,7 +217,7 @@ pub fn claim_block(input: &ReportInput, r: &ClaimResult) -> String {
     let _ = writeln!(
         s,
         "**{}**{} · kind: {} · form: {} · expected: {} · catalogue: `{}`\n",
-        r.location,
+        input.prose(&r.location),
         if labels.is_empty() {
             String::new()
         } else {
@@ -252,11 +252,7 @@ pub fn claim_block(input: &ReportInput, r: &ClaimResult) -> String {
         );
     }
     if let Some(n) = &r.note {
-        let _ = writeln!(
-            s,
-            "Note: {}\n",
-            n.split_whitespace().collect::<Vec<_>>().join(" ")
-        );
+        let _ = writeln!(s, "Note: {}\n", input.prose(n));
     }
     s.push_str(&corrections(input, r));
     if r.verdict == Verdict::Defined {
@@ -422,7 +418,7 @@ fn erratum(input: &ReportInput, r: &ClaimResult) -> String {
     let _ = writeln!(
         s,
         "## {} {}\n",
-        r.location,
+        input.prose(&r.location),
         r.labels
             .iter()
             .map(|l| format!("({l})"))
@@ -439,7 +435,7 @@ fn erratum(input: &ReportInput, r: &ClaimResult) -> String {
     );
     printed_block(&mut s, input, &r.printed);
     if let Some(n) = &r.note {
-        let _ = writeln!(s, "{}\n", one_line(n));
+        let _ = writeln!(s, "{}\n", input.prose(n));
     }
     if let Some(c) = &r.counterexample {
         let _ = writeln!(
@@ -468,11 +464,7 @@ fn erratum(input: &ReportInput, r: &ClaimResult) -> String {
         );
         printed_block(&mut s, input, &f.printed);
         if let Some(n) = &f.note {
-            let _ = writeln!(
-                s,
-                "{}\n",
-                n.split_whitespace().collect::<Vec<_>>().join(" ")
-            );
+            let _ = writeln!(s, "{}\n", input.prose(n));
         }
     }
     s
@@ -491,15 +483,11 @@ pub fn conventions(input: &ReportInput) -> String {
             s,
             "## {}\n\n**Choice.** {}\n\n**Why.** {}\n",
             c.name,
-            one_line(&c.choice),
-            one_line(&c.why)
+            input.prose(&c.choice),
+            input.prose(&c.why)
         );
     }
     s
-}
-
-fn one_line(t: &str) -> String {
-    t.split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
 /// Section title of a claim (for callers that need it).

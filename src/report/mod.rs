@@ -81,6 +81,12 @@ impl ReportInput<'_> {
     pub fn variables_of(&self, id: &str) -> &[variables::VarDef] {
         self.variables.get(id).map_or(&[], Vec::as_slice)
     }
+
+    /// The catalogue's prose (a location, a note) as Markdown, the paper's macros
+    /// expanded in its `$…$` math.
+    pub fn prose(&self, text: &str) -> String {
+        tex::inline_math(text, &self.macros)
+    }
 }
 
 /// Section stem of a claim, from its `file:line` position.

@@ -404,7 +404,7 @@ fn claim_entry(input: &ReportInput, s: &Structure, r: &ClaimResult, n: usize) ->
         stem_of(r),
         anchor(&r.id)
     );
-    let _ = writeln!(t, "{}\n", r.location);
+    let _ = writeln!(t, "{}\n", input.prose(&r.location));
     t.push_str(&printed_markdown(input, &r.printed));
     if r.verdict != Verdict::Defined {
         let _ = writeln!(
@@ -465,7 +465,7 @@ fn statement_section(input: &ReportInput, s: &Structure, env: &Environment) -> S
             "| <a id=\"{}\"></a>`{}` | {} | {} | {} | [{}](../{}.md#{}) |",
             anchor(&r.id),
             r.id,
-            r.location.replace('|', "\\|"),
+            input.prose(&r.location).replace('|', "\\|"),
             r.form,
             result_badge(r),
             best_residual(r),
@@ -498,11 +498,7 @@ fn statement_section(input: &ReportInput, s: &Structure, env: &Environment) -> S
             }
         );
         if let Some(n) = &r.note {
-            let _ = writeln!(
-                t,
-                "{}\n",
-                n.split_whitespace().collect::<Vec<_>>().join(" ")
-            );
+            let _ = writeln!(t, "{}\n", input.prose(n));
         }
         if let Some(c) = &r.counterexample {
             let _ = writeln!(
@@ -815,11 +811,10 @@ mod tests {
             sampled,
             text: text.into(),
             latex: latex.into(),
+            about: None,
         };
-        let vars = [
-            def("kK", false, "K(k)", "K(k)"),
-            def("x", true, "uniform(0, 1)", "-"),
-        ];
+        let mut kk = def("kK", false, "K(k)", "K(k)");
+        let vars = [kk.clone(), def("x", true, "uniform(0, 1)", "-")];
         let b = counterexample_block(&c, &vars);
         assert!(
             b.contains("- `kK` = `1.5`, where $\\mathrm{kK} = K(k)$\n"),
@@ -827,6 +822,13 @@ mod tests {
         );
         assert!(
             b.contains("- `x` = `0.25`, drawn as `uniform(0, 1)`\n"),
+            "{b}"
+        );
+        // with a description, the description first
+        kk.about = Some("$K$, the quarter period".into());
+        let b = counterexample_block(&c, &[kk]);
+        assert!(
+            b.contains("- `kK` = `1.5`, $K$, the quarter period, where $\\mathrm{kK} = K(k)$\n"),
             "{b}"
         );
     }

@@ -252,6 +252,21 @@ pub fn prose(src: &str, macros: &BTreeMap<String, String>) -> String {
     res.split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
+/// The catalogue's own prose (a claim's `location` and `note`, a variable's description)
+/// → Markdown: the paper's macros expanded inside its `$…$` math only (the text around
+/// it, code spans included, stays as written), whitespace collapsed to single spaces.
+pub fn inline_math(src: &str, macros: &BTreeMap<String, String>) -> String {
+    let mut res = String::new();
+    for (is_math, seg) in split_math(src) {
+        if is_math {
+            res.push_str(&expand_macros(&seg, macros));
+        } else {
+            res.push_str(&seg);
+        }
+    }
+    res.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -287,6 +302,13 @@ mod tests {
         assert_eq!(
             strip_raisebox("\\frac{\\raisebox{2mm}{$x+y$}}{z}"),
             "\\frac{x+y}{z}"
+        );
+    }
+    #[test]
+    fn inline_math_expands_macros_in_math_only() {
+        assert_eq!(
+            inline_math("the map\n  $\\wM = F(\\bM, h)$ of `\\bM`", &m()),
+            "the map $\\widehat{{\\bf M}} = F({\\bf M}, h)$ of `\\bM`"
         );
     }
     #[test]

@@ -20,6 +20,7 @@ mod ode_proofs;
 mod partials;
 mod perturbations;
 mod proof_hints;
+mod prose;
 mod rational_shifts;
 mod root_splits;
 mod series_orders;

@@ -229,6 +229,12 @@ fn shell(tb: &Table<'_>) -> Result<Claim, LoadError> {
             o.and_then(|o| o.domain.as_ref()),
         ),
         vars: inherit(vars, o.map(|o| &o.vars)).unwrap_or_default(),
+        // the descriptions go with the list they come from
+        var_about: inherit(
+            (!t.vars.is_empty()).then(|| super::fields::var_about(&t.vars)),
+            o.map(|o| &o.var_about),
+        )
+        .unwrap_or_default(),
         wheres: inherit(wheres, o.map(|o| &o.wheres)).unwrap_or_default(),
         lets,
         lets_origin,

@@ -134,6 +134,9 @@ pub struct Domain {
     pub name: String,
     /// Variables in order.
     pub vars: Vec<(String, PExpr)>,
+    /// What a variable is, where the catalogue says so (the third string of its `vars`
+    /// entry), by name.
+    pub about: BTreeMap<String, String>,
     /// Constraints.
     pub wheres: Vec<PExpr>,
 }
@@ -165,6 +168,8 @@ pub struct Claim {
     pub domain: Option<Located>,
     /// Extra sampled variables.
     pub vars: Vec<(String, PExpr)>,
+    /// What an extra sampled variable is, where the catalogue says so, by name.
+    pub var_about: BTreeMap<String, String>,
     /// Extra constraints.
     pub wheres: Vec<PExpr>,
     /// Let bindings.

@@ -6,6 +6,7 @@ use super::source::{LoadError, Origin, SourceFile};
 use crate::claims::ast::{Binding, ExprKind};
 use crate::claims::lexer::SyntaxError;
 use crate::claims::parser::{parse_bindings, parse_expr};
+use std::collections::BTreeMap;
 use std::sync::Arc;
 use toml::Spanned;
 
@@ -44,7 +45,8 @@ fn is_name(s: &str) -> bool {
     matches!(parse_expr(s).map(|e| e.kind), Ok(ExprKind::Name(_)))
 }
 
-/// `[["name", "sampler expression"], ...]`; `at` is the table, for an empty entry.
+/// `[["name", "sampler expression"], ...]`, an entry optionally with a third string that
+/// says what the variable is; `at` is the table, for an empty entry.
 pub fn var_list(
     file: &Arc<SourceFile>,
     vars: &[Vec<Spanned<String>>],
@@ -52,12 +54,12 @@ pub fn var_list(
 ) -> Result<Vec<(String, PExpr)>, LoadError> {
     let mut out = Vec::new();
     for v in vars {
-        if v.len() != 2 {
+        if v.len() != 2 && v.len() != 3 {
             let (a, b) = v.first().map_or(at, |x| (x.span().start, x.span().end));
             return Err(file.error_at(
                 a,
                 b,
-                "a variable must be [\"name\", \"sampler expression\"]",
+                "a variable must be [\"name\", \"sampler expression\"] or [\"name\", \"sampler expression\", \"what it is\"]",
             ));
         }
         let name = v[0].get_ref();
@@ -71,6 +73,17 @@ pub fn var_list(
         out.push((name.clone(), pexpr(file, &v[1])?));
     }
     Ok(out)
+}
+
+/// What the variables of a `vars` list are: the optional third string of each entry (the
+/// list itself is checked by [`var_list`]), by name.
+pub fn var_about(vars: &[Vec<Spanned<String>>]) -> BTreeMap<String, String> {
+    vars.iter()
+        .filter_map(|v| match v.as_slice() {
+            [name, _, about] => Some((name.get_ref().clone(), about.get_ref().clone())),
+            _ => None,
+        })
+        .collect()
 }
 
 /// A field holding one name (`wrt`, `var`).

@@ -273,6 +273,7 @@ fn domain(file: &Arc<SourceFile>, name: &str, d: &Spanned<DomainToml>) -> Result
     Ok(Dom {
         name: name.to_string(),
         vars: var_list(file, &d.get_ref().vars, sp)?,
+        about: fields::var_about(&d.get_ref().vars),
         wheres: pexprs(file, &d.get_ref().wheres)?,
     })
 }
