@@ -39,7 +39,8 @@ def definitions(src):
     domain = next((v for k, v in src.items() if k.startswith("domain.")), None)
     for table in (domain or {}, {"vars": src.get("claim.vars", [])}):
         for pair in table.get("vars", []):
-            if isinstance(pair, list) and len(pair) == 2:
+            # [name, sampler] or [name, sampler, description]
+            if isinstance(pair, list) and len(pair) in (2, 3):
                 out.append((pair[0], pair[1]))
     return out
 

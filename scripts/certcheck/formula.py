@@ -11,13 +11,19 @@ class FormulaMismatch(Exception):
     pass
 
 
+def var_pairs(src):
+    """(name, sampler) of the domain's and the claim's sampled variables (an entry may
+    carry a third string, the variable's description)."""
+    domain = next((v for k, v in src.items() if k.startswith("domain.")), {})
+    return [(e[0], e[1]) for e in list(domain.get("vars", [])) + list(src.get("claim.vars", []))]
+
+
 def environment(cert, src, charts=True):
     """The claim's sampled variables as the certificate's symbols: a scalar by its name,
     a vector M as (M1, M2, M3).  A variable the certificate does not declare as an
     indeterminate is left out (using it is then Unsupported)."""
     env = {}
-    domain = next((v for k, v in src.items() if k.startswith("domain.")), {})
-    for name, sampler in list(domain.get("vars", [])) + list(src.get("claim.vars", [])):
+    for name, sampler in var_pairs(src):
         if "cplx(" in sampler and not complex_free(cert, name):
             continue  # a complex variable where the derivation may use that it is real
         comps = [f"{name}{j}" for j in (1, 2, 3)] if sampler.strip().startswith("vec(") else [name]
@@ -44,8 +50,7 @@ def own_symbols(cert, src, env):
     value the `let` line gives.  Where a check used that the symbol is real, its
     definition must be real by construction (real sampled variables and earlier such
     names, numbers, + - * /)."""
-    real = {n for n, smp in (list(next((v for k, v in src.items() if k.startswith("domain.")), {}).get("vars", []))
-                             + list(src.get("claim.vars", []))) if "cplx(" not in smp and "sign(" not in smp}
+    real = {n for n, smp in var_pairs(src) if "cplx(" not in smp and "sign(" not in smp}
     own = set()
     texts = " ".join(str(src.get(f"claim.{k}") or "") for k in ("let", "lhs", "rhs", "expr"))
     if src.get("claim.kind") != "identity" or re.search(r"\b(d|grad)\(", texts):
@@ -75,9 +80,7 @@ def real_by_construction(tree, real):
 
 def complex_bound(cert, src):
     """Has environment() bound a variable the catalogue samples as complex?"""
-    domain = next((v for k, v in src.items() if k.startswith("domain.")), {})
-    pairs = list(domain.get("vars", [])) + list(src.get("claim.vars", []))
-    return any("cplx(" in s and complex_free(cert, n) for n, s in pairs)
+    return any("cplx(" in s and complex_free(cert, n) for n, s in var_pairs(src))
 
 
 def interleave_zero(cert, comps):
@@ -111,8 +114,7 @@ def coordinate_binding(cert, src):
     the variables held fixed are the claim's."""
     if not getattr(cert, "param_dvars", None):
         return
-    domain = next((v for k, v in src.items() if k.startswith("domain.")), {})
-    names = {n for n, _ in list(domain.get("vars", [])) + list(src.get("claim.vars", []))}
+    names = {n for n, _ in var_pairs(src)}
     bound = chart_variables(cert, src, {})
     for name in cert.coords:
         if name not in names or name not in bound:

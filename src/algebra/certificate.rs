@@ -35,6 +35,11 @@
 //! assume branch step_gamma1 "…"    # a fact the derivation rests on (branch, lemma, hypothesis)
 //! ```
 //!
+//! A proof by power series (an asymptotic claim, or an existence claim for small `h`)
+//! writes, instead of `claim` lines, its `series`, `sseries`, `schart`, `sclaim` and
+//! `ssolution` lines (module `series_trace`): every operation that made its
+//! series, which the checker redoes from the leaves.
+//!
 //! After the header and `# claim:` title, `claims N` states the number of `claim` lines.
 //! `eulertop prove --certificate` adds the claim's `source` and `premise` lines
 //! (`crate::cli::cert_source`), which bind the derivation to the catalogue.
