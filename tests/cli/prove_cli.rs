@@ -68,8 +68,8 @@ fn bad_ids_and_kinds_are_one_line_errors_with_status_2() {
             "no claim id, environment or label 'no.such.claim'",
         ),
         (
-            vec!["prove", "sec7.delta12-asym.g1.up"],
-            "only identities and independence claims are proved symbolically",
+            vec!["prove", "sec8.lemma2.obtuse"],
+            "only identities, independence, asymptotic and existence claims are proved symbolically",
         ),
     ] {
         let (code, out, err) = run(&args);
@@ -78,6 +78,25 @@ fn bad_ids_and_kinds_are_one_line_errors_with_status_2() {
         assert_eq!(err.trim_end().lines().count(), 1, "{err}");
         assert!(err.contains(expected), "{err}");
     }
+}
+
+#[test]
+fn an_asymptotic_claim_is_proved_by_power_series_with_a_certificate() {
+    let path = std::env::temp_dir().join(format!("eulertop-series-{}.cert", std::process::id()));
+    let p = path.to_str().expect("utf-8 temp path");
+    let (code, out, err) = run(&["prove", "sec7.delta12-asym.g1.up", "--certificate", p]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.contains("proved by exact power series"), "{out}");
+    let cert = std::fs::read_to_string(&path).expect("certificate written");
+    let _ = std::fs::remove_file(&path);
+    // every series operation is recorded, the phase step's chart and the claimed coefficients
+    assert!(
+        cert.contains("\nseries h step 1 order 2 precision "),
+        "{cert}"
+    );
+    assert!(cert.contains("\nschart delta1("), "{cert}");
+    assert!(cert.contains("\nsclaim s"), "{cert}");
+    assert!(!cert.contains("\nclaim t"), "{cert}");
 }
 
 #[test]
