@@ -165,8 +165,7 @@ def chart_checks(cert, catalogue):
     equation fails."""
     done = skipped = 0
     for name, entries in cert.charts.items():
-        claims = [c for _, c in catalogue.claims.values()
-                  if str(c.get("construction", "")).startswith(f"{name} ") and c.get("kind") == "identity"]
+        claims = construction_claims(catalogue, name)
         for argv, _ in entries:
             for c in claims:
                 try:
@@ -183,15 +182,26 @@ def chart_checks(cert, catalogue):
     return done, skipped
 
 
-def chart_claim(cert, catalogue, name, argv, claim):
-    """True when claim's lhs = rhs holds with the map's arguments set to the chart's."""
+def construction_claims(catalogue, name):
+    """The identities of the catalogue whose `construction` names the map: its equations."""
+    return [c for _, c in catalogue.claims.values()
+            if str(c.get("construction", "")).startswith(f"{name} ") and c.get("kind") == "identity"]
+
+
+def map_parameters(name, claim, n):
+    """The bare variables at which the claim calls the map `name` with n arguments;
+    Unsupported when it calls it at expressions."""
     text = (claim.get("let") or "") + "\n" + claim["lhs"] + "\n" + claim["rhs"]
     m = re.search(rf"\b{re.escape(name)}\(([^()]*)\)", text)
-    if m is None:
+    params = [p.strip() for p in m.group(1).split(",")] if m else []
+    if m is None or len(params) != n or not all(re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", p) for p in params):
         raise Unsupported(f"{claim['id']} calls {name} at expressions")
-    params = [p.strip() for p in m.group(1).split(",")]
-    if len(params) != len(argv) or not all(re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", p) for p in params):
-        raise Unsupported(f"{claim['id']} calls {name} at expressions")
+    return params
+
+
+def chart_claim(cert, catalogue, name, argv, claim):
+    """True when claim's lhs = rhs holds with the map's arguments set to the chart's."""
+    params = map_parameters(name, claim, len(argv))
     domain = f"domain.{claim.get('domain')}"
     env = environment(cert, {domain: catalogue.tables.get(domain, {}), "claim.vars": claim.get("vars", [])},
                       charts=False)
@@ -309,7 +319,10 @@ def existence_binding(cert, src, catalogue=None):
         for j in range(len(x0)):
             moved = [ev.c.add(x, t) if i == j else x for i, x in enumerate(x0)]
             cols.append([r.coef(1, cert.zero) for r in residuals(ev.c.zero, moved)[1]])
-        det = determinant([[cols[j][i] for j in range(len(x0))] for i in range(len(x0))], cert)
+        jac = [[cols[j][i] for j in range(len(x0))] for i in range(len(x0))]
+        if len(jac) not in (1, 3):
+            raise Unsupported(f"a system of {len(jac)} unknowns")
+        det = jac[0][0] if len(jac) == 1 else ev.base.det(jac)
         if ev.sign(det) == 0:
             raise FormulaMismatch("the Jacobian at h = 0 is singular")
         in_set = src.get("claim.in")
@@ -318,20 +331,6 @@ def existence_binding(cert, src, catalogue=None):
     except Unsupported as e:
         raise FormulaMismatch(f"the existence proof is not evaluated here: {e}")
     return "evaluated"
-
-
-def determinant(m, cert):
-    """The determinant of a 1x1 or 3x3 matrix of field values."""
-    if len(m) == 1:
-        return m[0][0]
-    if len(m) != 3:
-        raise Unsupported(f"a system of {len(m)} unknowns")
-    acc = cert.zero
-    for j in range(3):
-        minor = cert.add(cert.mul(m[1][(j + 1) % 3], m[2][(j + 2) % 3]), cert.mul(m[1][(j + 2) % 3], m[2][(j + 1) % 3]),
-                         -1)
-        acc = cert.add(acc, cert.mul(m[0][j], minor))
-    return acc
 
 
 def series_components(cert, src):

@@ -236,21 +236,15 @@ def chart_residuals(trace, catalogue, environment_of):
     into the catalogue's equations of each map (the claims whose `construction` names
     it, calling it at bare variables): every known coefficient of lhs - rhs must be 0;
     an equation that fails raises ValueError with its id."""
-    import re
     from .exprlang import Parser
+    from .formula import construction_claims, map_parameters
     done = skipped = 0
     for name, entries in trace.charts.items():
-        claims = [c for _, c in catalogue.claims.values()
-                  if str(c.get("construction", "")).startswith(f"{name} ") and c.get("kind") == "identity"]
+        claims = construction_claims(catalogue, name)
         for argv, _ in entries:
             for c in claims:
-                text = (c.get("let") or "") + "\n" + c["lhs"] + "\n" + c["rhs"]
-                m = re.search(rf"\b{re.escape(name)}\(([^()]*)\)", text)
-                params = [p.strip() for p in m.group(1).split(",")] if m else []
-                if not m or len(params) != len(argv) or not all(re.fullmatch(r"[A-Za-z_]\w*", p) for p in params):
-                    skipped += 1
-                    continue
                 try:
+                    params = map_parameters(name, c, len(argv))
                     ev = SeriesEvaluator(trace, [t for _, t in catalogue.defines.values()])
                     env = environment(trace, environment_of(c))
                     env.update({p: (a[0] if len(a) == 1 else ("vec", tuple(a))) for p, a in zip(params, argv)})
