@@ -86,6 +86,9 @@ const MAX_TERMS: usize = 400;
 /// The most polynomials one sign test of rules 1–3 examines.
 const MAX_TESTS: usize = 48;
 
+/// The largest polynomial, in terms, whose sign rule 2b decides.
+const MAX_RULE_2B_TERMS: usize = 64;
+
 /// The largest polynomial, in terms, that rule 2b factors.
 const MAX_FACTOR_TERMS: usize = 120;
 
@@ -216,12 +219,13 @@ impl Ring {
             (Some(sa), Some(sb)) if sa == sb => Some(sa),
             (Some(sa), Some(_)) => Some(sa * self.tower_sign_within(par, &q(), depth + 1, budget)?),
             // rule 2b: one side of known sign that wins, the other of unknown sign
-            (Some(sa), None) => {
+            (Some(sa), None) if p.len() <= MAX_RULE_2B_TERMS => {
                 (self.factored_sign(par, &q(), depth + 1, budget)? == 1).then_some(sa)
             }
-            (None, Some(sb)) => {
+            (None, Some(sb)) if p.len() <= MAX_RULE_2B_TERMS => {
                 (self.factored_sign(par, &q(), depth + 1, budget)? == -1).then_some(sb)
             }
+            (Some(_), None) | (None, Some(_)) => None,
             (None, None) => None,
         }
     }

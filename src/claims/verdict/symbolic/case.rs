@@ -35,7 +35,7 @@ pub(super) fn prove_case(
         points: points.len(),
         certificate,
         base_hints,
-        positivity: on_part(signs, region),
+        positivity: signs.positivity.clone(),
         hypotheses: region.signs.clone(),
         sign_folds: region.folds.clone(),
         ..RingOptions::default()
@@ -67,22 +67,6 @@ pub(super) fn prove_case(
         pairs.extend(checks.into_iter().map(|c| (c, zero.clone())));
         Ok(pairs)
     })
-}
-
-/// The domain's parametrization with, where the part's conditions fix the signs of
-/// indeterminates, the parametrization of the part (tried after the domain's).
-fn on_part(
-    signs: &Signs,
-    region: &Region,
-) -> Option<std::sync::Arc<crate::algebra::positivity::Parametrization>> {
-    let par = signs.positivity.clone()?;
-    let fixed: Vec<(String, i32)> = (region.signs.iter())
-        .filter_map(|(h, s)| h.indeterminate_sign(*s))
-        .collect();
-    if fixed.is_empty() {
-        return Some(par);
-    }
-    Some(par.on_part(&fixed).map_or(par, std::sync::Arc::new))
 }
 
 /// How the proof decides signs: the domain's parametrization.
