@@ -476,9 +476,6 @@ impl<'r, T: Backend> Evaluator<'r, T> {
         if let Some(v) = self.extremum_comparison(op, a, b, sp)? {
             return Ok(v);
         }
-        if let Some(v) = self.quotient_comparison(op, a, b)? {
-            return Ok(v);
-        }
         let x = self.eval(a)?;
         let y = self.eval(b)?;
         match (x, y) {
@@ -520,118 +517,6 @@ impl<'r, T: Backend> Evaluator<'r, T> {
             }
         }
         Ok(Some(Value::Bool(all)))
-    }
-
-    /// A comparison `p/q ∘ y` (`∘` one of `<`, `<=`, `>`, `>=`) decided, for a backend
-    /// that decides signs by proof, from the signs of `p − y·q` and of `q`: the sign of
-    /// `p/q − y` is their product.  The same truth value as the comparison as written,
-    /// without forming the quotient (whose normal form has its denominator made
-    /// rational, which may hide the signs of the parts).  `None` when the backend does
-    /// not decide signs, `a` is not a quotient, or either sign is not decided (the
-    /// comparison is then evaluated as written).
-    fn quotient_comparison(
-        &self,
-        op: BinOp,
-        a: &Expr,
-        b: &Expr,
-    ) -> Result<Option<Value<T>>, EvalError> {
-        let comparison = matches!(op, BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge);
-        let ExprKind::Binary(BinOp::Div, p, q) = &a.kind else {
-            return Ok(None);
-        };
-        if !T::DECIDES_SIGNS || !comparison {
-            return Ok(None);
-        }
-        let q_expr: &Expr = q;
-        let (Value::Real(p), Value::Real(q), Value::Real(y)) =
-            (self.eval(p)?, self.eval(q)?, self.eval(b)?)
-        else {
-            return Ok(None);
-        };
-        let sq = match q.proved_sign() {
-            Some(s) => s,
-            None if self.squares_sign(q_expr, 0)? == Some(true) => 1,
-            None => return Ok(None),
-        };
-        if sq == 0 {
-            return Ok(None);
-        }
-        let Some(su) = (p - y * q).proved_sign() else {
-            return Ok(None);
-        };
-        let s = su * sq;
-        Ok(Some(Value::Bool(match op {
-            BinOp::Lt => s < 0,
-            BinOp::Le => s <= 0,
-            BinOp::Gt => s > 0,
-            _ => s >= 0,
-        })))
-    }
-
-    /// The sign of a real expression as a sum of squares, for a backend that decides
-    /// signs by proof: `Some(true)` where it is proved positive, `Some(false)` where it
-    /// is proved not negative, `None` otherwise.  A sum is positive where its terms are
-    /// not negative and one is positive; `x^2` is positive where the sign of `x` is
-    /// proved nonzero, and not negative where `x` is real by its form; a catalogue
-    /// function is looked into, its parameters bound to the arguments' values; any
-    /// other expression by its proved sign.
-    fn squares_sign(&self, e: &Expr, depth: usize) -> Result<Option<bool>, EvalError> {
-        const MAX_DEPTH: usize = 4;
-        match &e.kind {
-            ExprKind::Binary(BinOp::Add, a, b) => {
-                let (Some(x), Some(y)) =
-                    (self.squares_sign(a, depth)?, self.squares_sign(b, depth)?)
-                else {
-                    return Ok(None);
-                };
-                Ok(Some(x || y))
-            }
-            ExprKind::Binary(BinOp::Pow, a, n) if matches!(&n.kind, ExprKind::Num(k) if k == "2") =>
-            {
-                let Value::Real(x) = self.eval(a)? else {
-                    return Ok(None);
-                };
-                Ok(match x.proved_sign() {
-                    Some(s) => Some(s != 0),
-                    None => x.real_by_form().then_some(false),
-                })
-            }
-            ExprKind::Call(name, args) if depth < MAX_DEPTH && self.user_fn(name).is_some() => {
-                let Some(f) = self.user_fn(name) else {
-                    return Ok(None);
-                };
-                if args.len() != f.params.len() || self.depth >= MAX_CALL_DEPTH {
-                    return Ok(None);
-                }
-                let mut inner = self.child(self.like.clone(), self.depth + 1);
-                for (p, a) in f.params.iter().zip(args) {
-                    inner.bind(p, self.eval(a)?);
-                }
-                inner.squares_sign(&f.def.body, depth + 1)
-            }
-            _ => {
-                let Value::Real(x) = self.eval(e)? else {
-                    return Ok(None);
-                };
-                Ok(x.proved_sign().and_then(|s| match s {
-                    1 => Some(true),
-                    0 => Some(false),
-                    _ => None,
-                }))
-            }
-        }
-    }
-
-    /// The catalogue function (or function of a `let`) that a call of `name` evaluates,
-    /// in the order [`Evaluator::call`] looks: `None` for a built-in or host function.
-    fn user_fn(&self, name: &str) -> Option<Arc<UserFn>> {
-        if let Some(f) = self.local_fns.iter().rev().find(|f| f.def.name == name) {
-            return Some(f.clone());
-        }
-        if Builtin::from_name(name).is_some() || self.reg.ext(name).is_some() {
-            return None;
-        }
-        self.reg.user(name).cloned()
     }
 
     /// Is `name` a function of the catalogue or of a `let` (which a built-in's name
