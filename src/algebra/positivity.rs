@@ -157,22 +157,6 @@ impl Sym {
 }
 
 impl Sym {
-    /// Is the value real on the whole domain by its form: a rational function of
-    /// indeterminates that the parametrization of the domain gives as real parameters?
-    pub(crate) fn real_by_form(&self) -> bool {
-        let par = self.ring.domain();
-        let max_roots = self.ring.inner.opts.max_roots;
-        let st = self.ring.state();
-        let real = |p: &Poly| {
-            p.used_vars().iter().all(|&i| {
-                (i.checked_sub(max_roots).and_then(|j| st.vars.get(j))).is_some_and(|v| {
-                    matches!(v.kind, VarKind::Indeterminate) && par.image(&v.name).is_some()
-                })
-            })
-        };
-        real(&self.val.num) && real(&self.val.den)
-    }
-
     /// The sign by one parametrization: the plain test, then the rules of module
     /// `decide` through the square roots.
     fn sign_with(&self, par: &Parametrization) -> Option<i32> {

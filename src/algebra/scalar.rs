@@ -213,13 +213,6 @@ impl Scalar for Sym {
 impl Real for Sym {
     const FIXED: bool = false;
     const BY_RULE: bool = true;
-    const DECIDES_SIGNS: bool = true;
-    fn proved_sign(&self) -> Option<i32> {
-        self.decided_sign()
-    }
-    fn real_by_form(&self) -> bool {
-        Sym::real_by_form(self)
-    }
     const DEFERS_DOMAIN_CHECKS: bool = true;
     fn failure(&self) -> Option<String> {
         self.ring.error().map(|e| e.to_string())

@@ -129,16 +129,6 @@ pub trait Num: Scalar + PartialOrd {
     fn real_fn(&self, f: RealFn) -> Result<Self, String>;
     /// Is every value an enclosure ([`Real::ENCLOSES`])?
     const ENCLOSES: bool = false;
-    /// Does the backend decide signs by proof ([`Real::DECIDES_SIGNS`])?
-    const DECIDES_SIGNS: bool = false;
-    /// The sign where a proof decides it ([`Real::proved_sign`]).
-    fn proved_sign(&self) -> Option<i32> {
-        None
-    }
-    /// Is the value real by its form ([`Real::real_by_form`])?
-    fn real_by_form(&self) -> bool {
-        false
-    }
     /// The value as a ball ([`Real::as_ball`]).
     fn as_ball(&self) -> Option<&crate::numbers::Ball> {
         None
@@ -266,13 +256,6 @@ impl<R: Real> Num for R {
     const EXACT: bool = false;
     const ARITHMETIC: &'static str = "floating-point arithmetic";
     const ENCLOSES: bool = <R as Real>::ENCLOSES;
-    const DECIDES_SIGNS: bool = <R as Real>::DECIDES_SIGNS;
-    fn proved_sign(&self) -> Option<i32> {
-        Real::proved_sign(self)
-    }
-    fn real_by_form(&self) -> bool {
-        Real::real_by_form(self)
-    }
     fn as_ball(&self) -> Option<&crate::numbers::Ball> {
         Real::as_ball(self)
     }

@@ -309,21 +309,6 @@ pub trait Real: Scalar + PartialOrd {
     /// assert!(<f64 as Real>::PLAIN_F64 && !<Dual<f64> as Real>::PLAIN_F64);
     /// ```
     const PLAIN_F64: bool = false;
-    /// Does this type decide signs by proof on a domain (a symbolic scalar), so that a
-    /// comparison may be decided through [`Real::proved_sign`]?  `false` for every
-    /// numeric type.
-    const DECIDES_SIGNS: bool = false;
-    /// The sign (−1, 0, +1) of the value where a proof decides it, without recording a
-    /// failure where it does not; `None` for every numeric type.
-    fn proved_sign(&self) -> Option<i32> {
-        None
-    }
-    /// Is the value real on the whole domain by its form (so that its square is not
-    /// negative), for a type that decides signs by proof?  `false` for every numeric
-    /// type.
-    fn real_by_form(&self) -> bool {
-        false
-    }
     /// The value as an MPFR number when the type is one (`rug::Float`), so that
     /// algorithms can take in-place MPFR paths and share multi-precision data between
     /// calls; `None` for every other type.
