@@ -86,6 +86,12 @@ const MAX_TERMS: usize = 400;
 /// The most polynomials one sign test of rules 1–3 examines.
 const MAX_TESTS: usize = 48;
 
+/// The largest polynomial, in terms, whose sign rule 2b decides.
+const MAX_RULE_2B_TERMS: usize = 64;
+
+/// The largest polynomial, in terms, that rule 2b factors.
+const MAX_FACTOR_TERMS: usize = 120;
+
 /// The most terms of a value and a hypothesis whose products `ratio_sign` forms.
 const MAX_PRODUCT_TERMS: usize = 160;
 
@@ -206,13 +212,63 @@ impl Ring {
         if a.is_zero() {
             return self.tower_sign_within(par, &b, depth + 1, budget);
         }
-        let sa = self.tower_sign_within(par, &a, depth + 1, budget)?;
-        let sb = self.tower_sign_within(par, &b, depth + 1, budget)?;
-        if sa == sb {
-            return Some(sa);
+        let sa = self.tower_sign_within(par, &a, depth + 1, budget);
+        let sb = self.tower_sign_within(par, &b, depth + 1, budget);
+        let q = || inner.reduce(a.mul(&a).sub(&b.mul(&b).mul(&radicand)));
+        match (sa, sb) {
+            (Some(sa), Some(sb)) if sa == sb => Some(sa),
+            (Some(sa), Some(_)) => Some(sa * self.tower_sign_within(par, &q(), depth + 1, budget)?),
+            // rule 2b: one side of known sign that wins, the other of unknown sign
+            (Some(sa), None) if p.len() <= MAX_RULE_2B_TERMS => {
+                (self.factored_sign(par, &q(), depth + 1, budget)? == 1).then_some(sa)
+            }
+            (None, Some(sb)) if p.len() <= MAX_RULE_2B_TERMS => {
+                (self.factored_sign(par, &q(), depth + 1, budget)? == -1).then_some(sb)
+            }
+            (Some(_), None) | (None, Some(_)) => None,
+            (None, None) => None,
         }
-        let q = inner.reduce(a.mul(&a).sub(&b.mul(&b).mul(&radicand)));
-        Some(sa * self.tower_sign_within(par, &q, depth + 1, budget)?)
+    }
+
+    /// The sign of `q = a² − b²·r²` in rule 2b: by rules 1–3, else as the product of
+    /// the signs of its irreducible factors, each proved by rules 1–3 with the
+    /// parametrization or with its alternative (the box of the sampled intervals).  Each
+    /// factor's sign then holds on the sampled domain, which both parametrizations
+    /// cover, and so does the product's.  Not recorded in certificates (whose checker
+    /// has rule 2 only): a proof that uses it is marked uncertified.
+    fn factored_sign(
+        &self,
+        par: &Parametrization,
+        q: &Poly,
+        depth: usize,
+        budget: &std::cell::Cell<usize>,
+    ) -> Option<i32> {
+        let s = match self.tower_sign_within(par, q, depth, budget) {
+            Some(s) => s,
+            None => {
+                if q.len() > MAX_FACTOR_TERMS {
+                    return None;
+                }
+                let f = q.factor().ok()?;
+                let mut s = f.constant.cmp0() as i32;
+                for (g, k) in &f.factors {
+                    // a factor to an even power: g² > 0 suffices (g ≠ 0)
+                    let g = if k % 2 == 1 { g.clone() } else { g.mul(g) };
+                    let sg = self.tower_sign_within(par, &g, depth, budget).or_else(|| {
+                        let alt = par.alternative()?;
+                        self.tower_sign_within(alt, &g, depth, budget)
+                    })?;
+                    s *= sg;
+                }
+                s
+            }
+        };
+        if s != 0 && self.certifying() {
+            self.mark_uncertified(
+                "a sign of a + b·r decided by the side that wins (a² − b²·r² of proved sign) where the other side's sign is not proved",
+            );
+        }
+        (s != 0).then_some(s)
     }
 
     /// Rule 3: the sign of `a + b·σ` for the sign symbol of root `i`, where `a = 0`, `σ`

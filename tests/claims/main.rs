@@ -10,6 +10,7 @@ mod claims_engine;
 mod conditions;
 mod coverage;
 mod decided_branches;
+mod dominant_roots;
 mod fuzz_claims;
 mod implicit_proofs;
 mod intervals;
