@@ -226,7 +226,7 @@ impl Parametrization {
         }
     }
 
-    /// This parametrization with, as its part (see [`Parametrization::part`]), the same
+    /// This parametrization with, as its part (`Parametrization::part`), the same
     /// images where each indeterminate of `signs` (by name, with its sign on a part of
     /// the domain) that is a parameter of either sign of its own becomes one of that
     /// sign: `μ ≠ 0` becomes `±t`, and in the alternative (the box) `(lo + hi·t)/(1 + t)`
