@@ -54,7 +54,8 @@ def without(text, pattern):
 
 
 def changed_catalogue(tmp, claim_ids=None):
-    """A copy of the catalogue with the right side (or expr) of the claims changed."""
+    """A copy of the catalogue with the right side (or expr, or an existence claim's first
+    equation) of the claims changed."""
     cat = os.path.join(tempfile.mkdtemp(dir=tmp), "identities")
     shutil.copytree(os.path.join(ROOT, "identities"), cat)
     for f in os.listdir(cat):
@@ -71,6 +72,10 @@ def changed_catalogue(tmp, claim_ids=None):
             m = re.match(r"""(rhs|expr) = ("|'|''')(.*)$""", line)
             if m and (claim_ids is None or cur in claim_ids):
                 line = f"{m.group(1)} = {m.group(2)}2 * {m.group(3)}"
+            # an existence claim's first equation
+            m = re.match(r"""equations = \[("|')(.*)$""", line)
+            if m and (claim_ids is None or cur in claim_ids):
+                line = f"equations = [{m.group(1)}2 * {m.group(2)}"
             out.append(line)
         with open(path, "w", encoding="utf-8") as fh:
             fh.write("\n".join(out) + "\n")
