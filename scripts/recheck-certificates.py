@@ -154,7 +154,7 @@ from sympy.polys.rings import ring  # noqa: E402
 assert GROUND_TYPES != "flint", "the recheck must not run on FLINT"
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from certcheck import binding, domain, formula, hypothesis, series  # noqa: E402
+from certcheck import binding, domain, formula, hypothesis, series, witness  # noqa: E402
 
 
 class CheckError(Exception):
@@ -353,6 +353,10 @@ class Cert:
         self.part_conditions = []  # (value, sign) of each `part` line: this part of the domain
         self.coords = {}  # claim variable -> its value in the chart's parameters (`coord`)
         self.param_dvars = []  # (x, param) of every stated derivative of a chart parameter
+        self.sides = 0  # `side` lines: the components of a refutation
+        self.witness = None  # the component a refutation shows nonzero (`witness` line)
+        self.at = {"exact": {}, "approx": {}}  # the `at` lines: the witness point
+        self.refuted = None  # what the witness certified
 
     # ---- the ring ----------------------------------------------------------------
     def declare(self, text):
@@ -1205,6 +1209,22 @@ class Cert:
             self.need(self.eq(self.vals[a], self.vals[b]), f"claim {a} = {b} fails")
             self.claim_pairs.append((a, b))
             return 1
+        elif word == "side":
+            a, b = rest.split()
+            self.need(a in self.vals and b in self.vals, f"side {rest[:40]}: undefined node")
+            self.claim_pairs.append((a, b))
+            self.sides += 1
+            return 1
+        elif word == "witness":
+            m = re.fullmatch(r"component (\d+)", rest.strip())
+            self.need(m is not None and self.witness is None, f"bad witness line {rest[:40]}")
+            self.witness = int(m.group(1))
+        elif word == "at":
+            m = re.fullmatch(r"([A-Za-z_][A-Za-z0-9_]*) ([=~]) (\S+) (\S+)", rest.strip())
+            self.need(m is not None, f"bad at line {rest[:40]}")
+            table = self.at["exact" if m.group(2) == "=" else "approx"]
+            self.need(m.group(1) not in table, f"two values for {m.group(1)}")
+            table[m.group(1)] = (m.group(3), m.group(4))
         elif word == "claims":
             self.need(rest.strip().isdigit() and self.expected_claims is None, f"bad claims line {rest[:40]}")
             self.expected_claims = int(rest)
@@ -1455,6 +1475,15 @@ class Cert:
                       f"{claims} claim line(s) where the certificate announces {self.expected_claims}")
         self.check_branches()
         self.check_coordinates()
+        if self.sides or self.witness is not None:
+            self.need(self.sides == claims and self.witness is not None,
+                      "a refutation needs `side` lines only, and a `witness` line")
+            try:
+                self.refuted = witness.check(self, self.witness, self.at)
+            except witness.WitnessError as e:
+                raise CheckError(f"witness: {e}")
+        else:
+            self.need(not self.at["exact"] and not self.at["approx"], "a witness point without a witness line")
         return claims
 
     def check_coordinates(self):
@@ -1689,6 +1718,7 @@ class Result:
         self.claim, self.premises, self.lemmas, self.binding = None, [], [], "unbound"
         self.charts = [0, 0]  # equations of implicit maps verified at the chart, not reached
         self.cases = []  # the condition of each part of a proof by parts ('' for a whole proof)
+        self.refuted = None  # what a refutation's witness certified
 
 
 def check_premises(text, claim, catalogue, assumes):
@@ -1760,6 +1790,7 @@ def check_text(name, text, catalogue=None):
             checked += cert.checked
             assumes += cert.assumes
             res.cases.append(" and ".join(cert.conditions))
+            res.refuted = res.refuted or cert.refuted
             conditions.append(cert.conditions)
             if catalogue is not None:
                 domain.check(cert, src)
@@ -1767,7 +1798,7 @@ def check_text(name, text, catalogue=None):
                 charts = [a + b for a, b in zip(charts, cert.chart_counts)]
             used.update(hypothesis.check(cert, src, catalogue, claim, binding.premises(text)))
         cases = [[tuple(c.rsplit(" ", 2)[:2]) for c in cert_conditions] for cert_conditions in conditions]
-        if not covers(cases):
+        if res.refuted is None and not covers(cases):
             raise CheckError("the parts of the domain do not cover it: each split value needs a part for "
                              "each of its signs (" + "; ".join(c or "the rest" for c in res.cases) + ")")
         res.premises = [(k, s, f"{used[s]['when']}: {st} (paper: {used[s]['paper']})" if s in used else st)
@@ -1786,7 +1817,8 @@ def check_text(name, text, catalogue=None):
     if sum(res.charts):
         chart_note = f"; charts: {res.charts[0]} equation(s) of the catalogue verified" + (
             f", {res.charts[1]} not reached" if res.charts[1] else "")
-    res.ok, res.why = True, f"{claims} claim(s), {checked} equalities checked; formulas: {res.binding}{chart_note}"
+    what = f"{claims} claim(s)" if res.refuted is None else f"REFUTED, {res.refuted}; {claims} side(s)"
+    res.ok, res.why = True, f"{what}, {checked} equalities checked; formulas: {res.binding}{chart_note}"
     return res
 
 
@@ -1947,6 +1979,9 @@ def main(argv):
     with_chart = [r for r in results if r.ok and sum(r.charts)]
     if with_chart:
         how += f"; {sum(r.charts[0] > 0 for r in with_chart)} of {len(with_chart)} charts verified"
+    refuted = sum(r.ok and r.refuted is not None for r in results)
+    if refuted:
+        how += f"; {refuted} of them refutations, certified by a witness point"
     print(f"{n - bad} of {n} certificates recheck ({how}; {time.perf_counter() - start:.1f} s)")
     return 1 if bad else 0
 

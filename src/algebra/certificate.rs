@@ -31,6 +31,10 @@
 //! inverse v k=(…) s=(…) c=(…) d=(…) z=Z_v   # an inverse of sn, cn, dn: sn v = s, …
 //! coord h = t17                   # a claim's variable a chart replaces: its value there
 //! claim t20 = t31
+//! side t20 t31                     # a refutation: the sides of a component, not claimed equal
+//! witness component 1              # … and the component that differs at the point:
+//! at A = 3*2^-2                    # an indeterminate's or sn symbol's exact value there
+//! at r_1 ~ 0.70710678 0            # a root's value there, to pick its branch
 //! part "M3" > 0                    # a proof by parts: the condition of this part
 //! assume branch step_gamma1 "…"    # a fact the derivation rests on (branch, lemma, hypothesis)
 //! ```
@@ -58,6 +62,16 @@ use super::val::Val;
 use std::collections::HashMap;
 use std::fmt::Write;
 use std::sync::Arc;
+
+/// Where a refutation's `lhs − rhs` is nonzero: the component (from 0) and the ring's
+/// domain point (from 0).
+#[derive(Clone, Copy, Debug)]
+pub struct Refutation {
+    /// The component whose difference is nonzero.
+    pub component: usize,
+    /// The domain point (an index into the ring's points).
+    pub point: usize,
+}
 
 /// A string as a JSON literal (quoted, escaped), so that a statement is one line.
 fn json(s: &str) -> String {
@@ -216,8 +230,15 @@ fn series_lines(em: &mut Emitter<'_>, trace: &super::series_trace::SeriesTrace) 
 
 impl Ring {
     /// The certificate of `lhs = rhs` (see the module doc), or `None` when the ring does
-    /// not record derivations.
-    pub fn certificate(&self, pairs: &[(Sym, Sym)], title: &str) -> Option<String> {
+    /// not record derivations.  With `refute`, the certificate of a refutation instead:
+    /// the pairs as `side` lines, and the point at which the component's `lhs − rhs` is
+    /// nonzero ([`Refutation`], module `witness`).
+    pub fn certificate(
+        &self,
+        pairs: &[(Sym, Sym)],
+        title: &str,
+        refute: Option<Refutation>,
+    ) -> Option<String> {
         if !self.state().uncertified.is_empty() {
             return None;
         }
@@ -252,6 +273,9 @@ impl Ring {
         let trace = self.state().series.clone();
         let series = if trace.claims.is_empty() && trace.solution.is_empty() {
             None
+        } else if refute.is_some() {
+            // a refuted order is certified by its coefficient, which this format lacks
+            return None;
         } else {
             Some(series_lines(&mut em, &trace)?)
         };
@@ -267,7 +291,14 @@ impl Ring {
         out.push_str(&em.out);
         out.push_str(&signs);
         for (a, b) in claims {
-            let _ = writeln!(out, "claim t{a} = t{b}");
+            let _ = match refute {
+                None => writeln!(out, "claim t{a} = t{b}"),
+                Some(_) => writeln!(out, "side t{a} t{b}"),
+            };
+        }
+        if let Some(r) = refute {
+            let _ = writeln!(out, "witness component {}", r.component + 1);
+            out.push_str(&self.point_lines(r.point));
         }
         if let Some(s) = series {
             out.push_str(&s);

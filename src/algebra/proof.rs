@@ -8,6 +8,7 @@
 //! field, a named quantity may need its definition); the reason says which case it is.
 
 use super::budget::BUDGET_MESSAGE;
+use super::certificate::Refutation;
 use super::elliptic::BaseHint;
 use super::error::{AlgResult, AlgebraError};
 use super::ring::{Assumption, MAX_TERMS, Ring, RingOptions, VarKind};
@@ -104,13 +105,20 @@ impl Ring {
         let t0 = Instant::now();
         let mut outcome = Outcome::Proved;
         let mut witness = None;
+        let mut refute = None;
         for (i, (l, r)) in pairs.iter().enumerate() {
             let (o, w) = self
                 .zero_test(l, r)
                 .unwrap_or_else(|e| (Outcome::NotProved(e.to_string()), None));
-            witness = w.map(|w| match pairs.len() {
-                1 => w,
-                _ => format!("component {}: {w}", i + 1),
+            witness = w.map(|(point, w)| {
+                refute = Some(Refutation {
+                    component: i,
+                    point,
+                });
+                match pairs.len() {
+                    1 => w,
+                    _ => format!("component {}: {w}", i + 1),
+                }
             });
             if let Outcome::NotProved(why) = o {
                 let which = if pairs.len() > 1 {
@@ -126,8 +134,8 @@ impl Ring {
             outcome = Outcome::NotProved("nothing to prove".into());
         }
         let certificate = match outcome {
-            Outcome::Proved => self.certificate(pairs, "lhs = rhs"),
-            Outcome::NotProved(_) => None,
+            Outcome::Proved => self.certificate(pairs, "lhs = rhs", None),
+            Outcome::NotProved(_) => refute.and_then(|r| self.certificate(pairs, "lhs = rhs", Some(r))),
         };
         let uncertified = self.state().uncertified.clone();
         Proof {
@@ -152,7 +160,7 @@ impl Ring {
 
     /// The zero test of `lhs − rhs`, and where it is not 0, a point at which it is
     /// certified nonzero (module [`super::witness`]), if one is found.
-    fn zero_test(&self, lhs: &Sym, rhs: &Sym) -> AlgResult<(Outcome, Option<String>)> {
+    fn zero_test(&self, lhs: &Sym, rhs: &Sym) -> AlgResult<(Outcome, Option<(usize, String)>)> {
         if let Some(e) = self.error() {
             return Err(e);
         }
@@ -191,7 +199,7 @@ impl Ring {
         let point = (0..self.points()).find(|&p| differs(p));
         let witness = point.and_then(|p| {
             let w = self.witness(&d, p)?;
-            Some(format!("at domain point {}: {w}", p + 1))
+            Some((p, format!("at domain point {}: {w}", p + 1)))
         });
         let reason = match point {
             Some(p) => format!(

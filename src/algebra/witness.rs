@@ -227,3 +227,56 @@ impl Ring {
         ))
     }
 }
+
+/// An exact binary value `m*2^e` (the form the certificate checker reads).
+fn exact_text(x: &Float) -> String {
+    match x.to_integer_exp() {
+        Some((m, e)) if m != 0 => {
+            let zeros = m.find_one(0).unwrap_or(0);
+            let e = i64::from(e) + i64::from(zeros);
+            format!("{}*2^{e}", m >> zeros)
+        }
+        _ => "0".into(),
+    }
+}
+
+/// A value to 60 significant digits, for choosing a branch.
+fn approx_text(x: &Float) -> String {
+    if x.is_zero() {
+        return "0".into();
+    }
+    x.to_string_radix(10, Some(60))
+}
+
+impl Ring {
+    /// The `at` lines of a refutation's certificate at domain point `point`: the exact
+    /// value of every indeterminate and every `sn` of a base argument (as in
+    /// [`Ring::witness`]), real and imaginary part, and each root's value there to 60
+    /// digits, by which the checker picks the root's branch (the sign of its value at the
+    /// point).
+    pub(super) fn point_lines(&self, point: usize) -> String {
+        let st = self.state();
+        let mut out = String::new();
+        for v in &st.vars {
+            let z = &v.values[point];
+            let line = if matches!(v.kind, VarKind::Indeterminate | VarKind::Sn { .. }) {
+                format!("at {} = {} {}\n", v.name, exact_text(z.real()), exact_text(z.imag()))
+            } else {
+                // another symbol: its value at the point, which the checker ties to the
+                // bases and periods it enters
+                format!("at {} ~ {} {}\n", v.name, approx_text(z.real()), approx_text(z.imag()))
+            };
+            out.push_str(&line);
+        }
+        for r in &st.roots {
+            let z = &r.values[point];
+            out.push_str(&format!(
+                "at {} ~ {} {}\n",
+                r.name,
+                approx_text(z.real()),
+                approx_text(z.imag())
+            ));
+        }
+        out
+    }
+}
