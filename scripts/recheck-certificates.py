@@ -1817,7 +1817,13 @@ def check_text(name, text, catalogue=None):
     if sum(res.charts):
         chart_note = f"; charts: {res.charts[0]} equation(s) of the catalogue verified" + (
             f", {res.charts[1]} not reached" if res.charts[1] else "")
-    what = f"{claims} claim(s)" if res.refuted is None else f"REFUTED, {res.refuted}; {claims} side(s)"
+    negation = claim is not None and claim.get("kind") == "negation"
+    if negation and res.refuted is None:
+        res.why = "a negation is proved by a witness point only, and the certificate has none"
+        return res
+    what = f"{claims} claim(s)" if res.refuted is None else (
+        f"{'PROVED (negation): the inner identity fails' if negation else 'REFUTED'}, {res.refuted}; "
+        f"{claims} side(s)")
     res.ok, res.why = True, f"{what}, {checked} equalities checked; formulas: {res.binding}{chart_note}"
     return res
 

@@ -13,7 +13,7 @@ import re
 import tomllib
 
 CLAIM_FIELDS = ["kind", "domain", "vars", "where", "let", "lhs", "rhs", "expr", "wrt", "var", "order",
-                "unknowns", "equations", "start", "in", "hypotheses"]
+                "unknowns", "equations", "start", "in", "hypotheses", "inner"]
 IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 
 

@@ -145,6 +145,13 @@ def sides(cert, src):
     """The components of (lhs, rhs) of the claim, evaluated here."""
     ev, env = claim_scope(cert, src)
     kind = src.get("claim.kind")
+    if kind == "negation":
+        # "lhs = rhs fails somewhere": the derivation is that of the inner identity
+        inner = src.get("claim.inner")
+        if not isinstance(inner, dict) or not {"kind", "lhs", "rhs"} <= set(inner) <= {"kind", "lhs", "rhs", "scale"} or inner["kind"] != "identity":
+            raise Unsupported("a negation of other than an identity's lhs and rhs")
+        src = dict(src, **{"claim.lhs": inner["lhs"], "claim.rhs": inner["rhs"]})
+        kind = "identity"
     if kind == "identity":
         lhs = ev.eval(Parser(src["claim.lhs"]).whole(), env)
         rhs = ev.eval(Parser(src["claim.rhs"]).whole(), env)

@@ -23,7 +23,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
 /// The fields of a `[[claim]]` table that state what is claimed, in the order written.
-pub const CLAIM_FIELDS: [&str; 16] = [
+pub const CLAIM_FIELDS: [&str; 17] = [
     "kind",
     "domain",
     "vars",
@@ -40,6 +40,7 @@ pub const CLAIM_FIELDS: [&str; 16] = [
     "start",
     "in",
     "hypotheses",
+    "inner",
 ];
 
 /// A catalogue read as TOML values: every claim by id (with its file name), every

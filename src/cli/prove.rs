@@ -11,6 +11,7 @@ use crate::claims::catalogue::lookup::{Scope, find};
 use crate::claims::catalogue::{Body, Catalogue, Claim, PExpr};
 use crate::claims::verdict::context::Ctx;
 use crate::claims::verdict::independence::derivative_sides;
+use crate::claims::verdict::proof_info::ProofMethod;
 use crate::claims::verdict::symbolic::{
     Order, ProofInfo, System, prove, prove_existence, prove_order,
 };
@@ -115,11 +116,12 @@ pub fn run(args: Args) -> Result<i32, CliError> {
                 | Body::Independence { .. }
                 | Body::Asymptotic { .. }
                 | Body::Existence { .. }
+                | Body::Negation(_)
         )
     };
     if !sel.claims.iter().any(|c| provable(c)) {
         return Err(CliError(format!(
-            "none of the {} claims of {} is an identity, an independence, an asymptotic or an existence claim, the kinds proved symbolically",
+            "none of the {} claims of {} is an identity, an independence, an asymptotic, an existence or a negation claim, the kinds proved symbolically",
             sel.claims.len(),
             sel.what
         )));
@@ -141,7 +143,7 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             continue;
         }
         let p = attempt(Ctx { cat: &cat, claim }, false)?;
-        all_proved &= p.is_proved();
+        all_proved &= proves(claim, &p);
         out.write_all(derivation(&claim.id, &claim.printed, &p).as_bytes())
             .and_then(|()| out.flush())
             .map_err(&err)?;
@@ -185,15 +187,49 @@ fn attempt(ctx: Ctx<'_>, certify: bool) -> Result<ProofInfo, CliError> {
             };
             return Ok(prove_existence(ctx, sys));
         }
+        Body::Negation(inner) => {
+            let p = attempt(Ctx { cat: ctx.cat, claim: inner }, certify)?;
+            return Ok(negation_proof(p));
+        }
         _ => {
             return Err(CliError(format!(
-                "claim '{}' is of kind {}, and only identities, independence, asymptotic and existence claims are proved symbolically",
+                "claim '{}' is of kind {}, and only identities, independence, asymptotic, existence and negation claims are proved symbolically",
                 claim.id,
                 claim.kind.name()
             )));
         }
     };
     Ok(prove(ctx, &lhs, &rhs, certify))
+}
+
+/// A negation ("the inner identity fails somewhere") from the attempt at its inner
+/// identity: proved when that attempt found a point where lhs − rhs is certified nonzero
+/// (its certificate is then the refutation's, with the point).
+fn negation_proof(p: ProofInfo) -> ProofInfo {
+    let Some(w) = p.witness.clone() else {
+        let why = p.reason.clone().unwrap_or_default();
+        return ProofInfo {
+            reason: Some(format!("no point certifies that the inner identity fails: {why}")),
+            certificate: None,
+            ..p
+        };
+    };
+    ProofInfo {
+        method: ProofMethod::Witness,
+        reason: Some(format!(
+            "proved by a witness: the inner identity's lhs − rhs is certified nonzero {w}"
+        )),
+        ..p
+    }
+}
+
+/// Whether the attempt proves the claim: a negation by a witness, any other claim by a
+/// proof of what it states.
+fn proves(claim: &Claim, p: &ProofInfo) -> bool {
+    match claim.body {
+        Body::Negation(_) => p.method == ProofMethod::Witness,
+        _ => p.is_proved(),
+    }
 }
 
 /// Proves one claim, with the certificate if asked for.
@@ -204,6 +240,7 @@ fn prove_one(args: &Args, cat: &Catalogue, claim: &Claim) -> Result<i32, CliErro
             | Body::Independence { .. }
             | Body::Asymptotic { .. }
             | Body::Existence { .. }
+            | Body::Negation(_)
     ) {
         attempt(Ctx { cat, claim }, false)?;
     }
@@ -247,7 +284,7 @@ fn prove_one(args: &Args, cat: &Catalogue, claim: &Claim) -> Result<i32, CliErro
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => String::new(),
             Err(e) => return Err(CliError(format!("cannot remove the older {path}: {e}"))),
         };
-        let why = if p.is_proved() {
+        let why = if proves(claim, &p) {
             // proved, but a step recorded no derivation
             format!(
                 "the certificate format does not record {}",
@@ -262,7 +299,7 @@ fn prove_one(args: &Args, cat: &Catalogue, claim: &Claim) -> Result<i32, CliErro
         );
         return Ok(1);
     }
-    Ok(i32::from(!p.is_proved()))
+    Ok(i32::from(!proves(claim, &p)))
 }
 
 /// Writes the Coq script of the proof's certificate to `path` (module

@@ -252,9 +252,13 @@ fn shell(tb: &Table<'_>) -> Result<Claim, LoadError> {
         role: t.role.as_ref().map(|s| Located::of(tb.file, s)),
         uses: t.uses.iter().map(|s| Located::of(tb.file, s)).collect(),
         hint: None,
-        hypotheses: (t.hypotheses.iter())
-            .map(|s| Located::of(tb.file, s))
-            .collect(),
+        // an inner claim rests on the hypotheses its negation states
+        hypotheses: match (t.hypotheses.is_empty(), o) {
+            (true, Some(o)) => o.hypotheses.clone(),
+            _ => (t.hypotheses.iter())
+                .map(|s| Located::of(tb.file, s))
+                .collect(),
+        },
         construction: t.construction.as_ref().map(|s| s.get_ref().clone()),
     })
 }
