@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Writes the certificate of every proved claim of the catalogue and rechecks them all
+# Writes the certificate of every proved claim of the catalogue, and of every refutation
+# and negation certified at a witness point, and rechecks them all
 # with the second system (scripts/recheck-certificates.py, SymPy), bound to the claims as
 # the catalogue writes them.  Usage: scripts/recheck-all-certificates.sh [OUT_DIR]
 # (default target/certificates).  Exit status 0 when every certificate rechecks.
@@ -14,25 +15,31 @@ bin=target/release/eulertop
 rm -rf "$out" && mkdir -p "$out"
 SECONDS=0
 "$bin" verify --format json --jobs "$jobs" >"$out/verify.json" || true
-python3 - "$out/verify.json" >"$out/proved.list" <<'PY'
+python3 - "$out/verify.json" "$out/witness.list" >"$out/proved.list" <<'PY'
 import json, sys
-for c in json.load(open(sys.argv[1]))["claims"]:
-    if c.get("verdict") in ("proved", "construction") and c.get("proof", {}).get("method") in ("symbolic", "series"):
-        print(c["id"])
+with open(sys.argv[2], "w") as witnessed:
+    for c in json.load(open(sys.argv[1]))["claims"]:
+        method = c.get("proof", {}).get("method")
+        if c.get("verdict") in ("proved", "construction") and method in ("symbolic", "series"):
+            print(c["id"])
+        elif method == "witness":  # a refutation, or a negation, certified at a point
+            print(c["id"], file=witnessed)
 PY
 # one prove per claim, $jobs at a time; a claim without a certificate says why on stderr
-xargs -P "$jobs" -I{} sh -c '"$0" prove "$1" --certificate "$2/$1.cert" >/dev/null 2>"$2/$1.err"' \
-  "$bin" {} "$out" <"$out/proved.list" || true
-written=$(find "$out" -name '*.cert' | wc -l)
+cat "$out/proved.list" "$out/witness.list" |
+  xargs -P "$jobs" -I{} sh -c '"$0" prove "$1" --certificate "$2/$1.cert" >/dev/null 2>"$2/$1.err"' \
+  "$bin" {} "$out" || true
+written=$(for id in $(cat "$out/proved.list"); do [ -f "$out/$id.cert" ] && echo; done | wc -l)
 proved=$(wc -l <"$out/proved.list")
-echo "recheck: $written certificates written for $proved proved claims"
+witnessed=$(for id in $(cat "$out/witness.list"); do [ -f "$out/$id.cert" ] && echo; done | wc -l)
+echo "recheck: $written certificates written for $proved proved claims; $witnessed witness certificates for $(wc -l <"$out/witness.list") refutations and negations certified at a point"
 for f in "$out"/*.err; do
   [ -s "$f" ] && echo "  no certificate: $(basename "$f" .err): $(head -c 300 "$f" | sed 's/.*: no certificate written to [^:]*: //')"
 done
 python3 scripts/recheck-certificates.py --catalogue identities --jobs "$jobs" "$out" >"$out/recheck.log" && status=0 || status=$?
 # a proof must not depend on whether a certificate is asked for
-if grep -l "the claim is not proved" "$out"/*.err >/dev/null 2>&1; then
-  for f in $(grep -l "the claim is not proved" "$out"/*.err); do
+if grep -l "the claim is not proved" $(sed "s|.*|$out/&.err|" "$out/proved.list") >/dev/null 2>&1; then
+  for f in $(grep -l "the claim is not proved" $(sed "s|.*|$out/&.err|" "$out/proved.list")); do
     echo "recheck: $(basename "$f" .err) is proved by verify but not by prove --certificate"
   done
   status=1

@@ -446,6 +446,42 @@ class Cases:
         self.expect(f"{cid} against a catalogue copy whose expr is changed is rejected",
                     recheck([write(t, "as-cat.cert", cert)], "--catalogue", cat), False, "claim.expr")
 
+    def witnesses(self):
+        """Refutations certified at a point, and negations proved so."""
+        def data(name):
+            return recheck([os.path.join(DATA, f"{name}.cert")], "--unbound")
+        self.expect("(x + 1)^2 = x^2 + 2x refuted at x = 3/4 (lhs - rhs = 1) is accepted",
+                    data("witness-square"), True, "REFUTED")
+        self.expect("a witness of (x + 1)^2 = x^2 + 2x + 1, which holds, is rejected", data("witness-true"), False,
+                    "not certified nonzero")
+        self.expect("a witness of sqrt(x^2) = x at the negative root (x = 3/4, r = -3/4) is rejected",
+                    data("witness-root"), False, "not the principal root")
+        t, cid = self.tmp, "sec5.ident2.123.printed"
+        path = os.path.join(t, f"{cid}.cert")
+        subprocess.run([BIN, "prove", cid, "--certificate", path], capture_output=True, cwd=ROOT)
+        with open(path, encoding="utf-8") as fh:
+            cert = fh.read()
+        self.expect(f"{cid} (a misprint) is refuted at its witness point, the point's sn, cn, dn checked "
+                    "against mpmath", recheck([path]), True, "REFUTED, component 1")
+        flip = re.sub(r"^at cn_1 ~ (-?)(\S+) (-?)(\S+)$",
+                      lambda m: f"at cn_1 ~ {'' if m[1] else '-'}{m[2]} {'' if m[3] else '-'}{m[4]}",
+                      cert, count=1, flags=re.M)
+        self.expect(f"{cid} with the other branch of cn at the point is rejected",
+                    recheck([write(t, "w-branch.cert", flip)]), False, "is not mpmath's cn")
+        moved = re.sub(r"^at sn_1 = (-?\d+)\*", lambda m: f"at sn_1 = {int(m[1]) + 2**200}*", cert, count=1, flags=re.M)
+        self.expect(f"{cid} with the point's sn value moved off sn of its argument is rejected",
+                    recheck([write(t, "w-sn.cert", moved)]), False, "is not mpmath's sn")
+        claimed = re.sub(r"^side (t\d+) (t\d+)$", r"claim \1 = \2", cert, flags=re.M)
+        self.expect(f"{cid} with its sides claimed equal is rejected", recheck([write(t, "w-claim.cert", claimed)]),
+                    False, "fails")
+        self.expect(f"{cid} without its witness line is rejected",
+                    recheck([write(t, "w-none.cert", without(cert, r"witness "))]), False, "and a `witness` line")
+        neg = "sec6.aux3.gamma0.lo"
+        npath = os.path.join(t, f"{neg}.cert")
+        subprocess.run([BIN, "prove", neg, "--certificate", npath], capture_output=True, cwd=ROOT)
+        self.expect(f"{neg} (a negation: gamma_0 is not Poisson) is proved by its inner identity's witness",
+                    recheck([npath]), True, "PROVED (negation)")
+
     def all_changed(self, cert_dir):
         certs = [f for f in os.listdir(cert_dir) if f.endswith(".cert")]
         cat = changed_catalogue(self.tmp)
@@ -468,6 +504,7 @@ def main(argv):
         cases.multiples_of_roots()
         cases.sign_evidence()
         cases.power_series()
+        cases.witnesses()
         if argv[1:2] == ["--all"] and len(argv) == 3:
             cases.all_changed(argv[2])
     print(f"{cases.count - len(cases.failures)} of {cases.count} recheck tests pass")

@@ -135,7 +135,9 @@ impl Ring {
         }
         let certificate = match outcome {
             Outcome::Proved => self.certificate(pairs, "lhs = rhs", None),
-            Outcome::NotProved(_) => refute.and_then(|r| self.certificate(pairs, "lhs = rhs", Some(r))),
+            Outcome::NotProved(_) => {
+                refute.and_then(|r| self.certificate(pairs, "lhs = rhs", Some(r)))
+            }
         };
         let uncertified = self.state().uncertified.clone();
         Proof {

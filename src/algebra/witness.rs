@@ -260,11 +260,21 @@ impl Ring {
         for v in &st.vars {
             let z = &v.values[point];
             let line = if matches!(v.kind, VarKind::Indeterminate | VarKind::Sn { .. }) {
-                format!("at {} = {} {}\n", v.name, exact_text(z.real()), exact_text(z.imag()))
+                format!(
+                    "at {} = {} {}\n",
+                    v.name,
+                    exact_text(z.real()),
+                    exact_text(z.imag())
+                )
             } else {
                 // another symbol: its value at the point, which the checker ties to the
                 // bases and periods it enters
-                format!("at {} ~ {} {}\n", v.name, approx_text(z.real()), approx_text(z.imag()))
+                format!(
+                    "at {} ~ {} {}\n",
+                    v.name,
+                    approx_text(z.real()),
+                    approx_text(z.imag())
+                )
             };
             out.push_str(&line);
         }

@@ -188,7 +188,13 @@ fn attempt(ctx: Ctx<'_>, certify: bool) -> Result<ProofInfo, CliError> {
             return Ok(prove_existence(ctx, sys));
         }
         Body::Negation(inner) => {
-            let p = attempt(Ctx { cat: ctx.cat, claim: inner }, certify)?;
+            let p = attempt(
+                Ctx {
+                    cat: ctx.cat,
+                    claim: inner,
+                },
+                certify,
+            )?;
             return Ok(negation_proof(p));
         }
         _ => {
@@ -209,7 +215,9 @@ fn negation_proof(p: ProofInfo) -> ProofInfo {
     let Some(w) = p.witness.clone() else {
         let why = p.reason.clone().unwrap_or_default();
         return ProofInfo {
-            reason: Some(format!("no point certifies that the inner identity fails: {why}")),
+            reason: Some(format!(
+                "no point certifies that the inner identity fails: {why}"
+            )),
             certificate: None,
             ..p
         };
