@@ -1,8 +1,9 @@
 //! The catalogue's prose writes its mathematics as LaTeX inside `$…$`, in the paper's
 //! notation, since the reports render it as Markdown with math: every claim's `location`
 //! and `note`, every description of a sampled variable (the third string of a `vars`
-//! entry, a claim's or a domain's) and every hypothesis' `statement` and `paper`
-//! quotation; and every sampled variable has a description.  Outside `$…$` and code
+//! entry, a claim's or a domain's), every `construction` after the map's name that
+//! begins it, and every hypothesis' `statement` and `paper` quotation; and every sampled
+//! variable has a description.  Outside `$…$` and code
 //! spans (`` `step_gamma1` ``), after the paper's equation labels in parentheses
 //! (`(ET v)`, `(impl spec 1-3)`), a field may not contain ASCII
 //! mathematics: no `^ _ = < > | * + \` or `->`, no Greek letter or elliptic function
@@ -141,6 +142,11 @@ fn prose_fields(cat: &Catalogue) -> Vec<(String, String)> {
         out.push((format!("{} location", c.id), c.location.clone()));
         if let Some(n) = &c.note {
             out.push((format!("{} note", c.id), n.clone()));
+        }
+        if let Some(why) = &c.construction {
+            // the first word names the map (the certificate recheck reads it)
+            let prose = why.split_once(' ').map_or("", |(_, rest)| rest);
+            out.push((format!("{} construction", c.id), prose.to_string()));
         }
         for (name, about) in &c.var_about {
             out.push((format!("{} variable {name}", c.id), about.clone()));
