@@ -271,7 +271,7 @@ fn evidence_block(input: &ReportInput, r: &ClaimResult) -> String {
         "Samples: {} evaluated, {} could not be evaluated. {}\n",
         r.samples,
         r.failures.len(),
-        super::cells::tex_powers(&r.reason)
+        input.prose(&super::cells::tex_powers(&r.reason))
     );
     if !r.residuals.is_empty() {
         let _ = writeln!(
@@ -296,7 +296,7 @@ fn evidence_block(input: &ReportInput, r: &ClaimResult) -> String {
         }
         s.push('\n');
     }
-    s.push_str(&super::proof_evidence::proof_block(&r.proof));
+    s.push_str(&super::proof_evidence::proof_block(&r.proof, &|t| input.prose(t)));
     if let Some(e) = &r.exact {
         let _ = writeln!(
             s,

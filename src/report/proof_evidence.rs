@@ -6,7 +6,9 @@ use crate::claims::verdict::ProofInfo;
 use std::fmt::Write;
 
 /// The proof paragraph of one claim (empty for claims that are not identities).
-pub fn proof_block(p: &ProofInfo) -> String {
+/// `prose` renders the catalogue's prose (a hypothesis' statement, its mathematics as
+/// LaTeX in `$…$`) as Markdown.
+pub fn proof_block(p: &ProofInfo, prose: &dyn Fn(&str) -> String) -> String {
     let mut s = String::new();
     if p.method == crate::claims::verdict::ProofMethod::Interval {
         let why = p.reason.as_deref().unwrap_or_default();
@@ -62,11 +64,20 @@ pub fn proof_block(p: &ProofInfo) -> String {
         "signs proved (every coefficient of one sign after substituting the parametrization; a root of a radicand proved positive is its positive root)",
         &p.proved_signs,
     );
-    items(
-        &mut s,
-        "hypotheses (stated by the claim, quoted from the paper; lemmas proved separately)",
-        &p.hypotheses.iter().map(|h| h.line()).collect::<Vec<_>>(),
-    );
+    if !p.hypotheses.is_empty() {
+        // a hypothesis of the catalogue is prose; a lemma's statement is an expression
+        let shown: Vec<String> = (p.hypotheses.iter())
+            .map(|h| match h.kind {
+                "lemma" => format!("`{}`", h.line()),
+                kind => format!("{} [{kind}: `{}`]", prose(&h.statement), h.source),
+            })
+            .collect();
+        let _ = writeln!(
+            s,
+            "- hypotheses (stated by the claim, quoted from the paper; lemmas proved separately): {}",
+            shown.join("; ")
+        );
+    }
     s.push('\n');
     s
 }

@@ -411,7 +411,7 @@ fn claim_entry(input: &ReportInput, s: &Structure, r: &ClaimResult, n: usize) ->
             t,
             "Best residual: {}; {}.\n",
             best_residual(r),
-            super::cells::tex_powers(&r.reason)
+            input.prose(&super::cells::tex_powers(&r.reason))
         );
     }
     let uses = s.uses(&r.id);

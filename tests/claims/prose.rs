@@ -1,8 +1,11 @@
 //! The catalogue's prose writes its mathematics as LaTeX inside `$…$`, in the paper's
 //! notation, since the reports render it as Markdown with math: every claim's `location`
-//! and `note` and every description of a sampled variable (the third string of a `vars`
-//! entry).  Outside `$…$` and code spans (`` `step_gamma1` ``), after the paper's equation
-//! labels in parentheses (`(ET v)`, `(impl spec 1-3)`), a field may not contain ASCII
+//! and `note`, every description of a sampled variable (the third string of a `vars`
+//! entry, a claim's or a domain's), every `construction` after the map's name that
+//! begins it, and every hypothesis' `statement` and `paper` quotation; and every sampled
+//! variable has a description.  Outside `$…$` and code
+//! spans (`` `step_gamma1` ``), after the paper's equation labels in parentheses
+//! (`(ET v)`, `(impl spec 1-3)`), a field may not contain ASCII
 //! mathematics: no `^ _ = < > | * + \` or `->`, no Greek letter or elliptic function
 //! spelt out (`phi`, `sn`), no single-letter variable (`h`; the article `a`, `A` aside), no
 //! name with an index (`M1`, `u0`), no short function call (`O(h)`, `det(`) and no
@@ -140,6 +143,11 @@ fn prose_fields(cat: &Catalogue) -> Vec<(String, String)> {
         if let Some(n) = &c.note {
             out.push((format!("{} note", c.id), n.clone()));
         }
+        if let Some(why) = &c.construction {
+            // the first word names the map (the certificate recheck reads it)
+            let prose = why.split_once(' ').map_or("", |(_, rest)| rest);
+            out.push((format!("{} construction", c.id), prose.to_string()));
+        }
         for (name, about) in &c.var_about {
             out.push((format!("{} variable {name}", c.id), about.clone()));
         }
@@ -148,6 +156,10 @@ fn prose_fields(cat: &Catalogue) -> Vec<(String, String)> {
         for (name, about) in &dom.about {
             out.push((format!("domain {d} variable {name}"), about.clone()));
         }
+    }
+    for (name, h) in &cat.hypotheses {
+        out.push((format!("hypothesis {name} statement"), h.statement.clone()));
+        out.push((format!("hypothesis {name} paper"), h.paper.clone()));
     }
     out
 }
@@ -174,6 +186,39 @@ fn the_catalogue_prose_writes_its_mathematics_in_latex() {
         bad.len(),
         fields.len(),
         bad.join("\n")
+    );
+}
+
+#[test]
+fn every_sampled_variable_says_what_it_is() {
+    let cat = load_dir(
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join("identities"),
+        registry().unwrap(),
+    )
+    .unwrap_or_else(|e| panic!("catalogue does not load:\n{e}"));
+    let mut bare: Vec<String> = Vec::new();
+    let mut all = 0;
+    for c in &cat.claims {
+        for (name, _) in &c.vars {
+            all += 1;
+            if !c.var_about.contains_key(name) {
+                bare.push(format!("{} variable {name}", c.id));
+            }
+        }
+    }
+    for (d, dom) in &cat.domains {
+        for (name, _) in &dom.vars {
+            all += 1;
+            if !dom.about.contains_key(name) {
+                bare.push(format!("domain {d} variable {name}"));
+            }
+        }
+    }
+    assert!(
+        bare.is_empty(),
+        "{} of {all} sampled variables have no description (the third string of their `vars` entry):\n{}",
+        bare.len(),
+        bare.join("\n")
     );
 }
 

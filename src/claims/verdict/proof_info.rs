@@ -35,9 +35,9 @@ pub const NO_INTERVAL: &str = "no interval certificate: ";
 ///
 /// ```
 /// use eulertop::claims::verdict::proof_info::SMALL_H_NOTE;
-/// assert!(SMALL_H_NOTE.starts_with(" (holds for every small enough h > 0"));
+/// assert!(SMALL_H_NOTE.starts_with(" (holds for every small enough $h > 0$"));
 /// ```
-pub const SMALL_H_NOTE: &str = " (holds for every small enough h > 0: the leading coefficient of its power series in h is proved positive on the domain)";
+pub const SMALL_H_NOTE: &str = " (holds for every small enough $h > 0$: the leading coefficient of its power series in $h$ is proved positive on the domain)";
 
 /// A fact a proof rests on besides algebra.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
