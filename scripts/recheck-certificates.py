@@ -1987,7 +1987,7 @@ def main(argv):
         how += f"; {sum(r.charts[0] > 0 for r in with_chart)} of {len(with_chart)} charts verified"
     refuted = sum(r.ok and r.refuted is not None for r in results)
     if refuted:
-        how += f"; {refuted} of them refutations, certified by a witness point"
+        how += f"; {refuted} of them witness certificates (refutations, and negations proved)"
     print(f"{n - bad} of {n} certificates recheck ({how}; {time.perf_counter() - start:.1f} s)")
     return 1 if bad else 0
 
