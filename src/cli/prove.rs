@@ -77,6 +77,9 @@ pub fn derivation(id: &str, printed: &str, p: &ProofInfo) -> String {
             "every coefficient below the order has normal form 0: proved by exact power series\n",
         ),
         None => out.push_str("normal form of lhs - rhs: 0: proved\n"),
+        Some(r) if p.method == crate::claims::verdict::ProofMethod::Witness => {
+            out.push_str(&format!("{r}\n"));
+        }
         Some(r) => out.push_str(&format!("not proved: {r}\n")),
     }
     out

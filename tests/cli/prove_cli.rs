@@ -61,6 +61,39 @@ fn an_identity_without_a_proof_exits_1_with_its_reason() {
 }
 
 #[test]
+fn a_negation_is_proved_by_a_witness_with_its_certificate() {
+    let path = std::env::temp_dir().join(format!("eulertop-negation-{}.cert", std::process::id()));
+    let p = path.to_str().expect("utf-8 temp path");
+    let (code, out, err) = run(&["prove", "sec6.aux3.gamma0.up", "--certificate", p]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.contains("proved by a witness"), "{out}");
+    assert!(!out.contains("not proved"), "{out}");
+    let cert = std::fs::read_to_string(&path).expect("certificate written");
+    let _ = std::fs::remove_file(&path);
+    // the inner identity's sides, not claimed equal, and the point
+    assert!(cert.contains("\nside t") && !cert.contains("\nclaim t"), "{cert}");
+    assert!(cert.contains("\nwitness component 1\n"), "{cert}");
+    assert!(cert.contains("\nat sn_1 = "), "{cert}");
+}
+
+#[test]
+fn a_refuted_identity_writes_its_witness_certificate_and_exits_1() {
+    let path = std::env::temp_dir().join(format!("eulertop-refuted-{}.cert", std::process::id()));
+    let p = path.to_str().expect("utf-8 temp path");
+    let (code, out, _) = run(&["prove", "sec2.ET-v.printed", "--certificate", p]);
+    assert_eq!(code, 1, "{out}");
+    let cert = std::fs::read_to_string(&path).expect("certificate written");
+    let _ = std::fs::remove_file(&path);
+    assert!(cert.contains("\nwitness component "), "{cert}");
+    // a refutation has no Coq proof
+    let coq = std::env::temp_dir().join(format!("eulertop-refuted-{}.v", std::process::id()));
+    let (code, _, err) = run(&["prove", "sec2.ET-v.printed", "--coq", coq.to_str().expect("utf-8")]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("no Coq proof"), "{err}");
+    assert!(!coq.exists());
+}
+
+#[test]
 fn bad_ids_and_kinds_are_one_line_errors_with_status_2() {
     for (args, expected) in [
         (
@@ -68,8 +101,8 @@ fn bad_ids_and_kinds_are_one_line_errors_with_status_2() {
             "no claim id, environment or label 'no.such.claim'",
         ),
         (
-            vec!["prove", "sec8.lemma2.obtuse"],
-            "only identities, independence, asymptotic and existence claims are proved symbolically",
+            vec!["prove", "sec2.def.Omega"],
+            "only identities, independence, asymptotic, existence and negation claims are proved symbolically",
         ),
     ] {
         let (code, out, err) = run(&args);
