@@ -83,12 +83,13 @@ impl Sym {
     /// through a later decision, which records itself.
     pub(crate) fn proved_sign_unrecorded(&self) -> Option<i32> {
         let ring = &self.ring;
-        let (signs, uncertified, valued) = {
+        let (signs, uncertified, valued, dominance) = {
             let st = ring.state();
             (
                 st.signs.proved_signs.len(),
                 st.uncertified.len(),
                 st.signs.valued.len(),
+                st.signs.dominance.len(),
             )
         };
         let s = if ring.certifying() && self.node.is_none() {
@@ -99,6 +100,7 @@ impl Sym {
         let mut st = ring.state();
         st.signs.proved_signs.truncate(signs);
         st.signs.valued.truncate(valued);
+        st.signs.dominance.truncate(dominance);
         st.uncertified.truncate(uncertified);
         s
     }
