@@ -61,6 +61,12 @@ This script:
     line: the part is the condition times a rational number or a factor of proved
     sign), or by its own parts in turn.  A comparison of the claim's formulas is
     decided the same way;
+  * `dominance (Q) > 0 constant C factor (G) ^ k ...`: the sign of q = a**2 - b**2 * rad
+    for p = a + b*r (r a posroot, rad its radicand) where only one of a, b has a proved
+    sign (the side that wins, rule 2b of src/algebra/decide.rs): Q = C * prod G**k
+    exactly, each G (G**2 for an even k) of a sign proved here, their product the stated
+    sign; a sign test of p then takes the sign of a where q > 0 (|a| > |b r|), of b
+    where q < 0 (|b r| > |a|), that side's sign proved in turn;
   * a proof by parts: the `part` lines of its certificates must cover the domain, as
     the leaves of a tree of splits (each split value with a part for each sign);
   * sn, cn, dn: recomputed from the base symbols with the addition theorems
@@ -357,6 +363,7 @@ class Cert:
         self.witness = None  # the component a refutation shows nonzero (`witness` line)
         self.at = {"exact": {}, "approx": {}}  # the `at` lines: the witness point
         self.refuted = None  # what the witness certified
+        self.dominance = []  # (q, sign) of every checked `dominance` line: q = a**2 - b**2 * rad
 
     # ---- the ring ----------------------------------------------------------------
     def declare(self, text):
@@ -815,12 +822,48 @@ class Cert:
         if not a:
             return self.tower_sign(b, depth + 1)
         sa, sb = self.tower_sign(a, depth + 1), self.tower_sign(b, depth + 1)
-        if sa is None or sb is None:
+        if sa is None and sb is None:
             return None
+        if sa is None or sb is None:
+            # the side that wins: a `dominance` line checked before gives the sign of q
+            w = self.dominance_sign(self.reduce(a * a - b * b * rad))
+            return sa if w == 1 else sb if w == -1 else None
         if sa == sb:
             return sa
         sq = self.tower_sign(self.reduce(a * a - b * b * rad), depth + 1)
         return None if sq is None else sa * sq
+
+    # ---- the side that wins (`dominance` lines) ---------------------------------------
+    def dominance_line(self, rest):
+        """`dominance (Q) > 0 constant C factor (G1) ^ k1 factor (G2) ^ k2 ...`: Q equals
+        C * prod Gi**ki, each Gi of odd ki has a sign proved here (by the parametrization
+        or the second one), Gi**2 > 0 is proved for even ki, and the signs multiply to
+        the stated one.  tower_sign then decides p = a + b*r (r a posroot of positive
+        radicand) where q = a**2 - b**2 * radicand is Q: (a + b r)(a - b r) = q, so q > 0
+        gives |a| > |b r| and p the sign of a, q < 0 gives |b r| > |a| and p the sign of
+        b (r > 0); that side's sign must be proved there, the other is not needed."""
+        m = re.fullmatch(r"\((.+?)\) ([<>]) 0 constant (-?\d+)((?: factor \(.+?\) \^ \d+)+)", rest.strip())
+        self.need(m is not None, f"bad dominance line {rest[:40]}")
+        qtext, rel, c, ftext = m.groups()
+        want = 1 if rel == ">" else -1
+        q = self.frac(qtext)
+        self.need(q.den == self.ring.one, f"dominance {qtext[:40]}: not a polynomial")
+        prod, sign = self.const(int(c)), (int(c) > 0) - (int(c) < 0)
+        for g, k in re.findall(r" factor \((.+?)\) \^ (\d+)", ftext):
+            g, k = self.frac(g), int(k)
+            self.need(k > 0, f"dominance {qtext[:40]}: a factor to the power 0")
+            prod = self.mul(prod, self.power(g, k))
+            sg = self.proved_sign(g) if k % 2 else self.proved_sign(self.mul(g, g))
+            self.need(sg in (1, -1), f"dominance {qtext[:40]}: the sign of the factor {g.num.as_expr()} is not proved")
+            sign *= sg ** k
+        self.need(self.eq(q, prod), f"dominance {qtext[:40]}: Q is not the product of its factors")
+        self.need(sign == want, f"dominance {qtext[:40]} {rel} 0: its factors' signs give the other sign")
+        self.dominance.append((self.reduce(q.num), want))
+        self.checked += 1
+
+    def dominance_sign(self, q):
+        """The sign of the polynomial q that a checked `dominance` line states, or None."""
+        return next((s for p, s in self.dominance if p == q), None)
 
     def keyed(self, rest, keys):
         pat = r"\s(" + "|".join(keys) + r")="
@@ -1202,6 +1245,8 @@ class Cert:
             self.sign_line(rest)
         elif word == "signsym":
             self.sign_symbol(rest)
+        elif word == "dominance":
+            self.dominance_line(rest)
         elif word == "fact":
             self.fact_line(rest)
         elif word == "claim":

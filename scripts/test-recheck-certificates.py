@@ -290,6 +290,35 @@ class Cases:
         self.expect("sec4.sectors.up without its last part is rejected",
                     recheck([write(t, "sec-bad.cert", sec[:last])]), False, "the parts of the domain do not cover it")
 
+    def dominant_sides(self):
+        """sec4.sectors.boundary: signs of a + b*r decided by the side that wins (rule 2b),
+        whose `dominance` lines state the sign of q = a**2 - b**2 * radicand with its
+        factors, and the corruptions of that evidence."""
+        t = self.tmp
+        bd = prove("sec4.sectors.boundary", t)
+        self.expect("sec4.sectors.boundary (signs by the side that wins) rechecks",
+                    recheck([write(t, "bd.cert", bd)]), True, "1 of 1 certificates recheck")
+        line = re.search(r"^dominance \([^)]*\) [<>] 0 constant .*$", bd, re.M).group(0)
+        rel = re.search(r"\) ([<>]) 0 constant", line).group(1)
+        other = "<" if rel == ">" else ">"
+        reversed_line = line.replace(f") {rel} 0 constant", f") {other} 0 constant", 1)
+        negated = re.sub(r" constant (-?)(\d+) ", lambda m: f" constant {'' if m.group(1) else '-'}{m.group(2)} ",
+                         reversed_line, count=1)
+        proved = re.findall(r"^sign t\d+ [<>] 0$", bd, re.M)
+        cases = [
+            ("the dominance inequality reversed", bd.replace(line, reversed_line), "factors' signs give the other sign"),
+            ("the dominance inequality reversed with its constant negated", bd.replace(line, negated),
+             "Q is not the product of its factors"),
+            ("a factor's power changed", bd.replace(line, re.sub(r"\^ 1$", "^ 3", line)),
+             "Q is not the product of its factors"),
+            ("the dominance lines deleted", "\n".join(ln for ln in bd.splitlines() if not ln.startswith("dominance ")),
+             "is not proved by the parametrization"),
+        ] + [(f"the dominant side's sign flipped ({ln})", bd.replace(ln, ln.replace(" > 0", " @ 0").replace(
+            " < 0", " > 0").replace(" @ 0", " < 0")), "is not proved by the parametrization") for ln in proved[-2:]]
+        for what, text, why in cases:
+            self.expect(f"sec4.sectors.boundary: {what} is rejected", recheck([write(t, "bd-bad.cert", text)]),
+                        False, why)
+
     def hypothesis_signs(self):
         """Lemma 2: a square-root branch decided by the stated hypothesis
         omega-near-identity (tr omega > 1), and the corruptions of that evidence."""
@@ -500,6 +529,7 @@ def main(argv):
         cases.run()
         cases.chart_parameters()
         cases.root_part_signs()
+        cases.dominant_sides()
         cases.hypothesis_signs()
         cases.multiples_of_roots()
         cases.sign_evidence()

@@ -20,6 +20,7 @@
 //! sign t9 > 0 square (a)/(b) hypothesis hypothesis.H factor (F)/(G)  # t9 = (a/b)²
 //! sign value (N)/(D) > 0           # a value without a derivation, written out
 //! sign t11 > 0 parts               # decided from the signs of its parts in a square root
+//! dominance (Q) > 0 constant 2 factor (G) ^ 1 factor (H) ^ 2   # Q = a² − b²·r² = 2·G·H²
 //! signsym sgnx = sign (x)/(1)      # a sign symbol's definition: sgnx·x > 0
 //! fact F0 dn base b_1_2 value (D)  # dn of a base of real argument, 0 < k² < 1: D > 0
 //! fact F1 dn t14                   # dn node t14 of a real argument: its value > 0
@@ -330,12 +331,13 @@ impl Ring {
             (st.signs.proved_signs.clone(), vars, roots)
         };
         let evidence = self.state().signs.evidence.clone();
-        let (facts, valued, by_parts) = {
+        let (facts, valued, by_parts, dominance) = {
             let st = self.state();
             (
                 st.signs.fact_evidence.clone(),
                 st.signs.valued.clone(),
                 st.signs.root_signs.clone(),
+                st.signs.dominance.clone(),
             )
         };
         // a factor of a hypothesis' value that is no constant has its sign proved with
@@ -348,8 +350,10 @@ impl Ring {
                 || !facts.is_empty()
                 || !valued.is_empty()
                 || !by_parts.is_empty()
+                || !dominance.is_empty()
         }) else {
-            let mut out = hypothesis_sign_lines(&evidence, em);
+            let mut out = dominance_lines(&dominance, em.names);
+            out.push_str(&hypothesis_sign_lines(&evidence, em));
             out.push_str(&self.fact_sign_lines(&facts, em));
             out.push_str(&root_sign_lines(&by_parts, em));
             return out;
@@ -358,6 +362,8 @@ impl Ring {
         for r in roots {
             let _ = writeln!(out, "posroot {r}");
         }
+        // before the sign lines, whose recheck may use them
+        out.push_str(&dominance_lines(&dominance, em.names));
         for (node, s, _) in signs {
             if let Some(n) = node {
                 let id = em.visit(&n);
@@ -594,6 +600,28 @@ fn hypothesis_sign_lines(
             if e.sign > 0 { ">" } else { "<" },
             e.label,
             nf_text(&e.factor.num, &e.factor.den, em.names)
+        );
+    }
+    out
+}
+
+/// The `dominance (Q) > 0 constant C factor (G) ^ K …` lines of rule 2b (module
+/// `decide`): `Q = a² − b²·r²` has the stated sign, as `C · Π G^K` whose factors' signs
+/// a recheck proves; a sign of `a + b·r` is then that of `a` (`Q > 0`) or of `b`
+/// (`Q < 0`), which the recheck proves in turn.
+fn dominance_lines(evidence: &[super::sign_state::Dominance], names: &[String]) -> String {
+    let mut out = String::new();
+    for d in evidence {
+        let factors: Vec<String> = (d.factors.iter())
+            .map(|(g, k)| format!(" factor ({}) ^ {k}", g.render(names)))
+            .collect();
+        let _ = writeln!(
+            out,
+            "dominance ({}) {} 0 constant {}{}",
+            d.q.render(names),
+            if d.sign > 0 { ">" } else { "<" },
+            d.constant,
+            factors.concat()
         );
     }
     out

@@ -234,8 +234,8 @@ impl Ring {
     /// the signs of its irreducible factors, each proved by rules 1–3 with the
     /// parametrization or with its alternative (the box of the sampled intervals).  Each
     /// factor's sign then holds on the sampled domain, which both parametrizations
-    /// cover, and so does the product's.  Not recorded in certificates (whose checker
-    /// has rule 2 only): a proof that uses it is marked uncertified.
+    /// cover, and so does the product's.  A certificate records `q`, its sign and its
+    /// factors (a `dominance` line), whose signs a recheck proves again.
     fn factored_sign(
         &self,
         par: &Parametrization,
@@ -243,8 +243,8 @@ impl Ring {
         depth: usize,
         budget: &std::cell::Cell<usize>,
     ) -> Option<i32> {
-        let s = match self.tower_sign_within(par, q, depth, budget) {
-            Some(s) => s,
+        let (s, f) = match self.tower_sign_within(par, q, depth, budget) {
+            Some(s) => (s, None),
             None => {
                 if q.len() > MAX_FACTOR_TERMS {
                     return None;
@@ -260,13 +260,23 @@ impl Ring {
                     })?;
                     s *= sg;
                 }
-                s
+                (s, Some(f))
             }
         };
         if s != 0 && self.certifying() {
-            self.mark_uncertified(
-                "a sign of a + b·r decided by the side that wins (a² − b²·r² of proved sign) where the other side's sign is not proved",
-            );
+            let (constant, factors) = match f {
+                Some(f) => (f.constant, f.factors),
+                None => (rug::Integer::from(1), vec![(q.clone(), 1)]),
+            };
+            let mut st = self.state();
+            if !(st.signs.dominance.iter()).any(|d| d.q == *q) {
+                (st.signs.dominance).push(super::sign_state::Dominance {
+                    q: q.clone(),
+                    sign: s,
+                    constant,
+                    factors,
+                });
+            }
         }
         (s != 0).then_some(s)
     }

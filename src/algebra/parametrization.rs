@@ -152,10 +152,8 @@ pub struct Parametrization {
     descriptions: Vec<String>,
     /// See [`Parametrization::set_alternative`].
     alternative: Option<Box<Parametrization>>,
-    /// See [`Parametrization::on_part`].
-    part: Option<Box<Parametrization>>,
     /// Substitutions already made (a claim's cases and decisions ask for the sign of
-    /// the same polynomial many times); shared with copies of the same images.
+    /// the same polynomial many times).
     memo: Arc<SubstMemo>,
 }
 
@@ -207,121 +205,8 @@ impl Parametrization {
             images: BTreeMap::new(),
             descriptions: Vec::new(),
             alternative: None,
-            part: None,
             memo: Arc::default(),
         }
-    }
-
-    /// A copy of this parametrization (the same images, sharing what its sign tests
-    /// remember), without a part.
-    fn copy(&self) -> Parametrization {
-        Parametrization {
-            ctx: self.ctx.clone(),
-            params: self.params.clone(),
-            images: self.images.clone(),
-            descriptions: self.descriptions.clone(),
-            alternative: self.alternative.as_ref().map(|a| Box::new(a.copy())),
-            part: None,
-            memo: self.memo.clone(),
-        }
-    }
-
-    /// This parametrization with, as its part (`Parametrization::part`), the same
-    /// images where each indeterminate of `signs` (by name, with its sign on a part of
-    /// the domain) that is a parameter of either sign of its own becomes one of that
-    /// sign: `μ ≠ 0` becomes `±t`, and in the alternative (the box) `(lo + hi·t)/(1 + t)`
-    /// becomes `hi·t/(1 + t)` or `lo/(1 + t)` (for `lo < 0 < hi`), `t > 0`.  Each covers
-    /// the part of the domain where the indeterminate has that sign.  `None` when no
-    /// indeterminate of `signs` is such a parameter.
-    pub fn on_part(&self, signs: &[(String, i32)]) -> Option<Parametrization> {
-        let mut part = self.restricted(signs, Self::relaxed_sign)?;
-        part.alternative = (self.alternative.as_ref())
-            .and_then(|a| a.restricted(signs, Self::box_sign))
-            .map(Box::new);
-        let mut whole = self.copy();
-        whole.part = Some(Box::new(part));
-        Some(whole)
-    }
-
-    /// A copy (with a memo of its own, no alternative, no part) in which `image`
-    /// rewrites the image of each indeterminate of `signs`; `None` when it rewrites none.
-    fn restricted(
-        &self,
-        signs: &[(String, i32)],
-        image: fn(&Parametrization, &ParamRat, usize, i32) -> Option<ParamRat>,
-    ) -> Option<Parametrization> {
-        let mut part = self.copy();
-        part.alternative = None;
-        part.memo = Arc::default();
-        let mut changed = false;
-        for (name, sign) in signs {
-            let Some(img) = self.images.get(name) else {
-                continue;
-            };
-            // a parameter of this indeterminate's alone
-            let used: Vec<usize> = img
-                .num
-                .used_vars()
-                .into_iter()
-                .chain(img.den.used_vars())
-                .collect();
-            let Some(&k) = used.first() else { continue };
-            let shared = (self.images.iter()).any(|(n, r)| {
-                n != name && (r.num.used_vars().contains(&k) || r.den.used_vars().contains(&k))
-            });
-            if shared || used.iter().any(|&j| j != k) {
-                continue;
-            }
-            let Some(new) = image(self, img, k, *sign) else {
-                continue;
-            };
-            part.params[k].1 = ParamKind::Positive;
-            part.images.insert(name.clone(), new);
-            let rel = if *sign > 0 { ">" } else { "<" };
-            part.descriptions.push(format!(
-                "on the part where {name} {rel} 0, {name} has that sign"
-            ));
-            changed = true;
-        }
-        changed.then_some(part)
-    }
-
-    /// `±t` for an image `μ` of either sign (see [`Parametrization::on_part`]).
-    fn relaxed_sign(&self, img: &ParamRat, k: usize, sign: i32) -> Option<ParamRat> {
-        let mu = Poly::var(&self.ctx, k);
-        let ok = self.params[k].1 == ParamKind::NonZero && img.den.is_one() && img.num == mu;
-        let num = if sign > 0 { mu } else { mu.neg() };
-        ok.then(|| ParamRat {
-            num,
-            den: Poly::from_i64(&self.ctx, 1),
-        })
-    }
-
-    /// `hi·t/(1 + t)` or `lo/(1 + t)` for an image `(lo + hi·t)/(1 + t)` with
-    /// `lo < 0 < hi` (see [`Parametrization::on_part`]).
-    fn box_sign(&self, img: &ParamRat, k: usize, sign: i32) -> Option<ParamRat> {
-        let t = Poly::var(&self.ctx, k);
-        let one = Poly::from_i64(&self.ctx, 1);
-        if img.den != one.add(&t) || img.num.degree(k) != 1 {
-            return None;
-        }
-        let (lo, hi) = (img.num.coefficient_in(k, 0), img.num.coefficient_in(k, 1));
-        let (lo_c, hi_c) = (lo.as_constant()?, hi.as_constant()?);
-        if lo_c >= 0 || hi_c <= 0 {
-            return None;
-        }
-        let num = if sign > 0 { hi.mul(&t) } else { lo };
-        Some(ParamRat {
-            num,
-            den: img.den.clone(),
-        })
-    }
-
-    /// The parametrization of the part of the domain the proof is on (see
-    /// [`Parametrization::on_part`]), tried where this one and its alternative prove no
-    /// sign.
-    pub(crate) fn part(&self) -> Option<&Parametrization> {
-        self.part.as_deref()
     }
 
     /// A second parametrization of the same domain, tried where this one proves no sign

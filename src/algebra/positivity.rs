@@ -83,12 +83,13 @@ impl Sym {
     /// through a later decision, which records itself.
     pub(crate) fn proved_sign_unrecorded(&self) -> Option<i32> {
         let ring = &self.ring;
-        let (signs, uncertified, valued) = {
+        let (signs, uncertified, valued, dominance) = {
             let st = ring.state();
             (
                 st.signs.proved_signs.len(),
                 st.uncertified.len(),
                 st.signs.valued.len(),
+                st.signs.dominance.len(),
             )
         };
         let s = if ring.certifying() && self.node.is_none() {
@@ -99,6 +100,7 @@ impl Sym {
         let mut st = ring.state();
         st.signs.proved_signs.truncate(signs);
         st.signs.valued.truncate(valued);
+        st.signs.dominance.truncate(dominance);
         st.uncertified.truncate(uncertified);
         s
     }
@@ -112,25 +114,7 @@ impl Sym {
                 return None;
             }
             self.sign_with(alt)
-        });
-        let s = match s {
-            Some(s) => s,
-            None => {
-                // only small values: every undecided sign (and each quotient by a
-                // hypothesis) is tried here
-                let part = par.part()?;
-                if self.val.num.len() + self.val.den.len() > MAX_WIDENED_TERMS {
-                    return None;
-                }
-                let s = (self.sign_with(part)).or_else(|| self.sign_with(part.alternative()?))?;
-                if self.ring.certifying() {
-                    self.ring.mark_uncertified(
-                        "a sign proved with the parametrization of a part of the domain (an indeterminate's sign fixed by the part's condition)",
-                    );
-                }
-                s
-            }
-        };
+        })?;
         // the points lie in the parametrized domain: their signs must agree
         let prec = self.ring.precision();
         let agree =

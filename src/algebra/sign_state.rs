@@ -105,6 +105,18 @@ pub(crate) struct RootSignEvidence {
     pub sign: i32,
 }
 
+/// The sign of `q = a² − b²·r²` that decided the sign of `a + b·r` by the side that
+/// wins (rule 2b of module `decide`), with its evidence, for certificates: `q` is
+/// `constant · Π gᵢ^kᵢ` and each factor `gᵢ` (`gᵢ²` for an even `kᵢ`) has a proved
+/// sign, whose product with the constant's is `sign`.
+#[derive(Clone, Debug)]
+pub(crate) struct Dominance {
+    pub q: Poly,
+    pub sign: i32,
+    pub constant: rug::Integer,
+    pub factors: Vec<(Poly, u64)>,
+}
+
 /// The sign-only state of a ring (see the module).
 #[derive(Default)]
 pub(crate) struct SignState {
@@ -136,4 +148,7 @@ pub(crate) struct SignState {
     /// The signs decided from the signs of their parts in a square root (for
     /// certificates), in the order decided (a part's before its value's).
     pub root_signs: Vec<RootSignEvidence>,
+    /// The signs of `a² − b²·r²` that decided signs of `a + b·r` by the side that wins
+    /// (for certificates), in the order proved (a factor's before the value's).
+    pub dominance: Vec<Dominance>,
 }

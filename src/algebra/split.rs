@@ -62,22 +62,6 @@ impl SignSplit {
         terms == 1 && linear == 1 && constant
     }
 
-    /// The indeterminate this value is a constant multiple of (see
-    /// [`SignSplit::is_indeterminate`]) and its sign where the value has sign `sign`.
-    pub fn indeterminate_sign(&self, sign: i32) -> Option<(String, i32)> {
-        if !self.is_indeterminate() {
-            return None;
-        }
-        let mut out = None;
-        self.num.for_each_term(|c, e| {
-            let i = (0..e.len()).find(|&i| e[i] != 0);
-            out = i.map(|i| (i, c.cmp0() as i32));
-        });
-        let (i, c) = out?;
-        let d = self.den.as_constant()?.cmp0() as i32;
-        Some((self.names.get(i)?.clone(), sign * c * d))
-    }
-
     /// Is the part where the value has sign `sign` empty by the value's form: numerator
     /// and denominator each a sum of even powers of the claim's (real) indeterminates
     /// with coefficients of one sign, so the value is never of the other sign
