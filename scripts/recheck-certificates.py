@@ -154,7 +154,7 @@ from sympy.polys.rings import ring  # noqa: E402
 assert GROUND_TYPES != "flint", "the recheck must not run on FLINT"
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from certcheck import binding, domain, formula, hypothesis, series  # noqa: E402
+from certcheck import binding, domain, formula, hypothesis, ode, series  # noqa: E402
 
 
 class CheckError(Exception):
@@ -1754,7 +1754,14 @@ def check_text(name, text, catalogue=None):
         if catalogue is not None:
             res.claim, claim, src = binding.bind(text, catalogue)
         assumes, modes, charts, used, conditions = [], set(), [0, 0], {}, []
-        for first, part in parts(text):
+        if any(line.startswith("ode ") for line in text.splitlines()):
+            # a proof by the uniqueness of the solution of an ODE (module certcheck.ode)
+            if catalogue is None:
+                raise CheckError("a proof by the ODE method is rechecked bound to its claim only")
+            cert = Cert(name)
+            modes.add(ode.check(cert, text, src))
+            claims, checked, conditions, res.cases = 1, cert.checked, [[]], [""]
+        for first, part in ([] if claims else parts(text)):
             cert = Cert(name)
             claims += cert.run(part, first)
             checked += cert.checked
@@ -1776,9 +1783,9 @@ def check_text(name, text, catalogue=None):
         res.binding = "unbound" if catalogue is None else (
             "evaluated" if modes == {"evaluated"} else sorted(m for m in modes if m != "evaluated")[0])
     except (CheckError, binding.BindError, formula.FormulaMismatch, domain.DomainMismatch,
-            hypothesis.HypothesisMismatch, KeyError, ValueError, IndexError) as e:
+            hypothesis.HypothesisMismatch, ode.OdeMismatch, KeyError, ValueError, IndexError) as e:
         known = (CheckError, binding.BindError, formula.FormulaMismatch, domain.DomainMismatch,
-                 hypothesis.HypothesisMismatch)
+                 hypothesis.HypothesisMismatch, ode.OdeMismatch)
         res.why = f"{type(e).__name__ + ' ' if not isinstance(e, known) else ''}{e}"
         return res
     res.charts = charts if catalogue is not None else [0, 0]
