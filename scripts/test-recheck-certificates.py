@@ -30,9 +30,10 @@ def recheck(paths, *opts):
     return p.returncode, p.stdout + p.stderr
 
 
-def prove(cid, tmp):
+def prove(cid, tmp, catalogue=None):
     path = os.path.join(tmp, f"{cid}.cert")
-    p = subprocess.run([BIN, "prove", cid, "--certificate", path], capture_output=True, text=True, cwd=ROOT)
+    extra = ["--catalogue", catalogue] if catalogue else []
+    p = subprocess.run([BIN, "prove", cid, "--certificate", path, *extra], capture_output=True, text=True, cwd=ROOT)
     if p.returncode != 0 or not os.path.exists(path):
         raise SystemExit(f"cannot write the certificate of {cid}: {p.stderr.strip()}")
     with open(path, encoding="utf-8") as fh:
@@ -53,11 +54,11 @@ def without(text, pattern):
     return "\n".join(lines[:i] + lines[i + 1:]) + "\n"
 
 
-def changed_catalogue(tmp, claim_ids=None):
-    """A copy of the catalogue with the right side (or expr, or an existence claim's first
-    equation) of the claims changed."""
-    cat = os.path.join(tempfile.mkdtemp(dir=tmp), "identities")
-    shutil.copytree(os.path.join(ROOT, "identities"), cat)
+def changed_catalogue(tmp, claim_ids=None, source="identities"):
+    """A copy of the catalogue (identities, or the directory source) with the right side
+    (or expr, or an existence claim's first equation) of the claims changed."""
+    cat = os.path.join(tempfile.mkdtemp(dir=tmp), os.path.basename(source))
+    shutil.copytree(os.path.join(ROOT, source), cat)
     for f in os.listdir(cat):
         if not f.endswith(".toml"):
             continue
@@ -446,6 +447,68 @@ class Cases:
         self.expect(f"{cid} against a catalogue copy whose expr is changed is rejected",
                     recheck([write(t, "as-cat.cert", cert)], "--catalogue", cat), False, "claim.expr")
 
+    def ode_proofs(self):
+        """Proofs by the uniqueness of the solution of an ODE (module certcheck.ode), on
+        the DLMF catalogue of examples/dlmf-jacobi."""
+        t, dlmf = self.tmp, "examples/dlmf-jacobi"
+        ids = [f"dlmf.22.7.{n}" for n in ("2.sn", "3.cn", "4.dn", "6.sn", "7.cn", "8.dn")] + \
+              [f"dlmf.22.17.{n}" for n in ("2.sn", "3.cn", "4.dn")]
+        d = tempfile.mkdtemp(dir=t)
+        certs = {cid: prove(cid, d, dlmf) for cid in ids}
+        self.expect("the 9 proofs by the ODE method of the DLMF catalogue (Landen, Gauss, the reciprocal "
+                    "modulus) recheck, their formulas evaluated", recheck([d], "--catalogue", dlmf), True,
+                    "9 of 9 certificates recheck (9 evaluated")
+        cid = "dlmf.22.7.2.sn"
+        cert = certs[cid]
+
+        def ode_case(what, text, why, catalogue=dlmf):
+            self.expect(f"{cid} {what} is rejected", recheck([write(t, "ode.cert", text)], "--catalogue", catalogue),
+                        False, why)
+        ode_case("with y'(0) stated 2", cert.replace("ode initial y0=(0)/(1) y1=(1)/(1)",
+                                                     "ode initial y0=(0)/(1) y1=(2)/(1)"), "the `ode initial` values")
+        singular = re.sub(r"^ode equation (.*)$", r"ode equation y0*(\1)", cert, count=1, flags=re.M)
+        ode_case("with the ODE multiplied by y (dP/dy'' = y = 0 at u = 0: a singular starting point)",
+                 singular.replace("ode nonsingular (1)/(1)", "ode nonsingular (0)/(1)"),
+                 "singular starting point: dP/dy2 vanishes")
+        ode_case("with the ODE multiplied by y and dP/dy'' stated 1", singular, "is not dP/dy2 at the initial point")
+        ode_case("with the lhs's y'' stated as that of -sn", re.sub(r"^(ode side lhs y0=\S+ y1=\S+ y2=\()",
+                                                                      r"\1-1*", cert, count=1, flags=re.M),
+                 "the lhs's y2 is not its derivative computed here")
+        ode_case("with the variable k (a root's radicand depends on it)",
+                 cert.replace("ode var u at 0", "ode var k at 0"), "depends on k")
+        cat = changed_catalogue(t, {cid}, dlmf)
+        ode_case("against a catalogue copy whose rhs is changed", cert, "claim.rhs differs", cat)
+        ode_case("with the same change in its source line and the catalogue copy",
+                 cert.replace('source claim.rhs "', 'source claim.rhs "2 * '),
+                 "the rhs's y0 is not the claim's formula evaluated here", cat)
+        ctl = certs["dlmf.22.17.2.sn"].replace('"dlmf.22.17.2.sn"', '"dlmf.22.17.2.control"')
+        ctl = ctl.replace('source claim.rhs "k * sn(u/k, k)"', 'source claim.rhs "sn(u/k, k) / k"')
+        self.expect("the certificate of DLMF 22.17.2 bound to its misprinted control claim is rejected",
+                    recheck([write(t, "ode.cert", ctl)], "--catalogue", dlmf), False,
+                    "the rhs's y0 is not the claim's formula evaluated here")
+        ode_case("with the ODE's cubic coefficient 2k^2 changed to 3k^2",
+                 cert.replace("(2*k**2)/(1)*y0**3", "(3*k**2)/(1)*y0**3"), "does not satisfy the ODE")
+        self.odd_solution(certs["dlmf.22.17.2.sn"], t)
+
+    def odd_solution(self, cert, t):
+        """sn(u, 1/k) = -k sn(u/k, k): both sides solve the same ODE (its cubic is odd),
+        with y'(0) = 1 and -1."""
+        cat = os.path.join(tempfile.mkdtemp(dir=t), "dlmf-jacobi")
+        shutil.copytree(os.path.join(ROOT, "examples", "dlmf-jacobi"), cat)
+        path = os.path.join(cat, "22.x17-reciprocal-modulus.toml")
+        with open(path, encoding="utf-8") as fh:
+            toml = fh.read()
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write(toml.replace('rhs = "k * sn(u/k, k)"', 'rhs = "-k * sn(u/k, k)"'))
+        lines = []
+        for ln in cert.splitlines():
+            if ln.startswith("ode side rhs "):
+                ln = ln.replace(")/(1)", ")/(-1)").replace(")/(k)", ")/(-k)")
+            lines.append(ln.replace('source claim.rhs "k * sn', 'source claim.rhs "-k * sn'))
+        self.expect("dlmf.22.17.2.sn against a copy with the rhs negated (the same ODE, y'(0) = 1 and -1) is "
+                    "rejected", recheck([write(t, "odd.cert", "\n".join(lines) + "\n")], "--catalogue", cat), False,
+                    "the initial values differ at u = 0")
+
     def all_changed(self, cert_dir):
         certs = [f for f in os.listdir(cert_dir) if f.endswith(".cert")]
         cat = changed_catalogue(self.tmp)
@@ -468,6 +531,7 @@ def main(argv):
         cases.multiples_of_roots()
         cases.sign_evidence()
         cases.power_series()
+        cases.ode_proofs()
         if argv[1:2] == ["--all"] and len(argv) == 3:
             cases.all_changed(argv[2])
     print(f"{cases.count - len(cases.failures)} of {cases.count} recheck tests pass")
