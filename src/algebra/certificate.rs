@@ -35,6 +35,19 @@
 //! assume branch step_gamma1 "…"    # a fact the derivation rests on (branch, lemma, hypothesis)
 //! ```
 //!
+//! A proof by the uniqueness of the solution of an ODE (module [`super::ode`]) writes,
+//! after its `field` and `root` lines, no nodes but these lines, which the checker
+//! (`scripts/certcheck/ode.py`) recomputes from the claim's own formulas:
+//!
+//! ```text
+//! jet jsn_1 jcn_1 jdn_1 arg=(u)/(k) k=(k)/(1)   # sn, cn, dn of (arg, k) as symbols S, C, D
+//! ode var u at 0                                # the ODE's variable and initial point
+//! ode equation y2 - (c1)/(1)*y0 - (c3)/(1)*y0**3   # P(y0, y1, y2) = 0, y_j the j-th derivative
+//! ode side lhs y0=(…) y1=(…) y2=(…)             # a side and its derivatives
+//! ode initial y0=(0)/(1) y1=(1)/(1) y2=(0)/(1)  # the common values at the initial point
+//! ode nonsingular (1)/(1)                       # ∂P/∂y2 there, not 0
+//! ```
+//!
 //! A proof by power series (an asymptotic claim, or an existence claim for small `h`)
 //! writes, instead of `claim` lines, its `series`, `sseries`, `schart`, `sclaim` and
 //! `ssolution` lines (module `series_trace`): every operation that made its

@@ -38,6 +38,13 @@
 //!
 //! A false identity is never proved: either a side does not satisfy the ODE (its
 //! residual's normal form is not 0) or the initial values differ.
+//!
+//! **The certificate** ([`OdeProof::certificate`]) records the jet trios, the ODE as a
+//! polynomial `P(y, y', y'')`, the values of both sides and of their first two
+//! derivatives, the common initial values and `∂P/∂y'' = 1` at the initial point; the
+//! checker (`scripts/certcheck/ode.py`) evaluates the sides from the claim's formulas
+//! and recomputes the derivatives, the residuals, the initial values and
+//! `∂P/∂y''` itself.
 
 use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
