@@ -489,6 +489,30 @@ class Cases:
         ode_case("with the ODE's cubic coefficient 2k^2 changed to 3k^2",
                  cert.replace("(2*k**2)/(1)*y0**3", "(3*k**2)/(1)*y0**3"), "does not satisfy the ODE")
         self.odd_solution(certs["dlmf.22.17.2.sn"], t)
+        self.calls(t, dlmf)
+
+    def calls(self, t, dlmf):
+        """ln x and am(u, k) as opaque symbols of `call` lines, their derivatives checked:
+        x'/x and dn(u, k) (DLMF 22.16.3); am(u, 0) = u (DLMF 22.16.4)."""
+        ln = prove("dlmf.22.14.1", t, dlmf)
+        am = prove("dlmf.22.16.3", t, dlmf)
+        am0 = prove("dlmf.22.16.4", t, dlmf)
+        self.expect("dlmf.22.14.1 (d/du of ln(dn - k cn)/k), dlmf.22.16.3 (d/du am = dn) and dlmf.22.16.4 "
+                    "(am(u, 0) = u) recheck, evaluated", recheck([write(t, "ln.cert", ln), write(t, "am.cert", am),
+                                                                   write(t, "am0.cert", am0)], "--catalogue", dlmf),
+                    True, "3 of 3 certificates recheck (3 evaluated")
+        arg = re.search(r"^call (\w+) = ln \((.*)\)/\((.*)\)$", ln, flags=re.M)
+        # ln(X + 1) in place of ln X
+        wrong = ln.replace(arg.group(0), f"call {arg.group(1)} = ln ({arg.group(2)} + {arg.group(3)})/({arg.group(3)})")
+        self.expect("dlmf.22.14.1 with the argument of its ln changed is rejected",
+                    recheck([write(t, "ln-bad.cert", wrong)], "--catalogue", dlmf), False, "is not X'/X of ln X")
+        dv = re.search(r"^dvar u (am\w*) = .*$", am, flags=re.M)
+        self.expect("dlmf.22.16.3 with d(am)/du stated as 2 is rejected",
+                    recheck([write(t, "am-bad.cert", am.replace(dv.group(0), f"dvar u {dv.group(1)} = (2)/(1)"))],
+                            "--catalogue", dlmf), False, "is not dn(u, k) u'")
+        self.expect("dlmf.22.16.3 without its call line is rejected",
+                    recheck([write(t, "am-none.cert", without(am, r"call "))], "--catalogue", dlmf), False,
+                    "cannot check the derivative")
 
     def odd_solution(self, cert, t):
         """sn(u, 1/k) = -k sn(u/k, k): both sides solve the same ODE (its cubic is odd),

@@ -7,6 +7,8 @@
 //! ```text
 //! field A indeterminate            # a field variable and its kind (sn, zeta, K, Kp, named, …)
 //! field delta param real           # an opaque symbol declared real (a real chart parameter)
+//! call ln1 = ln (N)/(D)            # an opaque symbol for ln(N/D) (derivative (N/D)'/(N/D))
+//! call am1 = am (u)/(1) (k)/(1)    # an opaque symbol for am(u, k) (derivative dn(u, k)·u')
 //! root r_1 = A - C                 # a root symbol: r_1**2 = A - C
 //! named k = (expression)           # a named quantity's definition (for derivatives)
 //! base b_1 k=(…) s=sn_1 c=(…) d=(…) arg=(…)   # an elliptic base argument
@@ -507,6 +509,15 @@ impl Ring {
                     v.name,
                     nf_text(&def.num, &def.den, names)
                 );
+            }
+        }
+        // the calls with a derivative rule: ln x (x'/x) and am(u, k) (dn(u, k)·u')
+        for (j, (f, args)) in &st.opaque_args {
+            if f == "ln" || f == "am" {
+                let args: Vec<String> = (args.iter())
+                    .map(|(v, _)| nf_text(&v.num, &v.den, names))
+                    .collect();
+                let _ = writeln!(out, "call {} = {f} {}", st.vars[*j].name, args.join(" "));
             }
         }
         for r in &st.roots {
