@@ -105,6 +105,13 @@ This script:
     ...) at a real modulus proved in 0 < k**2 < 1 enters through its square, as the
     parameter sn**2 = u/(1 + u), u > 0 (DLMF 22.2.4, 22.4.1), where it occurs to even
     powers only;
+  * `call NAME = ln (X)` / `call NAME = am (U) (K)`: an opaque symbol for that call; the
+    claim's ln and am evaluate to it, and its `dvar` lines must be X'/X, and dn(U, K) U'
+    for K independent of the variable (DLMF 22.16.3); am(u, 0) = u (DLMF 22.16.4);
+  * a proof by the uniqueness of the solution of an ODE (`jet` and `ode` lines, module
+    certcheck.ode): both sides evaluated from the claim's formulas, differentiated here,
+    solve the stated polynomial ODE, agree at the initial point with their derivatives,
+    and dP/dy^(n) is not 0 there;
   * finally every claim lhs = rhs.
 The arithmetic is SymPy's sparse polynomial arithmetic (sympy.polys.rings over ZZ, on
 SymPy's own integers or gmpy2, never python-flint): a value is a quotient of two
