@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """Tests of the second system (scripts/recheck-certificates.py): what it must reject.
 
-Usage: scripts/test-recheck-certificates.py [--all CERT_DIR]
+Usage: scripts/test-recheck-certificates.py [--all CERT_DIR] [--all-dlmf DLMF_CERT_DIR]
 
 Each case is a certificate that must fail the recheck, for the reason named; the
 certificates are the small files of tests/data/certificates/ or copies of certificates
 that target/release/eulertop writes, changed in one place.  With --all, also: after the
 right side (or the expression) of every claim is changed in a copy of the catalogue,
-every certificate of CERT_DIR fails.  Exit status 0 when every case behaves; not run by
+every certificate of CERT_DIR fails; with --all-dlmf, the same for the certificates of
+examples/dlmf-jacobi in DLMF_CERT_DIR against a changed copy of that catalogue.  Exit status 0 when every case behaves; not run by
 `cargo test` (CI runs it as its own step).
 """
 
@@ -533,9 +534,9 @@ class Cases:
                     "rejected", recheck([write(t, "odd.cert", "\n".join(lines) + "\n")], "--catalogue", cat), False,
                     "the initial values differ at u = 0")
 
-    def all_changed(self, cert_dir):
+    def all_changed(self, cert_dir, source="identities"):
         certs = [f for f in os.listdir(cert_dir) if f.endswith(".cert")]
-        cat = changed_catalogue(self.tmp)
+        cat = changed_catalogue(self.tmp, source=source)
         status, output = recheck([cert_dir], "--catalogue", cat)
         passed = [ln for ln in output.splitlines() if ln.startswith("OK")]
         self.expect(f"with every claim's rhs/expr changed in a catalogue copy, none of the {len(certs)} "
@@ -556,8 +557,11 @@ def main(argv):
         cases.sign_evidence()
         cases.power_series()
         cases.ode_proofs()
-        if argv[1:2] == ["--all"] and len(argv) == 3:
-            cases.all_changed(argv[2])
+        opts = dict(zip(argv[1::2], argv[2::2]))
+        if "--all" in opts:
+            cases.all_changed(opts["--all"])
+        if "--all-dlmf" in opts:
+            cases.all_changed(opts["--all-dlmf"], os.path.join("examples", "dlmf-jacobi"))
     print(f"{cases.count - len(cases.failures)} of {cases.count} recheck tests pass")
     return 1 if cases.failures else 0
 
