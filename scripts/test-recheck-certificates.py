@@ -8,8 +8,8 @@ certificates are the small files of tests/data/certificates/ or copies of certif
 that target/release/eulertop writes, changed in one place.  With --all, also: after the
 right side (or the expression) of every claim is changed in a copy of the catalogue,
 every certificate of CERT_DIR fails; with --all-dlmf, the same for the certificates of
-examples/dlmf-jacobi in DLMF_CERT_DIR against a changed copy of that catalogue.  Exit status 0 when every case behaves; not run by
-`cargo test` (CI runs it as its own step).
+examples/dlmf-jacobi in DLMF_CERT_DIR against a changed copy of that catalogue.  Exit
+status 0 when every case behaves; not run by `cargo test` (CI runs it as its own step).
 """
 
 import os
