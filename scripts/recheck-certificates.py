@@ -111,6 +111,13 @@ This script:
     ...) at a real modulus proved in 0 < k**2 < 1 enters through its square, as the
     parameter sn**2 = u/(1 + u), u > 0 (DLMF 22.2.4, 22.4.1), where it occurs to even
     powers only;
+  * `call NAME = ln (X)` / `call NAME = am (U) (K)`: an opaque symbol for that call; the
+    claim's ln and am evaluate to it, and its `dvar` lines must be X'/X, and dn(U, K) U'
+    for K independent of the variable (DLMF 22.16.3); am(u, 0) = u (DLMF 22.16.4);
+  * a proof by the uniqueness of the solution of an ODE (`jet` and `ode` lines, module
+    certcheck.ode): both sides evaluated from the claim's formulas, differentiated here,
+    solve the stated polynomial ODE, agree at the initial point with their derivatives,
+    and dP/dy^(n) is not 0 there;
   * finally every claim lhs = rhs.
 The arithmetic is SymPy's sparse polynomial arithmetic (sympy.polys.rings over ZZ, on
 SymPy's own integers or gmpy2, never python-flint): a value is a quotient of two
@@ -160,7 +167,7 @@ from sympy.polys.rings import ring  # noqa: E402
 assert GROUND_TYPES != "flint", "the recheck must not run on FLINT"
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from certcheck import binding, domain, formula, hypothesis, series, witness  # noqa: E402
+from certcheck import binding, domain, formula, hypothesis, ode, series, witness  # noqa: E402
 
 
 class CheckError(Exception):
@@ -326,6 +333,7 @@ class Cert:
         self.dvar = {}
         self.equiv = {}  # symbol -> the argument with its sn, cn, dn (equal modulo 4K)
         self.inverse = {}  # symbol -> its prescribed k, s, c, d and Z symbol (or None)
+        self.calls = {}  # opaque symbol -> (ln | am, its arguments): `call` lines
         self.vals = {}
         self.params = []  # (name, kind) of the domain's parametrization
         self.pring = None
@@ -1122,6 +1130,8 @@ class Cert:
                                 self.div(self.mul(cd, zf), self.mul(k, kp2)), -1)
                 rhs = self.add(rhs, self.mul(part, dk), -1)
             self.need(self.eq(self.mul(cd, val), rhs), f"d{v}/d{x} is not the derivative of the inverse of sn")
+        elif kind == "opaque" and v in self.calls:
+            self.check_call_dvar(x, v, val)
         elif kind in ("K", "Kp"):
             self.need(self.eq(val, self.const(0)), f"d{v}/d{x} must be 0")
         elif kind == "param" and v != x:
@@ -1132,6 +1142,34 @@ class Cert:
             self.param_dvars.append((x, v))
         else:
             raise CheckError(f"cannot check the derivative of {v} ({kind})")
+
+    def call_line(self, rest):
+        """`call NAME = ln (X)` or `call NAME = am (U) (K)`: an opaque symbol standing for
+        that call (the evaluator's value of the claim's call; its derivative is checked)."""
+        m = re.fullmatch(r"(\w+) = (ln|am)((?: \([^()]*\)/\([^()]*\))+)", rest.strip())
+        self.need(m is not None, f"bad call line {rest[:60]}")
+        name, fn = m.group(1), m.group(2)
+        args = [self.frac(a) for a in re.findall(r"\([^()]*\)/\([^()]*\)", m.group(3))]
+        self.need(self.kinds.get(name) == "opaque" and name not in self.calls and name not in self.inverse,
+                  f"call {name}: not an opaque symbol of its own")
+        self.need(len(args) == (1 if fn == "ln" else 2), f"call {name}: {fn} with {len(args)} argument(s)")
+        self.calls[name] = (fn, args)
+
+    def check_call_dvar(self, x, v, val):
+        """d/dx of a call: ln X has X'/X; am(U, K) has dn(U, K) U' for K independent of x
+        (DLMF 22.16.3), dn recomputed from the bases (the evaluator's rule)."""
+        from certcheck.evaluate import Evaluator
+        fn, args = self.calls[v]
+        if fn == "ln":
+            self.need(self.eq(self.mul(val, args[0]), self.dfrac(args[0], x)), f"d{v}/d{x} is not X'/X of ln X")
+            return
+        u, k = args
+        self.need(not self.dfrac(k, x).num, f"d{v}/d{x}: the modulus of am depends on {x}")
+        try:
+            dn = Evaluator(self, []).elliptic("dn", u, k)
+        except Exception as e:  # noqa: BLE001 - dn not recomputed here: the derivative is not checked
+            raise CheckError(f"d{v}/d{x}: dn of am's argument is not recomputed here ({e})")
+        self.need(self.eq(val, self.mul(dn, self.dfrac(u, x))), f"d{v}/d{x} is not dn(u, k) u' (DLMF 22.16.3)")
 
     # ---- nodes --------------------------------------------------------------------
     def node(self, rest):
@@ -1222,8 +1260,8 @@ class Cert:
             self.node(rest)
         elif word == "equiv":
             self.equivalence(rest)
-        elif word == "inverse":
-            self.inverse_of_sn(rest)
+        elif word in ("inverse", "call"):
+            (self.inverse_of_sn if word == "inverse" else self.call_line)(rest)
         elif word == "param":
             name, kind = rest.split()
             if (name, kind) not in self.params:  # a later case of the proof repeats them
@@ -1829,7 +1867,14 @@ def check_text(name, text, catalogue=None):
         if catalogue is not None:
             res.claim, claim, src = binding.bind(text, catalogue)
         assumes, modes, charts, used, conditions = [], set(), [0, 0], {}, []
-        for first, part in parts(text):
+        if any(line.startswith("ode ") for line in text.splitlines()):
+            # a proof by the uniqueness of the solution of an ODE (module certcheck.ode)
+            if catalogue is None:
+                raise CheckError("a proof by the ODE method is rechecked bound to its claim only")
+            cert = Cert(name)
+            modes.add(ode.check(cert, text, src))
+            claims, checked, conditions, res.cases = 1, cert.checked, [[]], [""]
+        for first, part in ([] if claims else parts(text)):
             cert = Cert(name)
             claims += cert.run(part, first)
             checked += cert.checked
@@ -1852,9 +1897,9 @@ def check_text(name, text, catalogue=None):
         res.binding = "unbound" if catalogue is None else (
             "evaluated" if modes == {"evaluated"} else sorted(m for m in modes if m != "evaluated")[0])
     except (CheckError, binding.BindError, formula.FormulaMismatch, domain.DomainMismatch,
-            hypothesis.HypothesisMismatch, KeyError, ValueError, IndexError) as e:
+            hypothesis.HypothesisMismatch, ode.OdeMismatch, KeyError, ValueError, IndexError) as e:
         known = (CheckError, binding.BindError, formula.FormulaMismatch, domain.DomainMismatch,
-                 hypothesis.HypothesisMismatch)
+                 hypothesis.HypothesisMismatch, ode.OdeMismatch)
         res.why = f"{type(e).__name__ + ' ' if not isinstance(e, known) else ''}{e}"
         return res
     res.charts = charts if catalogue is not None else [0, 0]

@@ -1,14 +1,15 @@
 #!/usr/bin/env python3
 """Tests of the second system (scripts/recheck-certificates.py): what it must reject.
 
-Usage: scripts/test-recheck-certificates.py [--all CERT_DIR]
+Usage: scripts/test-recheck-certificates.py [--all CERT_DIR] [--all-dlmf DLMF_CERT_DIR]
 
 Each case is a certificate that must fail the recheck, for the reason named; the
 certificates are the small files of tests/data/certificates/ or copies of certificates
 that target/release/eulertop writes, changed in one place.  With --all, also: after the
 right side (or the expression) of every claim is changed in a copy of the catalogue,
-every certificate of CERT_DIR fails.  Exit status 0 when every case behaves; not run by
-`cargo test` (CI runs it as its own step).
+every certificate of CERT_DIR fails; with --all-dlmf, the same for the certificates of
+examples/dlmf-jacobi in DLMF_CERT_DIR against a changed copy of that catalogue.  Exit
+status 0 when every case behaves; not run by `cargo test` (CI runs it as its own step).
 """
 
 import os
@@ -30,9 +31,10 @@ def recheck(paths, *opts):
     return p.returncode, p.stdout + p.stderr
 
 
-def prove(cid, tmp):
+def prove(cid, tmp, catalogue=None):
     path = os.path.join(tmp, f"{cid}.cert")
-    p = subprocess.run([BIN, "prove", cid, "--certificate", path], capture_output=True, text=True, cwd=ROOT)
+    extra = ["--catalogue", catalogue] if catalogue else []
+    p = subprocess.run([BIN, "prove", cid, "--certificate", path, *extra], capture_output=True, text=True, cwd=ROOT)
     if p.returncode != 0 or not os.path.exists(path):
         raise SystemExit(f"cannot write the certificate of {cid}: {p.stderr.strip()}")
     with open(path, encoding="utf-8") as fh:
@@ -53,11 +55,11 @@ def without(text, pattern):
     return "\n".join(lines[:i] + lines[i + 1:]) + "\n"
 
 
-def changed_catalogue(tmp, claim_ids=None):
-    """A copy of the catalogue with the right side (or expr, or an existence claim's first
-    equation) of the claims changed."""
-    cat = os.path.join(tempfile.mkdtemp(dir=tmp), "identities")
-    shutil.copytree(os.path.join(ROOT, "identities"), cat)
+def changed_catalogue(tmp, claim_ids=None, source="identities"):
+    """A copy of the catalogue (identities, or the directory source) with the right side
+    (or expr, or an existence claim's first equation) of the claims changed."""
+    cat = os.path.join(tempfile.mkdtemp(dir=tmp), os.path.basename(source))
+    shutil.copytree(os.path.join(ROOT, source), cat)
     for f in os.listdir(cat):
         if not f.endswith(".toml"):
             continue
@@ -511,9 +513,95 @@ class Cases:
         self.expect(f"{neg} (a negation: gamma_0 is not Poisson) is proved by its inner identity's witness",
                     recheck([npath]), True, "PROVED (negation)")
 
-    def all_changed(self, cert_dir):
+    def ode_proofs(self):
+        """Proofs by the uniqueness of the solution of an ODE (module certcheck.ode), on
+        the DLMF catalogue of examples/dlmf-jacobi."""
+        t, dlmf = self.tmp, "examples/dlmf-jacobi"
+        ids = [f"dlmf.22.7.{n}" for n in ("2.sn", "3.cn", "4.dn", "6.sn", "7.cn", "8.dn")] + \
+              [f"dlmf.22.17.{n}" for n in ("2.sn", "3.cn", "4.dn")]
+        d = tempfile.mkdtemp(dir=t)
+        certs = {cid: prove(cid, d, dlmf) for cid in ids}
+        self.expect("the 9 proofs by the ODE method of the DLMF catalogue (Landen, Gauss, the reciprocal "
+                    "modulus) recheck, their formulas evaluated", recheck([d], "--catalogue", dlmf), True,
+                    "9 of 9 certificates recheck (9 evaluated")
+        cid = "dlmf.22.7.2.sn"
+        cert = certs[cid]
+
+        def ode_case(what, text, why, catalogue=dlmf):
+            self.expect(f"{cid} {what} is rejected", recheck([write(t, "ode.cert", text)], "--catalogue", catalogue),
+                        False, why)
+        ode_case("with y'(0) stated 2", cert.replace("ode initial y0=(0)/(1) y1=(1)/(1)",
+                                                     "ode initial y0=(0)/(1) y1=(2)/(1)"), "the `ode initial` values")
+        singular = re.sub(r"^ode equation (.*)$", r"ode equation y0*(\1)", cert, count=1, flags=re.M)
+        ode_case("with the ODE multiplied by y (dP/dy'' = y = 0 at u = 0: a singular starting point)",
+                 singular.replace("ode nonsingular (1)/(1)", "ode nonsingular (0)/(1)"),
+                 "singular starting point: dP/dy2 vanishes")
+        ode_case("with the ODE multiplied by y and dP/dy'' stated 1", singular, "is not dP/dy2 at the initial point")
+        ode_case("with the lhs's y'' stated as that of -sn", re.sub(r"^(ode side lhs y0=\S+ y1=\S+ y2=\()",
+                                                                      r"\1-1*", cert, count=1, flags=re.M),
+                 "the lhs's y2 is not its derivative computed here")
+        ode_case("with the variable k (a root's radicand depends on it)",
+                 cert.replace("ode var u at 0", "ode var k at 0"), "depends on k")
+        cat = changed_catalogue(t, {cid}, dlmf)
+        ode_case("against a catalogue copy whose rhs is changed", cert, "claim.rhs differs", cat)
+        ode_case("with the same change in its source line and the catalogue copy",
+                 cert.replace('source claim.rhs "', 'source claim.rhs "2 * '),
+                 "the rhs's y0 is not the claim's formula evaluated here", cat)
+        ctl = certs["dlmf.22.17.2.sn"].replace('"dlmf.22.17.2.sn"', '"dlmf.22.17.2.control"')
+        ctl = ctl.replace('source claim.rhs "k * sn(u/k, k)"', 'source claim.rhs "sn(u/k, k) / k"')
+        self.expect("the certificate of DLMF 22.17.2 bound to its misprinted control claim is rejected",
+                    recheck([write(t, "ode.cert", ctl)], "--catalogue", dlmf), False,
+                    "the rhs's y0 is not the claim's formula evaluated here")
+        ode_case("with the ODE's cubic coefficient 2k^2 changed to 3k^2",
+                 cert.replace("(2*k**2)/(1)*y0**3", "(3*k**2)/(1)*y0**3"), "does not satisfy the ODE")
+        self.odd_solution(certs["dlmf.22.17.2.sn"], t)
+        self.calls(t, dlmf)
+
+    def calls(self, t, dlmf):
+        """ln x and am(u, k) as opaque symbols of `call` lines, their derivatives checked:
+        x'/x and dn(u, k) (DLMF 22.16.3); am(u, 0) = u (DLMF 22.16.4)."""
+        ln = prove("dlmf.22.14.1", t, dlmf)
+        am = prove("dlmf.22.16.3", t, dlmf)
+        am0 = prove("dlmf.22.16.4", t, dlmf)
+        self.expect("dlmf.22.14.1 (d/du of ln(dn - k cn)/k), dlmf.22.16.3 (d/du am = dn) and dlmf.22.16.4 "
+                    "(am(u, 0) = u) recheck, evaluated", recheck([write(t, "ln.cert", ln), write(t, "am.cert", am),
+                                                                   write(t, "am0.cert", am0)], "--catalogue", dlmf),
+                    True, "3 of 3 certificates recheck (3 evaluated")
+        arg = re.search(r"^call (\w+) = ln \((.*)\)/\((.*)\)$", ln, flags=re.M)
+        # ln(X + 1) in place of ln X
+        wrong = ln.replace(arg.group(0), f"call {arg.group(1)} = ln ({arg.group(2)} + {arg.group(3)})/({arg.group(3)})")
+        self.expect("dlmf.22.14.1 with the argument of its ln changed is rejected",
+                    recheck([write(t, "ln-bad.cert", wrong)], "--catalogue", dlmf), False, "is not X'/X of ln X")
+        dv = re.search(r"^dvar u (am\w*) = .*$", am, flags=re.M)
+        self.expect("dlmf.22.16.3 with d(am)/du stated as 2 is rejected",
+                    recheck([write(t, "am-bad.cert", am.replace(dv.group(0), f"dvar u {dv.group(1)} = (2)/(1)"))],
+                            "--catalogue", dlmf), False, "is not dn(u, k) u'")
+        self.expect("dlmf.22.16.3 without its call line is rejected",
+                    recheck([write(t, "am-none.cert", without(am, r"call "))], "--catalogue", dlmf), False,
+                    "cannot check the derivative")
+
+    def odd_solution(self, cert, t):
+        """sn(u, 1/k) = -k sn(u/k, k): both sides solve the same ODE (its cubic is odd),
+        with y'(0) = 1 and -1."""
+        cat = os.path.join(tempfile.mkdtemp(dir=t), "dlmf-jacobi")
+        shutil.copytree(os.path.join(ROOT, "examples", "dlmf-jacobi"), cat)
+        path = os.path.join(cat, "22.x17-reciprocal-modulus.toml")
+        with open(path, encoding="utf-8") as fh:
+            toml = fh.read()
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write(toml.replace('rhs = "k * sn(u/k, k)"', 'rhs = "-k * sn(u/k, k)"'))
+        lines = []
+        for ln in cert.splitlines():
+            if ln.startswith("ode side rhs "):
+                ln = ln.replace(")/(1)", ")/(-1)").replace(")/(k)", ")/(-k)")
+            lines.append(ln.replace('source claim.rhs "k * sn', 'source claim.rhs "-k * sn'))
+        self.expect("dlmf.22.17.2.sn against a copy with the rhs negated (the same ODE, y'(0) = 1 and -1) is "
+                    "rejected", recheck([write(t, "odd.cert", "\n".join(lines) + "\n")], "--catalogue", cat), False,
+                    "the initial values differ at u = 0")
+
+    def all_changed(self, cert_dir, source="identities"):
         certs = [f for f in os.listdir(cert_dir) if f.endswith(".cert")]
-        cat = changed_catalogue(self.tmp)
+        cat = changed_catalogue(self.tmp, source=source)
         status, output = recheck([cert_dir], "--catalogue", cat)
         passed = [ln for ln in output.splitlines() if ln.startswith("OK")]
         self.expect(f"with every claim's rhs/expr changed in a catalogue copy, none of the {len(certs)} "
@@ -535,8 +623,12 @@ def main(argv):
         cases.sign_evidence()
         cases.power_series()
         cases.witnesses()
-        if argv[1:2] == ["--all"] and len(argv) == 3:
-            cases.all_changed(argv[2])
+        cases.ode_proofs()
+        opts = dict(zip(argv[1::2], argv[2::2]))
+        if "--all" in opts:
+            cases.all_changed(opts["--all"])
+        if "--all-dlmf" in opts:
+            cases.all_changed(opts["--all-dlmf"], os.path.join("examples", "dlmf-jacobi"))
     print(f"{cases.count - len(cases.failures)} of {cases.count} recheck tests pass")
     return 1 if cases.failures else 0
 

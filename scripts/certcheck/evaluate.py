@@ -294,6 +294,8 @@ class Evaluator:
             return self.skew(v[0][1])
         if name == "sqrt":
             return self.sqrt(self.scalar(v[0]))
+        if name in ("ln", "am"):
+            return self.call_symbol(name, [self.scalar(x) for x in v])
         if name == "inv" and self.kind(v[0]) == "real":
             return c.inv(v[0])
         if name == "I3":
@@ -364,6 +366,16 @@ class Evaluator:
             return self.c.elliptic(f, u, table, combo, 0, 0)
         except Exception:  # noqa: BLE001 - not the stated combination: not evaluated here
             return None
+
+    def call_symbol(self, name, args):
+        """ln x or am(u, k): the certificate's opaque symbol of that call (a `call` line,
+        whose derivative the recheck checks), or am(u, 0) = u (DLMF 22.16.4)."""
+        if name == "am" and len(args) == 2 and self.c.rational(args[1]) == 0:
+            return args[0]
+        for sym, (fn, argv) in getattr(self.c, "calls", {}).items():
+            if fn == name and len(argv) == len(args) and all(self.c.eq(a, b) for a, b in zip(argv, args)):
+                return self.c.frac(sym)
+        raise Unsupported(f"{name} at arguments of no call line")
 
     def implicit(self, name, args):
         """An implicit map's value where the certificate's chart gives it: at arguments

@@ -7,6 +7,8 @@
 //! ```text
 //! field A indeterminate            # a field variable and its kind (sn, zeta, K, Kp, named, …)
 //! field delta param real           # an opaque symbol declared real (a real chart parameter)
+//! call ln1 = ln (N)/(D)            # an opaque symbol for ln(N/D) (derivative (N/D)'/(N/D))
+//! call am1 = am (u)/(1) (k)/(1)    # an opaque symbol for am(u, k) (derivative dn(u, k)·u')
 //! root r_1 = A - C                 # a root symbol: r_1**2 = A - C
 //! named k = (expression)           # a named quantity's definition (for derivatives)
 //! base b_1 k=(…) s=sn_1 c=(…) d=(…) arg=(…)   # an elliptic base argument
@@ -38,6 +40,19 @@
 //! at r_1 ~ 0.70710678 0            # a root's value there, to pick its branch
 //! part "M3" > 0                    # a proof by parts: the condition of this part
 //! assume branch step_gamma1 "…"    # a fact the derivation rests on (branch, lemma, hypothesis)
+//! ```
+//!
+//! A proof by the uniqueness of the solution of an ODE (module [`super::ode`]) writes,
+//! after its `field` and `root` lines, no nodes but these lines, which the checker
+//! (`scripts/certcheck/ode.py`) recomputes from the claim's own formulas:
+//!
+//! ```text
+//! jet jsn_1 jcn_1 jdn_1 arg=(u)/(k) k=(k)/(1)   # sn, cn, dn of (arg, k) as symbols S, C, D
+//! ode var u at 0                                # the ODE's variable and initial point
+//! ode equation y2 - (c1)/(1)*y0 - (c3)/(1)*y0**3   # P(y0, y1, y2) = 0, y_j the j-th derivative
+//! ode side lhs y0=(…) y1=(…) y2=(…)             # a side and its derivatives
+//! ode initial y0=(0)/(1) y1=(1)/(1) y2=(0)/(1)  # the common values at the initial point
+//! ode nonsingular (1)/(1)                       # ∂P/∂y2 there, not 0
 //! ```
 //!
 //! A proof by power series (an asymptotic claim, or an existence claim for small `h`)
@@ -531,6 +546,15 @@ impl Ring {
                     v.name,
                     nf_text(&def.num, &def.den, names)
                 );
+            }
+        }
+        // the calls with a derivative rule: ln x (x'/x) and am(u, k) (dn(u, k)·u')
+        for (j, (f, args)) in &st.opaque_args {
+            if f == "ln" || f == "am" {
+                let args: Vec<String> = (args.iter())
+                    .map(|(v, _)| nf_text(&v.num, &v.den, names))
+                    .collect();
+                let _ = writeln!(out, "call {} = {f} {}", st.vars[*j].name, args.join(" "));
             }
         }
         for r in &st.roots {

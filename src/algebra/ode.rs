@@ -38,6 +38,13 @@
 //!
 //! A false identity is never proved: either a side does not satisfy the ODE (its
 //! residual's normal form is not 0) or the initial values differ.
+//!
+//! **The certificate** ([`OdeProof::certificate`]) records the jet trios, the ODE as a
+//! polynomial `P(y, y', y'')`, the values of both sides and of their first two
+//! derivatives, the common initial values and `∂P/∂y'' = 1` at the initial point; the
+//! checker (`scripts/certcheck/ode.py`) evaluates the sides from the claim's formulas
+//! and recomputes the derivatives, the residuals, the initial values and
+//! `∂P/∂y''` itself.
 
 use super::error::{AlgResult, AlgebraError};
 use super::flint::Poly;
@@ -55,6 +62,10 @@ pub struct OdeProof {
     pub source: String,
     /// `y(0)` and `y'(0)` of both sides (equal).
     pub initial: [String; 2],
+    /// The proof's lines of a certificate (module [`super::certificate`]): the symbols,
+    /// the jet trios, the ODE, the values of both sides and of their derivatives, the
+    /// initial values and the nonsingularity value; the caller adds the header.
+    pub certificate: String,
 }
 
 /// Why the method did not prove the identity.
@@ -128,8 +139,9 @@ fn ode_of(x: &Sym, side: &Sym) -> AlgResult<Option<Ode>> {
     }))
 }
 
-/// `y'' − a²Φ(y)` of `side`, reduced modulo the jets' relations, is 0; returns `y'`.
-fn satisfies(x: &Sym, ode: &Ode, side: &Sym, which: &str) -> OdeResult<Sym> {
+/// `y'' − a²Φ(y)` of `side`, reduced modulo the jets' relations, is 0; returns `y'` and
+/// `y''`.
+fn satisfies(x: &Sym, ode: &Ode, side: &Sym, which: &str) -> OdeResult<(Sym, Sym)> {
     let alg = |e: AlgebraError| format!("{which}: {e}");
     let ring = side.ring();
     let ix = (x.as_field_var()).ok_or_else(|| "the variable is not a symbol".to_string())?;
@@ -145,7 +157,7 @@ fn satisfies(x: &Sym, ode: &Ode, side: &Sym, which: &str) -> OdeResult<Sym> {
             reduced.render_short(120)
         ));
     }
-    Ok(d1)
+    Ok((d1, d2))
 }
 
 /// Proves `lhs = rhs` as functions of the indeterminate `x` by the uniqueness of the
@@ -186,10 +198,13 @@ pub fn prove_by_ode(x: &Sym, lhs: &Sym, rhs: &Sym) -> OdeResult<OdeProof> {
             }
         },
     };
-    let dl = satisfies(x, &ode, lhs, "lhs")?;
-    let dr = satisfies(x, &ode, rhs, "rhs")?;
+    let (dl, ddl) = satisfies(x, &ode, lhs, "lhs")?;
+    let (dr, ddr) = satisfies(x, &ode, rhs, "rhs")?;
     let y0 = same_at_zero(x, lhs, rhs, "y")?;
     let y1 = same_at_zero(x, &dl, &dr, "y'")?;
+    let y2 = same_at_zero(x, &ddl, &ddr, "y''")?;
+    let sides = [[lhs, &dl, &ddl], [rhs, &dr, &ddr]];
+    let certificate = certificate_lines(x, &ode, sides, [&y0, &y1, &y2]).map_err(alg)?;
     Ok(OdeProof {
         variable: x.render_short(20),
         ode: ode.render().map_err(alg)?,
@@ -199,7 +214,85 @@ pub fn prove_by_ode(x: &Sym, lhs: &Sym, rhs: &Sym) -> OdeResult<OdeProof> {
             x.render_short(20)
         ),
         initial: [y0.render_short(200), y1.render_short(200)],
+        certificate,
     })
+}
+
+/// `(N)/(D)`: a value as the certificate writes it.
+fn frac_text(v: &Sym, names: &[String]) -> String {
+    format!(
+        "({})/({})",
+        v.val.num.render(names),
+        v.val.den.render(names)
+    )
+}
+
+/// The certificate's lines of the proof: `field` and `root` lines of the ring's
+/// symbols, a `jet S C D arg=(…) k=(…)` line per trio, and the `ode` lines: the
+/// variable and the initial point, the ODE as an expression in `y0 = y`, `y1 = y'`,
+/// `y2 = y''` and the symbols, the values `y0`, `y1`, `y2` of each side, the common
+/// initial values and `∂P/∂y2` there (1: the ODE is explicit in `y''`).
+fn certificate_lines(
+    x: &Sym,
+    ode: &Ode,
+    sides: [[&Sym; 3]; 2],
+    init: [&Sym; 3],
+) -> AlgResult<String> {
+    use std::fmt::Write;
+    let ring = x.ring();
+    let names = ring.inner.names();
+    let mut out = String::new();
+    {
+        let st = ring.state();
+        for v in &st.vars {
+            let tag = match v.kind {
+                VarKind::Indeterminate => "indeterminate",
+                VarKind::Jet { .. } => "jet",
+                VarKind::Opaque { constant: true } => "constant",
+                _ => "other",
+            };
+            let _ = writeln!(out, "field {} {tag}", v.name);
+        }
+        for r in &st.roots {
+            let _ = writeln!(out, "root {} = {}", r.name, r.radicand.render(&names));
+        }
+    }
+    for jet in ring.jets() {
+        let (arg, k) = (
+            Sym::from_val(ring, jet.arg, None),
+            Sym::from_val(ring, jet.k, None),
+        );
+        let trio: Vec<String> = (0..3)
+            .map(|f| names[ring.inner.kvar(jet.s + f)].clone())
+            .collect();
+        let _ = writeln!(
+            out,
+            "jet {} arg={} k={}",
+            trio.join(" "),
+            frac_text(&arg, &names),
+            frac_text(&k, &names)
+        );
+    }
+    let (c1, c3) = ode.coefficients()?;
+    let _ = writeln!(out, "ode var {} at 0", x.render());
+    let _ = writeln!(
+        out,
+        "ode equation y2 - {}*y0 - {}*y0**3",
+        frac_text(&c1, &names),
+        frac_text(&c3, &names)
+    );
+    for (which, ys) in ["lhs", "rhs"].iter().zip(sides) {
+        let vals: Vec<String> = (ys.iter().enumerate())
+            .map(|(i, y)| format!("y{i}={}", frac_text(y, &names)))
+            .collect();
+        let _ = writeln!(out, "ode side {which} {}", vals.join(" "));
+    }
+    let vals: Vec<String> = (init.iter().enumerate())
+        .map(|(i, y)| format!("y{i}={}", frac_text(y, &names)))
+        .collect();
+    let _ = writeln!(out, "ode initial {}", vals.join(" "));
+    let _ = writeln!(out, "ode nonsingular (1)/(1)");
+    Ok(out)
 }
 
 /// `f(0) = g(0)` exactly, with nonzero denominators at 0; returns the common value.

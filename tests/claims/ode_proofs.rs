@@ -70,6 +70,18 @@ fn transformations_between_moduli_are_proved_by_the_ode_method() {
                     .iter()
                     .any(|n| n.contains("initial values at u = 0"))
             );
+            // the certificate: the jets, the ODE, both sides' derivatives, the initial
+            // values and the nonsingularity value
+            let cert = p.certificate.as_deref().unwrap_or_default();
+            for line in [
+                "jet ",
+                "ode equation y2 - ",
+                "ode side rhs ",
+                "ode nonsingular ",
+            ] {
+                assert!(cert.contains(line), "{id}: no `{line}` line in\n{cert}");
+            }
+            assert!(p.uncertified.is_empty(), "{id}: {:?}", p.uncertified);
         } else {
             assert!(!p.is_proved(), "{id} was proved: {:?}", p.notes);
         }

@@ -74,10 +74,10 @@ fn no_script_for_a_claim_without_a_certificate_and_an_older_one_is_removed() {
     let path = temp("period.v");
     std::fs::write(&path, "stale").unwrap();
     let p = path.to_str().unwrap();
-    // am(u, 0) = u by its rule, which the certificate format does not record
+    // a shift by a third of K, which the certificate format does not record
     let (code, _, err) = run(&[
         "prove",
-        "dlmf.22.16.4",
+        "dlmf.22.9.13.s3",
         "--catalogue",
         "examples/dlmf-jacobi",
         "--coq",

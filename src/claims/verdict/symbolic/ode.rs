@@ -108,8 +108,10 @@ fn proved(var: &str, p: &OdeProof, ring: &Ring) -> ProofInfo {
     let mut info = ProofInfo::none("");
     info.reason = None;
     info.method = ProofMethod::Ode;
-    info.uncertified =
-        vec!["a proof by the ODE method (certificates record normal-form proofs only)".into()];
+    info.certificate = Some(format!(
+        "# eulertop certificate 1\n# claim: lhs = rhs by the uniqueness of the solution of an ODE in {var}\nclaims 1\n{}",
+        p.certificate
+    ));
     info.notes = ring.notes();
     info.notes.push(format!(
         "the ODE in {var}: {} ({}); both sides satisfy it identically: y'' - a^2*Phi(y) of each reduces to 0 modulo cn^2 = 1 - sn^2, dn^2 = 1 - k^2 sn^2 of every argument",
