@@ -319,9 +319,10 @@ fn prove_one(args: &Args, cat: &Catalogue, claim: &Claim) -> Result<i32, CliErro
 /// and fails.
 fn write_coq(path: &str, cert: Option<&str>, p: &ProofInfo) -> Result<(), CliError> {
     let script = match cert {
-        Some(_) if !p.is_proved() => {
-            Err("the claim is not proved: its certificate is a refutation's, which has no Coq proof".to_string())
-        }
+        Some(_) if !p.is_proved() => Err(
+            "the claim is not proved: its certificate is a refutation's, which has no Coq proof"
+                .to_string(),
+        ),
         Some(c) => super::coq_export::coq_script(c),
         None if p.is_proved() => Err(format!(
             "the certificate format does not record {}",

@@ -296,7 +296,9 @@ fn evidence_block(input: &ReportInput, r: &ClaimResult) -> String {
         }
         s.push('\n');
     }
-    s.push_str(&super::proof_evidence::proof_block(&r.proof, &|t| input.prose(t)));
+    s.push_str(&super::proof_evidence::proof_block(&r.proof, &|t| {
+        input.prose(t)
+    }));
     if let Some(e) = &r.exact {
         let _ = writeln!(
             s,

@@ -471,7 +471,7 @@ fn long_derivations_are_recorded_and_dropped_without_recursion() {
         }
         let expect = &x * &r.integer(DEPTH);
         let cert = r
-            .certificate(&[(acc.clone(), expect.clone())], "long")
+            .certificate(&[(acc.clone(), expect.clone())], "long", None)
             .expect("recorded");
         assert!(cert.lines().count() > DEPTH as usize);
         drop(acc);

@@ -71,7 +71,10 @@ fn a_negation_is_proved_by_a_witness_with_its_certificate() {
     let cert = std::fs::read_to_string(&path).expect("certificate written");
     let _ = std::fs::remove_file(&path);
     // the inner identity's sides, not claimed equal, and the point
-    assert!(cert.contains("\nside t") && !cert.contains("\nclaim t"), "{cert}");
+    assert!(
+        cert.contains("\nside t") && !cert.contains("\nclaim t"),
+        "{cert}"
+    );
     assert!(cert.contains("\nwitness component 1\n"), "{cert}");
     assert!(cert.contains("\nat sn_1 = "), "{cert}");
 }
@@ -87,7 +90,12 @@ fn a_refuted_identity_writes_its_witness_certificate_and_exits_1() {
     assert!(cert.contains("\nwitness component "), "{cert}");
     // a refutation has no Coq proof
     let coq = std::env::temp_dir().join(format!("eulertop-refuted-{}.v", std::process::id()));
-    let (code, _, err) = run(&["prove", "sec2.ET-v.printed", "--coq", coq.to_str().expect("utf-8")]);
+    let (code, _, err) = run(&[
+        "prove",
+        "sec2.ET-v.printed",
+        "--coq",
+        coq.to_str().expect("utf-8"),
+    ]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("no Coq proof"), "{err}");
     assert!(!coq.exists());
