@@ -71,7 +71,7 @@
 use super::base_table::Table;
 use super::flint::Poly;
 use super::node::{Node, Op};
-use super::ring::{Assumption, AssumptionKind, Ring, VarKind, describe_kind};
+use super::ring::{Assumption, AssumptionKind, Ring, State, VarKind, describe_kind};
 use super::sym::Sym;
 use super::val::Val;
 
@@ -548,15 +548,7 @@ impl Ring {
                 );
             }
         }
-        // the calls with a derivative rule: ln x (x'/x) and am(u, k) (dn(u, k)·u')
-        for (j, (f, args)) in &st.opaque_args {
-            if f == "ln" || f == "am" {
-                let args: Vec<String> = (args.iter())
-                    .map(|(v, _)| nf_text(&v.num, &v.den, names))
-                    .collect();
-                let _ = writeln!(out, "call {} = {f} {}", st.vars[*j].name, args.join(" "));
-            }
-        }
+        out.push_str(&call_lines(&st, names));
         for r in &st.roots {
             let _ = writeln!(
                 out,
@@ -576,21 +568,7 @@ impl Ring {
                 f.positive
             );
         }
-        // the inverses of sn, cn, dn: their values and, where the modulus varies, the
-        // symbol Z of their derivative in the modulus
-        for p in &st.prescribed {
-            let z = (st.opaque_zeta.get(&p.var))
-                .map_or("none".to_string(), |&j| st.vars[j].name.clone());
-            let _ = writeln!(
-                out,
-                "inverse {} k={} s={} c={} d={} z={z}",
-                st.vars[p.var].name,
-                nf_text(&p.k.num, &p.k.den, names),
-                nf_text(&p.s.num, &p.s.den, names),
-                nf_text(&p.c.num, &p.c.den, names),
-                nf_text(&p.d.num, &p.d.den, names)
-            );
-        }
+        out.push_str(&inverse_lines(&st, names));
         let i_name = st
             .i_root
             .map_or("none".to_string(), |i| st.roots[i].name.clone());
@@ -603,6 +581,41 @@ impl Ring {
         }
         out
     }
+}
+
+/// The `call` lines: the calls with a derivative rule, `ln x` (x'/x) and `am(u, k)`
+/// (dn(u, k)·u').
+fn call_lines(st: &State, names: &[String]) -> String {
+    let mut out = String::new();
+    for (j, (f, args)) in &st.opaque_args {
+        if f == "ln" || f == "am" {
+            let args: Vec<String> = (args.iter())
+                .map(|(v, _)| nf_text(&v.num, &v.den, names))
+                .collect();
+            let _ = writeln!(out, "call {} = {f} {}", st.vars[*j].name, args.join(" "));
+        }
+    }
+    out
+}
+
+/// The `inverse` lines: the inverses of sn, cn, dn, their values and, where the
+/// modulus varies, the symbol Z of their derivative in the modulus.
+fn inverse_lines(st: &State, names: &[String]) -> String {
+    let mut out = String::new();
+    for p in &st.prescribed {
+        let z =
+            (st.opaque_zeta.get(&p.var)).map_or("none".to_string(), |&j| st.vars[j].name.clone());
+        let _ = writeln!(
+            out,
+            "inverse {} k={} s={} c={} d={} z={z}",
+            st.vars[p.var].name,
+            nf_text(&p.k.num, &p.k.den, names),
+            nf_text(&p.s.num, &p.s.den, names),
+            nf_text(&p.c.num, &p.c.den, names),
+            nf_text(&p.d.num, &p.d.den, names)
+        );
+    }
+    out
 }
 
 /// The `sign tN > 0 [square (A)/(B)] hypothesis LABEL factor (F)/(G)` lines: a sign a

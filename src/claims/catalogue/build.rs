@@ -252,15 +252,19 @@ fn shell(tb: &Table<'_>) -> Result<Claim, LoadError> {
         role: t.role.as_ref().map(|s| Located::of(tb.file, s)),
         uses: t.uses.iter().map(|s| Located::of(tb.file, s)).collect(),
         hint: None,
-        // an inner claim rests on the hypotheses its negation states
-        hypotheses: match (t.hypotheses.is_empty(), o) {
-            (true, Some(o)) => o.hypotheses.clone(),
-            _ => (t.hypotheses.iter())
-                .map(|s| Located::of(tb.file, s))
-                .collect(),
-        },
+        hypotheses: hypotheses(tb),
         construction: t.construction.as_ref().map(|s| s.get_ref().clone()),
     })
+}
+
+/// The hypotheses a claim states; an inner claim rests on those its negation states.
+fn hypotheses(tb: &Table<'_>) -> Vec<Located> {
+    match (tb.t.hypotheses.is_empty(), tb.outer) {
+        (true, Some(o)) => o.hypotheses.clone(),
+        _ => (tb.t.hypotheses.iter())
+            .map(|s| Located::of(tb.file, s))
+            .collect(),
+    }
 }
 
 /// `hint`: identity claims only, naming one of the claim's own `let`s.
