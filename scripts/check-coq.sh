@@ -34,7 +34,9 @@ sec5.ident2.321.corrected sec8.G0G1.up sec8.G0G1.lo sec8.lemma2.model"
 # proved claims of `eulertop verify` in catalogue order
 certs="${CERTS:-target/certificates}"
 if [ -s "$certs/proved.list" ]; then
-  proved=$(ls -S -r "$certs"/*.cert 2>/dev/null | xargs -r -n1 basename | sed 's/\.cert$//')
+  # the proofs' certificates only (not the witness certificates of refutations)
+  proved=$(ls -S -r "$certs"/*.cert 2>/dev/null | xargs -r -n1 basename | sed 's/\.cert$//' |
+    grep -x -F -f "$certs/proved.list" || true)
 else
   proved=$("$bin" verify --format json --jobs "$jobs" | python3 -c '
 import json, sys
