@@ -112,16 +112,6 @@ pub fn run(args: Args) -> Result<i32, CliError> {
             sel.what
         )));
     }
-    let provable = |c: &Claim| {
-        matches!(
-            c.body,
-            Body::Identity { .. }
-                | Body::Independence { .. }
-                | Body::Asymptotic { .. }
-                | Body::Existence { .. }
-                | Body::Negation(_)
-        )
-    };
     if !sel.claims.iter().any(|c| provable(c)) {
         return Err(CliError(format!(
             "none of the {} claims of {} is an identity, an independence, an asymptotic, an existence or a negation claim, the kinds proved symbolically",
@@ -243,16 +233,21 @@ fn proves(claim: &Claim, p: &ProofInfo) -> bool {
     }
 }
 
-/// Proves one claim, with the certificate if asked for.
-fn prove_one(args: &Args, cat: &Catalogue, claim: &Claim) -> Result<i32, CliError> {
-    if !matches!(
-        claim.body,
+/// Whether the claim is of a kind `prove` attempts (the others get an error).
+fn provable(c: &Claim) -> bool {
+    matches!(
+        c.body,
         Body::Identity { .. }
             | Body::Independence { .. }
             | Body::Asymptotic { .. }
             | Body::Existence { .. }
             | Body::Negation(_)
-    ) {
+    )
+}
+
+/// Proves one claim, with the certificate if asked for.
+fn prove_one(args: &Args, cat: &Catalogue, claim: &Claim) -> Result<i32, CliError> {
+    if !provable(claim) {
         attempt(Ctx { cat, claim }, false)?;
     }
     for (flag, path) in [("--certificate", &args.certificate), ("--coq", &args.coq)] {
