@@ -48,12 +48,12 @@ for f in "$out"/*.err; do
 done
 python3 scripts/recheck-certificates.py --catalogue "$catalogue" --jobs "$jobs" "$out" >"$out/recheck.log" && status=0 || status=$?
 # a proof must not depend on whether a certificate is asked for
-if grep -l "the claim is not proved" $(sed "s|.*|$out/&.err|" "$out/proved.list") >/dev/null 2>&1; then
-  for f in $(grep -l "the claim is not proved" $(sed "s|.*|$out/&.err|" "$out/proved.list")); do
-    echo "recheck: $(basename "$f" .err) is proved by verify but not by prove --certificate"
-  done
-  status=1
-fi
+while read -r id; do
+  if grep -q "the claim is not proved" "$out/$id.err" 2>/dev/null; then
+    echo "recheck: $id is proved by verify but not by prove --certificate"
+    status=1
+  fi
+done <"$out/proved.list"
 grep -v -e '^OK' -e '^      ' "$out/recheck.log" || true
 echo "recheck: $(tail -1 "$out/recheck.log"); ${SECONDS} s wall for verify, writing and rechecking"
 exit "$status"
