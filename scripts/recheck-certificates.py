@@ -40,7 +40,8 @@ This script:
     evaluated here in the claim's scope, times F/G, whose sign is proved here; the
     hypothesis must be the catalogue's table, stated by the claim and a premise, and the
     sign it gives the one stated (module certcheck.hypothesis); its condition and the
-    paper's words are printed with the premise;
+    paper's words are printed with the premise; with `hypothesis part:K`, the value is
+    the condition of the K-th `part` line (this part of the domain) times F/G;
   * a sign symbol (a root of radicand 1) with a definition `signsym S = sign (X)/(Y)`,
     x = X/Y a constant multiple c v of an indeterminate v: S v has the sign of c, and a
     sign test of b S with v dividing b takes the sign of c times that of b/v (a symbol
@@ -1355,7 +1356,8 @@ class Cert:
         `sign tN > 0 fact Fi factor (F)/(G)`: the value is the fact's (dn of a real
         argument, checked by its `fact` line) times F/G, whose sign is proved here.
         `sign value (N)/(D) > 0 ...` states the sign of a value written out (one the
-        derivation made only for a decision) with the same evidence."""
+        derivation made only for a decision) with the same evidence.  A LABEL `part:K`
+        is the condition of the K-th `part` line, this part of the domain's."""
         m = re.fullmatch(r"(t\d+|value .+?) ([<>]) 0(?: square (.+?))?(?: hypothesis (\S+) factor (.+))?"
                          r"(?: fact (F\d+) factor (.+))?( parts)?", rest.strip())
         self.need(m is not None, f"bad sign line {rest[:40]}")
@@ -1389,11 +1391,28 @@ class Cert:
             r = self.rational(f)
             fsign = (r > 0) - (r < 0) if r is not None else (self.frac_sign(f) or (self.alt_lines and self.alt_sign(f)))
             self.need(fsign in (1, -1), f"sign {t} {rel} 0: the sign of the factor {factor[:60]} is not proved")
-            self.hyp_signs.append((t, label, base, f, fsign, None if square is not None else want))
+            if label.startswith("part:"):
+                self.part_sign(t, label, base, f, fsign, None if square is not None else want)
+            else:
+                self.hyp_signs.append((t, label, base, f, fsign, None if square is not None else want))
         self.checked += 1
         self.proved_signs.append((value, want))
         if want == 1 and t.startswith("t"):
             self.sign_lines.add(t)
+
+    def part_sign(self, t, label, base, f, fsign, want):
+        """`sign tN > 0 hypothesis part:K factor (F)/(G)`: the value (or the base of its
+        square) is the condition of the K-th `part` line times F/G, so on this part of
+        the domain its sign is that condition's times F/G's (a square's is positive
+        wherever the base is nonzero, which the condition's strict sign gives)."""
+        k = label[len("part:"):]
+        self.need(k.isdigit() and 1 <= int(k) <= len(self.part_conditions),
+                  f"sign {t[:40]}: no part condition {label}")
+        cond, s = self.part_conditions[int(k) - 1]
+        self.need(self.eq(base, self.mul(cond, f)),
+                  f"sign {t[:40]}: the value is not the condition of {label} times the stated factor")
+        self.need(want is None or want == s * fsign,
+                  f"sign {t[:40]}: the condition of {label} times the factor does not have that sign")
 
     # ---- signs from the signs of the parts in a square root (`sign ... parts`) --------
     def parts_sign(self, f):
@@ -1885,6 +1904,11 @@ def check_text(name, text, catalogue=None):
             if catalogue is not None:
                 domain.check(cert, src)
                 modes.add(formula.check(cert, src, catalogue))
+                if cert.refuted is not None:
+                    try:
+                        res.refuted = f"{res.refuted}; {witness.check_domain(cert, src)}"
+                    except witness.WitnessError as e:
+                        raise CheckError(f"witness: {e}")
                 charts = [a + b for a, b in zip(charts, cert.chart_counts)]
             used.update(hypothesis.check(cert, src, catalogue, claim, binding.premises(text)))
         cases = [[tuple(c.rsplit(" ", 2)[:2]) for c in cert_conditions] for cert_conditions in conditions]

@@ -512,6 +512,22 @@ class Cases:
         subprocess.run([BIN, "prove", neg, "--certificate", npath], capture_output=True, cwd=ROOT)
         self.expect(f"{neg} (a negation: gamma_0 is not Poisson) is proved by its inner identity's witness",
                     recheck([npath]), True, "PROVED (negation)")
+        ob = "sec8.lemma2.obtuse"
+        opath = os.path.join(t, f"{ob}.cert")
+        subprocess.run([BIN, "prove", ob, "--certificate", opath], capture_output=True, cwd=ROOT)
+        with open(opath, encoding="utf-8") as fh:
+            ocert = fh.read()
+        self.expect(f"{ob} (a square-root branch decided by its part's condition) is proved at a point of "
+                    "the domain", recheck([opath]), True, "1 of 1 domain condition(s) hold at the point")
+        flipped = re.sub(r"^(sign t\d+ > 0 hypothesis part:\d+ factor) \(1\)/\(1\)$", r"\1 (-1)/(1)", ocert,
+                         count=1, flags=re.M)
+        self.expect(f"{ob} with the part condition's factor negated is rejected",
+                    recheck([write(t, "w-part.cert", flipped)]), False, "is not the condition of part:")
+        # a point with |v|^2 = 1.1: cos(theta) < 0 still (the parts hold), outside where |v|^2 > 1.2
+        inside = re.sub(r"^at v1 = .*$\n^at v2 = .*$\n^at v3 = .*$",
+                        "at v1 = 1 0\nat v2 = 1*2^-2 0\nat v3 = 1*2^-2 0", ocert, count=1, flags=re.M)
+        self.expect(f"{ob} at a point outside the domain's condition |v|^2 > 1.2 is rejected",
+                    recheck([write(t, "w-where.cert", inside)]), False, "not shown to satisfy the domain's condition")
 
     def ode_proofs(self):
         """Proofs by the uniqueness of the solution of an ODE (module certcheck.ode), on

@@ -299,6 +299,7 @@ def _check(cert, component, at):
     bases = check_bases(pt, verified)
     check_periods(pt)
     check_signs(pt, verified)
+    cert.witness_point = pt
     a, b = pairs[component - 1]
     d = cert.add(cert.vals[a], cert.vals[b], -1)
     used, todo = set(), list(pt.uses(d))
@@ -320,3 +321,99 @@ def _check(cert, component, at):
         raise WitnessError("lhs - rhs is not certified nonzero at the point")
     v = n * q.inv()
     return f"component {component}: lhs - rhs = {mpmath.nstr(v.mid(), 12)} != 0 at the point ({bases} elliptic base(s) checked against mpmath)"
+
+
+COMPARE = {">": lambda lo, hi: lo > 0, ">=": lambda lo, hi: lo >= 0,
+           "<": lambda lo, hi: hi < 0, "<=": lambda lo, hi: hi <= 0}
+
+
+def check_domain(cert, src):
+    """The witness point satisfies the `where` conditions of the claim and of its
+    domain, each evaluated at the point in interval arithmetic: `abs`, `min`, `max`,
+    `re`, `+ - * / ^`, comparisons, `and`, `or` and `not` here, the rest from the
+    claim's formulas in the certificate's symbols.  Returns a description; a condition
+    that fails, or is not decided at the point, raises WitnessError; one the evaluator
+    does not cover is named as not checked."""
+    from .exprlang import Parser, Unsupported
+    from .formula import claim_scope
+
+    conds = list(src.get("claim.where") or [])
+    dom = src.get("claim.domain")
+    if dom:
+        conds += list((src.get(f"domain.{dom}") or {}).get("where") or [])
+    pt = getattr(cert, "witness_point", None)
+    if not conds or pt is None:
+        return "no domain condition" if not conds else "the domain conditions are not checked"
+    ev, env = claim_scope(cert, src)
+    unchecked = []
+    iv.prec = PREC
+    with mpmath.workprec(PREC):
+        for text in conds:
+            try:
+                ok = _holds(ev, env, pt, Parser(text).whole())
+            except Unsupported as e:
+                unchecked.append(f"{text} ({e})")
+                continue
+            if not ok:
+                raise WitnessError(f"the point is not shown to satisfy the domain's condition {text}")
+    done = len(conds) - len(unchecked)
+    note = f"{done} of {len(conds)} domain condition(s) hold at the point"
+    return note + (f"; not checked: {'; '.join(unchecked)}" if unchecked else "")
+
+
+def _holds(ev, env, pt, e):
+    from .exprlang import Unsupported
+
+    if e[0] == "un" and e[1] == "not":
+        return not _holds(ev, env, pt, e[2])
+    if e[0] == "bin" and e[1] in ("and", "or"):
+        a, b = _holds(ev, env, pt, e[2]), _holds(ev, env, pt, e[3])
+        return (a and b) if e[1] == "and" else (a or b)
+    if e[0] == "bin" and e[1] in COMPARE:
+        d = _num(ev, env, pt, e[2]) - _num(ev, env, pt, e[3])
+        if 0 not in d.im:
+            raise Unsupported("a comparison of values that are not real at the point")
+        lo, hi = _lo(d.re), _hi(d.re)
+        if COMPARE[e[1]](lo, hi):
+            return True
+        if COMPARE[{">": "<=", ">=": "<", "<": ">=", "<=": ">"}[e[1]]](lo, hi):
+            return False
+        raise Unsupported("a comparison not decided at the point (too close)")
+    raise Unsupported("a condition that is no comparison")
+
+
+def _num(ev, env, pt, e):
+    from .exprlang import Unsupported
+
+    if e[0] == "call" and e[1] in ("abs", "re") and len(e[2]) == 1:
+        x = _num(ev, env, pt, e[2][0])
+        if e[1] == "re":
+            return Box(x.re)
+        if 0 not in x.im:
+            raise Unsupported("abs of a value that is not real at the point")
+        lo, hi = _lo(x.re), _hi(x.re)
+        if hi < 0:
+            return Box(-x.re)
+        return Box(x.re if lo >= 0 else iv.mpf([0, max(-lo, hi)]))
+    if e[0] == "call" and e[1] in ("min", "max") and e[2]:
+        xs = [_num(ev, env, pt, a) for a in e[2]]
+        if any(0 not in x.im for x in xs):
+            raise Unsupported(f"{e[1]} of values that are not real at the point")
+        pick = min if e[1] == "min" else max
+        return Box(iv.mpf([pick(_lo(x.re) for x in xs), pick(_hi(x.re) for x in xs)]))
+    if e[0] == "un" and e[1] == "-":
+        return -_num(ev, env, pt, e[2])
+    if e[0] == "bin" and e[1] in ("+", "-", "*", "/"):
+        a, b = _num(ev, env, pt, e[2]), _num(ev, env, pt, e[3])
+        if e[1] == "/":
+            if not b.excludes_zero():
+                raise Unsupported("a division by a value not shown nonzero at the point")
+            return a * b.inv()
+        return a + b if e[1] == "+" else a - b if e[1] == "-" else a * b
+    v = ev.eval(e, env)
+    if isinstance(v, (tuple, bool)):
+        raise Unsupported("a value that is no scalar")
+    x = pt.frac(v)
+    if x is None:
+        raise Unsupported("a symbol without a value at the point")
+    return x

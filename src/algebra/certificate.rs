@@ -20,6 +20,7 @@
 //! sign t7 > 0                      # a sign the checker proves with a parametrization
 //! sign t8 > 0 hypothesis hypothesis.H factor (1)/(2)   # t8 = (H's value)·(1/2): by H
 //! sign t9 > 0 square (a)/(b) hypothesis hypothesis.H factor (F)/(G)  # t9 = (a/b)²
+//! sign t10 > 0 hypothesis part:1 factor (F)/(G)   # t10 = (the first part's condition)·(F/G)
 //! sign value (N)/(D) > 0           # a value without a derivation, written out
 //! sign t11 > 0 parts               # decided from the signs of its parts in a square root
 //! dominance (Q) > 0 constant 2 factor (G) ^ 1 factor (H) ^ 2   # Q = a² − b²·r² = 2·G·H²
@@ -321,7 +322,7 @@ impl Ring {
         }
         for (h, s) in &self.inner.opts.hypotheses {
             let rel = if *s > 0 { ">" } else { "<" };
-            let _ = writeln!(out, "part {} {rel} 0", json(&h.what));
+            let _ = writeln!(out, "part {} {rel} 0", json(&h.text));
         }
         for a in self.assumptions() {
             out.push_str(&assume_line(&a));

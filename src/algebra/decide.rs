@@ -412,12 +412,38 @@ impl Sym {
         let Some(node) = self.node.clone() else {
             return false;
         };
-        let Some(factor) = base.unwrap_or(self).hypothesis_factor(label) else {
-            return false;
+        let base_or_self = base.unwrap_or(self);
+        let (factor, label) = match base_or_self.hypothesis_factor(label) {
+            Some(f) => (f, label.to_string()),
+            None => match base_or_self.part_factor(label) {
+                Some(found) => found,
+                None => return false,
+            },
         };
         let square = base.map(|b| (b.val.num.clone(), b.val.den.clone()));
-        self.push_evidence(node, sign, square, label, factor);
+        self.push_evidence(node, sign, square, &label, factor);
         true
+    }
+
+    /// `self / p` for the value `p` of the condition of the part of the domain the
+    /// proof is on whose label is `label` (the `K`-th `part` line of a certificate,
+    /// labelled `part:K`), where that factor is a nonzero rational number or has a sign
+    /// proved with the parametrization of the domain (which a recheck proves again).
+    fn part_factor(&self, label: &str) -> Option<(super::val::Val, String)> {
+        let parts = self.ring.options().hypotheses.clone();
+        let k = parts.iter().position(|(h, s)| {
+            format!("{} {} 0", h.what, if *s > 0 { ">" } else { "<" }) == label
+        })?;
+        let p = parts[k].0.in_ring(&self.ring)?;
+        if p.is_exact_zero() {
+            return None;
+        }
+        let q = self.try_div(&p).ok()?;
+        let signed = match q.as_rational() {
+            Some(r) => r != 0,
+            None => q.sign_of_recorded_factor().is_some(),
+        };
+        signed.then(|| ((*q.val).clone(), format!("part:{}", k + 1)))
     }
 
     /// `self / h` for the value `h` of the stated hypothesis `label`, where that factor
