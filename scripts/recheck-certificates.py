@@ -1325,7 +1325,7 @@ class Cert:
             self.need(re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*(\[\d+\])?", name.strip()) is not None
                       and name.strip() not in self.coords, f"bad coord line {rest[:40]}")
             self.coords[name.strip()] = self.vals[t.strip()]
-        elif word in ("series", "sseries", "sclaim", "schart", "ssolution"):
+        elif word in ("series", "sseries", "sclaim", "srefute", "schart", "ssolution"):
             if self.trace is None:
                 self.trace = series.Trace(self)
             try:
@@ -1337,6 +1337,8 @@ class Cert:
                     self.trace.chart(rest)
                 elif word == "ssolution":
                     return self.trace.solution_line(rest)
+                elif word == "srefute":
+                    return self.trace.refute(rest)
                 else:
                     return self.trace.claim(rest)
             except series.SeriesError as e:
@@ -1577,9 +1579,14 @@ class Cert:
                       f"{claims} claim line(s) where the certificate announces {self.expected_claims}")
         self.check_branches()
         self.check_coordinates()
-        if self.sides or self.witness is not None:
-            self.need(self.sides == claims and self.witness is not None,
-                      "a refutation needs `side` lines only, and a `witness` line")
+        refuted_series = self.trace is not None and self.trace.refuted is not None
+        if self.sides or self.witness is not None or refuted_series:
+            if refuted_series:
+                self.need(claims == 1 and not self.sides and not self.trace.claims and self.witness == 1,
+                          "a refuted order needs one `srefute` line, no `sclaim` line, and `witness component 1`")
+            else:
+                self.need(self.sides == claims and self.witness is not None,
+                          "a refutation needs `side` lines only, and a `witness` line")
             try:
                 self.refuted = witness.check(self, self.witness, self.at)
             except witness.WitnessError as e:
@@ -1936,7 +1943,7 @@ def check_text(name, text, catalogue=None):
         res.why = "a negation is proved by a witness point only, and the certificate has none"
         return res
     what = f"{claims} claim(s)" if res.refuted is None else (
-        f"{'PROVED (negation): the inner identity fails' if negation else 'REFUTED'}, {res.refuted}; "
+        f"{'PROVED (negation): the inner claim fails' if negation else 'REFUTED'}, {res.refuted}; "
         f"{claims} side(s)")
     res.ok, res.why = True, f"{what}, {checked} equalities checked; formulas: {res.binding}{chart_note}"
     return res

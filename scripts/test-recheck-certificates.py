@@ -512,6 +512,27 @@ class Cases:
         subprocess.run([BIN, "prove", neg, "--certificate", npath], capture_output=True, cwd=ROOT)
         self.expect(f"{neg} (a negation: gamma_0 is not Poisson) is proved by its inner identity's witness",
                     recheck([npath]), True, "PROVED (negation)")
+        so = "sec3.as.g1.printed"
+        spath = os.path.join(t, f"{so}.cert")
+        subprocess.run([BIN, "prove", so, "--certificate", spath], capture_output=True, cwd=ROOT)
+        with open(spath, encoding="utf-8") as fh:
+            scert = fh.read()
+        self.expect(f"{so} (a misprinted order) is refuted by its coefficient of h^1, computed by the checker "
+                    "and nonzero at the point", recheck([spath]), True, "the coefficient of t^1")
+        zero = re.sub(r"^(srefute s\d+ component 1 coefficient) 1$", r"\1 0", scert, count=1, flags=re.M)
+        self.expect(f"{so} refuted by its coefficient of h^0 (which is 0) is rejected",
+                    recheck([write(t, "s-zero.cert", zero)]), False, "not certified nonzero")
+        above = re.sub(r"^(series h step 1 order) 1\.5 ", r"\1 1 ", scert, count=1, flags=re.M)
+        self.expect(f"{so} with the order in its series line lowered to 1 (h^1 no longer below it) is rejected",
+                    recheck([write(t, "s-order.cert", above)]), False, "is not the claim's")
+        both = scert + "".join(ln + "\n" for ln in scert.splitlines() if ln.startswith("srefute "))
+        self.expect(f"{so} with a second srefute line is rejected",
+                    recheck([write(t, "s-two.cert", both)]), False, "a second srefute line")
+        cn = "sec3.impl-map.counter.as"
+        cpath = os.path.join(t, f"{cn}.cert")
+        subprocess.run([BIN, "prove", cn, "--certificate", cpath], capture_output=True, cwd=ROOT)
+        self.expect(f"{cn} (a negated order) is proved by a nonzero coefficient below the order",
+                    recheck([cpath]), True, "PROVED (negation)")
         ob = "sec8.lemma2.obtuse"
         opath = os.path.join(t, f"{ob}.cert")
         subprocess.run([BIN, "prove", ob, "--certificate", opath], capture_output=True, cwd=ROOT)

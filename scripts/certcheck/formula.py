@@ -251,6 +251,8 @@ def series_binding(cert, src, catalogue=None):
         raise FormulaMismatch(f"the series line's order {hd['order']} is not the claim's {order}")
     _, factor = peeled(src["claim.expr"])
     below = math.ceil(order * factor * hd["step"])
+    if tr.refuted is not None:
+        return refuted_series_binding(cert, src, below)
     comps = sorted(j for j, _, _ in tr.claims)
     if comps != list(range(1, len(comps) + 1)) or not comps:
         raise FormulaMismatch(f"the sclaim lines name components {comps}, not 1..n once each")
@@ -285,6 +287,29 @@ def series_binding(cert, src, catalogue=None):
                 raise FormulaMismatch(f"sclaim {name}: its coefficient of t^{e} is not the formula's, evaluated here")
         if mine.hi < b:
             raise FormulaMismatch(f"component {j}: evaluated here, the formula is known to O(t^{mine.hi}) only")
+    return "evaluated"
+
+
+def refuted_series_binding(cert, src, below):
+    """A refuted order: the srefute line's coefficient of t^E lies below the claimed
+    order (E < below), so where it is not 0 (the witness point) the claim fails; where
+    the evaluator reaches the formula, the coefficient is the formula's, evaluated
+    here."""
+    tr = cert.trace
+    j, e, name, coef = tr.refuted
+    if e >= below:
+        raise FormulaMismatch(f"srefute {name}: the coefficient of t^{e} is not below the claimed order "
+                              f"(t^{below}), so it cannot refute it")
+    try:
+        comps = series_components(cert, src)
+    except Unsupported as e:
+        return f"text (order, variable and coefficient bound; on power series: {e})"
+    except Exception as e:  # noqa: BLE001 - whatever the evaluator cannot do binds by text only
+        return f"text (order, variable and coefficient bound; not evaluated: {type(e).__name__} {e})"
+    if not 1 <= j <= len(comps):
+        raise FormulaMismatch(f"srefute {name}: component {j} of a formula with {len(comps)}")
+    if comps[j - 1].hi <= e or not cert.eq(comps[j - 1].coef(e, cert.zero), coef):
+        raise FormulaMismatch(f"srefute {name}: its coefficient of t^{e} is not the formula's, evaluated here")
     return "evaluated"
 
 
@@ -359,6 +384,12 @@ def check(cert, src, catalogue=None):
     text of its formulas only); FormulaMismatch with the first difference otherwise."""
     if src.get("claim.kind") == "existence":
         return existence_binding(cert, src, catalogue)
+    inner = src.get("claim.inner")
+    if src.get("claim.kind") == "negation" and isinstance(inner, dict) and inner.get("kind") == "asymptotic":
+        # "f = O(h^p) fails": the certificate refutes the inner order
+        if cert.trace is None or cert.trace.refuted is None:
+            raise FormulaMismatch("a negated order whose certificate refutes no coefficient")
+        src = dict(src, **{f"claim.{k}": inner.get(k) for k in ("kind", "expr", "var", "order")})
     if src.get("claim.kind") == "asymptotic" or cert.trace is not None:
         if src.get("claim.kind") != "asymptotic":
             raise FormulaMismatch("power series in the certificate of a claim that is not asymptotic")

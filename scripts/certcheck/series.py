@@ -66,6 +66,7 @@ class Trace:
 
     def __init__(self, cert):
         self.cert, self.series, self.header, self.claims = cert, {}, None, []
+        self.refuted = None  # (component, exponent, series name, coefficient) of `srefute`
         self.moduli = {}  # the constant modulus of each sn, cn, dn series
         self.charts = {}  # NAME -> [(arguments' components, value's components)] as series
         self.solution = None  # an existence claim's unknowns and their series
@@ -120,6 +121,21 @@ class Trace:
             if not self.is_zero(s.coef(e, self.cert.zero)):
                 raise SeriesError(f"sclaim {t[0]}: the coefficient of t^{e} is not 0")
         self.claims.append((j, below, t[0]))
+        return 1
+
+    def refute(self, rest):
+        """`srefute SN component J coefficient E`: a refuted order; the coefficient of
+        t^E of SN, computed here, must lie below the claimed order, and is the value
+        the witness point must show nonzero (certcheck.witness)."""
+        t = rest.split()
+        if len(t) != 5 or t[1] != "component" or t[3] != "coefficient" or t[0] not in self.series:
+            raise SeriesError(f"bad srefute line {rest[:60]}")
+        if self.refuted is not None:
+            raise SeriesError("a second srefute line")
+        s, j, e = self.series[t[0]], int(t[2]), int(t[4])
+        if e >= s.hi:
+            raise SeriesError(f"srefute {t[0]}: the coefficient of t^{e} is not known (O(t^{s.hi}))")
+        self.refuted = (j, e, t[0], s.coef(e, self.cert.zero))
         return 1
 
     # ---- arithmetic ------------------------------------------------------------------

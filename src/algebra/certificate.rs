@@ -59,7 +59,9 @@
 //! A proof by power series (an asymptotic claim, or an existence claim for small `h`)
 //! writes, instead of `claim` lines, its `series`, `sseries`, `schart`, `sclaim` and
 //! `ssolution` lines (module `series_trace`): every operation that made its
-//! series, which the checker redoes from the leaves.
+//! series, which the checker redoes from the leaves.  A refuted order writes, instead of
+//! `sclaim` lines, `srefute sN component J coefficient E` and the witness point: the
+//! coefficient of `t^E` is not 0 there.
 //!
 //! After the header and `# claim:` title, `claims N` states the number of `claim` lines.
 //! `eulertop prove --certificate` adds the claim's `source` and `premise` lines
@@ -214,9 +216,14 @@ impl Emitter<'_> {
 }
 
 /// The `sseries` lines of a proof by power series (module [`super::series_trace`]),
-/// their leaves' nodes emitted first, and its `sclaim` lines; `None` when a leaf has no
-/// derivation.
-fn series_lines(em: &mut Emitter<'_>, trace: &super::series_trace::SeriesTrace) -> Option<String> {
+/// their leaves' nodes emitted first, and its `sclaim` lines (a refutation's: the
+/// `srefute` line of the coefficient `refuted`, by its index among the coefficients the
+/// proof tests); `None` when a leaf has no derivation.
+fn series_lines(
+    em: &mut Emitter<'_>,
+    trace: &super::series_trace::SeriesTrace,
+    refuted: Option<usize>,
+) -> Option<String> {
     let mut claims = String::new();
     for (i, r) in trace.records.iter().enumerate() {
         let mut node = |x: &Sym| Some(em.visit(x.node.as_ref()?));
@@ -232,6 +239,12 @@ fn series_lines(em: &mut Emitter<'_>, trace: &super::series_trace::SeriesTrace) 
             argv.join("; "),
             ids(value).join(",")
         );
+    }
+    if let Some(i) = refuted {
+        // a refutation: the coefficient that is not 0 (at the witness point)
+        let (id, j, e) = trace.coefficients.get(i)?;
+        let _ = writeln!(claims, "srefute s{id} component {j} coefficient {e}");
+        return Some(claims);
     }
     for (id, j, below) in &trace.claims {
         let _ = writeln!(claims, "sclaim s{id} component {j} below {below}");
@@ -272,7 +285,9 @@ impl Ring {
             let st = self.state();
             st.series.claims.len() + usize::from(!st.series.solution.is_empty())
         };
-        let count = if series_claims > 0 {
+        let count = if series_claims > 0 && refute.is_some() {
+            1
+        } else if series_claims > 0 {
             series_claims
         } else {
             pairs.len()
@@ -290,11 +305,8 @@ impl Ring {
         let trace = self.state().series.clone();
         let series = if trace.claims.is_empty() && trace.solution.is_empty() {
             None
-        } else if refute.is_some() {
-            // a refuted order is certified by its coefficient, which this format lacks
-            return None;
         } else {
-            Some(series_lines(&mut em, &trace)?)
+            Some(series_lines(&mut em, &trace, refute.map(|r| r.component))?)
         };
         let mut claims = Vec::new();
         if series.is_none() {
@@ -314,7 +326,9 @@ impl Ring {
             };
         }
         if let Some(r) = refute {
-            let _ = writeln!(out, "witness component {}", r.component + 1);
+            // a series refutation has one claim, its `srefute` line
+            let component = if series.is_some() { 0 } else { r.component };
+            let _ = writeln!(out, "witness component {}", component + 1);
             out.push_str(&self.point_lines(r.point));
         }
         if let Some(s) = series {

@@ -19,6 +19,7 @@
 //! sseries s8 = moving s5 s7             # s5 = sn(u, k₀), k₀ s7's constant term: sn(u, s7)
 //! schart delta1(s2; s3; s2; s2; s3; s1) value=s9   # an implicit map's series there
 //! sclaim s6 component 1 below 2         # the coefficients of t^e, e < 2, are 0
+//! srefute s6 component 1 coefficient 1  # a refutation: the coefficient of t^1 is not 0
 //! ssolution x = s12; y = s14            # an existence claim's solution, as series
 //! ```
 
@@ -72,6 +73,9 @@ pub(crate) struct SeriesTrace {
     pub charts: Vec<(String, Vec<Vec<u32>>, Vec<u32>)>,
     /// The power-series solution of an existence claim: its unknowns' names and ids.
     pub solution: Vec<(String, u32)>,
+    /// `(series id, component, exponent)` of each coefficient a proof tests, in the
+    /// order of its components: a refutation names the one that is not 0.
+    pub coefficients: Vec<(u32, usize, i32)>,
 }
 
 impl Series {
@@ -133,6 +137,20 @@ impl Series {
                 ring.state().series.solution = unknowns.iter().cloned().zip(ids).collect();
             }
             None => ring.mark_uncertified("a power series whose computation is not recorded"),
+        }
+    }
+
+    /// Records that the proof tests this value's coefficient of `t^exponent`
+    /// (component `component`, from 1): a refutation's certificate names it
+    /// (`srefute`).
+    pub(crate) fn note_coefficient(&self, component: usize, exponent: i32) {
+        let ring = self.ring().clone();
+        if !ring.certifying() {
+            return;
+        }
+        if let Some(id) = self.trace_id() {
+            let st = &mut ring.state().series;
+            st.coefficients.push((id, component, exponent));
         }
     }
 

@@ -295,6 +295,7 @@ fn coefficients(
             } else {
                 String::new()
             };
+            s.note_coefficient(j + 1, e);
             pairs.push((
                 (c, zero.clone()),
                 format!("the coefficient of {}{of}", power(claim.var, e, step)),
