@@ -921,7 +921,26 @@ class Cert:
             self.need(self.eq(self.mul(sq(s), k), self.const(-1)), "sn(iK'/2)**2 != -1/k")
             self.need(self.eq(self.mul(sq(c), k), self.add(one, k)), "cn(iK'/2)**2 != (1+k)/k")
             self.need(self.eq(sq(d), self.add(one, k)), "dn(iK'/2)**2 != 1+k")
+        self.linked_periods(table, p)
         self.periods[table] = p
+
+    def linked_periods(self, table, p):
+        """A quarter-period symbol shared by two tables stands for one value: K(k) and
+        K'(k) depend on k**2 only, and K'(k) = K(k') (DLMF 19.2.9, 22.2.2), so a symbol
+        that is K (or K') of both tables needs equal k**2, and one that is K of one and
+        K' of the other needs complementary moduli, k_a**2 + k_b**2 = 1."""
+        sq = lambda x: self.mul(x, x)  # noqa: E731
+        for other, q in self.periods.items():
+            for mine, theirs in (("K", "K"), ("Kp", "Kp"), ("K", "Kp"), ("Kp", "K")):
+                a, b = p[mine], q[theirs]
+                if a is None or b is None or not self.eq(a, b):
+                    continue
+                ka, kb = sq(p["k"]), sq(q["k"])
+                if mine == theirs:
+                    self.need(self.eq(ka, kb), f"{mine} of tables {table} and {other}: the moduli differ")
+                else:
+                    self.need(self.eq(self.add(ka, kb), self.one),
+                              f"{mine} of table {table} is {theirs} of table {other}: the moduli are not complementary")
 
     # ---- elliptic functions -------------------------------------------------------
     def tadd(self, a, b, k2):

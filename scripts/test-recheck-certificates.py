@@ -550,6 +550,20 @@ class Cases:
         self.expect(f"{ob} at a point outside the domain's condition |v|^2 > 1.2 is rejected",
                     recheck([write(t, "w-where.cert", inside)]), False, "not shown to satisfy the domain's condition")
 
+    def complementary_periods(self):
+        """A shift by iK': the quarter period K'(k) is the K of the table of modulus
+        k' = sqrt(1 - k^2), one symbol in both period lines."""
+        t, dlmf, cid = self.tmp, "examples/dlmf-jacobi", "dlmf.t22.4.3-sn-ikp"
+        d = tempfile.mkdtemp(dir=t)
+        cert = prove(cid, d, dlmf)
+        self.expect(f"{cid} (sn(u + iK') = 1/(k sn u), with K'(k) the K of the modulus k') rechecks",
+                    recheck([os.path.join(d, f"{cid}.cert")], "--catalogue", dlmf), True, "1 of 1 certificates")
+        other = re.sub(r"^(period table 2 k=)\(r_4\*r_3\)/\(1\) kp=\(k\)/\(1\)", r"\1(r_4)/(1) kp=none", cert,
+                       count=1, flags=re.M)
+        self.expect(f"{cid} with the second table's modulus sqrt(1 + k), not k', sharing K'(k) is rejected",
+                    recheck([write(t, "kp-link.cert", other)], "--catalogue", dlmf), False,
+                    "the moduli are not complementary")
+
     def ode_proofs(self):
         """Proofs by the uniqueness of the solution of an ODE (module certcheck.ode), on
         the DLMF catalogue of examples/dlmf-jacobi."""
@@ -661,6 +675,7 @@ def main(argv):
         cases.power_series()
         cases.witnesses()
         cases.ode_proofs()
+        cases.complementary_periods()
         opts = dict(zip(argv[1::2], argv[2::2]))
         if "--all" in opts:
             cases.all_changed(opts["--all"])

@@ -65,10 +65,6 @@ pub(crate) struct Table {
     pub k_var: Option<usize>,
     /// The field variable of `K'(k)`, once needed.
     pub kp_var: Option<usize>,
-    /// Whether `k_var`, `kp_var` are the complementary periods of the table of the
-    /// complementary modulus (`K(k) = K'(k')`, `K'(k) = K(k')` where `k² + k'² = 1`),
-    /// which the certificate format does not record.
-    pub linked: (bool, bool),
     /// The directions arguments are split into, with their values.
     pub dirs: Vec<(DirKey, Val)>,
     /// The base arguments.
@@ -96,7 +92,6 @@ impl Table {
             kp: None,
             k_var: None,
             kp_var: None,
-            linked: (false, false),
             dirs: Vec::new(),
             bases: Vec::new(),
             triples: HashMap::new(),

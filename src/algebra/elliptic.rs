@@ -103,7 +103,9 @@ impl Ring {
     /// The tables of moduli `k`, `k'` with `k² + k'² = 1` exactly share their quarter
     /// periods crosswise: `K(k') = K'(k)` and `K'(k') = K(k)` (K depends on k² only), so
     /// that `K'(k)` inside sn, cn, dn of modulus `k'` is its quarter period (as in
-    /// Jacobi's imaginary transformation of a complex argument).
+    /// Jacobi's imaginary transformation of a complex argument).  A certificate's
+    /// `period` lines then name one symbol in both tables, and the recheck verifies
+    /// that their moduli are complementary.
     fn link_complementary(&self, t: usize) -> AlgResult<()> {
         let n = self.state().tables.len();
         for t0 in (0..n).filter(|&t0| t0 != t) {
@@ -121,11 +123,9 @@ impl Ring {
             let tb = &mut st.tables[t];
             if tb.k_var.is_none() && kp0.is_some() {
                 tb.k_var = kp0;
-                tb.linked.0 = true;
             }
             if tb.kp_var.is_none() && k0.is_some() {
                 tb.kp_var = k0;
-                tb.linked.1 = true;
             }
         }
         Ok(())
@@ -232,10 +232,6 @@ impl Ring {
                 )))
             }
         };
-        let linked = self.state().tables[t].linked;
-        if (hk != 0 && linked.0) || (hkp != 0 && linked.1) {
-            self.mark_uncertified("a quarter period of the complementary modulus");
-        }
         let (half_k, third_k) = halves_and_thirds(&hk, &to_int)?;
         let half_kp = to_int(&hkp, "iK'")?;
         let mut st = self.state();
