@@ -1963,7 +1963,7 @@ def check_text(name, text, catalogue=None):
         return res
     what = f"{claims} claim(s)" if res.refuted is None else (
         f"{'PROVED (negation): the inner claim fails' if negation else 'REFUTED'}, {res.refuted}; "
-        f"{claims} side(s)")
+        f"{claims} side(s)" if "the coefficient of t^" not in res.refuted else "1 coefficient")
     res.ok, res.why = True, f"{what}, {checked} equalities checked; formulas: {res.binding}{chart_note}"
     return res
 
