@@ -1961,9 +1961,12 @@ def check_text(name, text, catalogue=None):
     if negation and res.refuted is None:
         res.why = "a negation is proved by a witness point only, and the certificate has none"
         return res
-    what = f"{claims} claim(s)" if res.refuted is None else (
-        f"{'PROVED (negation): the inner claim fails' if negation else 'REFUTED'}, {res.refuted}; "
-        f"{claims} side(s)" if "the coefficient of t^" not in res.refuted else "1 coefficient")
+    if res.refuted is None:
+        what = f"{claims} claim(s)"
+    else:
+        counted = "1 coefficient" if "the coefficient of t^" in res.refuted else f"{claims} side(s)"
+        what = (f"{'PROVED (negation): the inner claim fails' if negation else 'REFUTED'}, {res.refuted}; "
+                f"{counted}")
     res.ok, res.why = True, f"{what}, {checked} equalities checked; formulas: {res.binding}{chart_note}"
     return res
 
