@@ -25,3 +25,12 @@
 pub mod linalg;
 pub mod numbers;
 pub mod special;
+
+/// The `rug` crate (GMP, MPFR, MPC), whose `Float` and `Complex` are the multi-precision
+/// scalars, so that a program needs no dependency line of its own for it.
+///
+/// ```
+/// use eulertop_numerics::rug::Float;
+/// assert_eq!(Float::with_val(256, 0.5).prec(), 256);
+/// ```
+pub use rug;
