@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The test command: sets up what the build needs, then runs the whole test suite.
+# The test command: sets up what the build needs, then runs the whole test suite of the
+# workspace (the eulertop crate and crates/eulertop-numerics, its default members).
 # Arguments are passed to `cargo test --release` (a filter, `--test paper`, ...).
 set -euo pipefail
 cd "$(dirname "$0")/.."

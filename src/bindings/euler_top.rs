@@ -18,7 +18,7 @@
 //! assert!((e.as_real().unwrap() - (1.0 / 3.0 + 4.0 / 2.0 + 9.0)).abs() < 1e-15);
 //! ```
 
-use crate::claims::backend::Num;
+use crate::claims::backend::{Num, RealNum};
 use crate::claims::builtins::table::name_table;
 use crate::claims::implicit::Implicit;
 use crate::claims::registry::{GenericFunction, Registry, RegistryError};
@@ -30,7 +30,7 @@ use crate::model::params::EllipticParams;
 use crate::model::phase::delta;
 use crate::model::veselov_moser::{hat, j_diag, omega_matrix, vm_step};
 use crate::model::{Inertia, ModelError, lax};
-use crate::numbers::{Cplx, Real};
+use crate::numbers::Cplx;
 
 /// The declaration of a model function.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -174,7 +174,9 @@ pub(super) fn inertia<R: Num>(a: &[Value<R>], at: usize) -> Result<Inertia<R>, S
     Inertia::new(a[at].as_real()?, a[at + 1].as_real()?, a[at + 2].as_real()?)
         .map_err(|e| e.to_string())
 }
-pub(super) fn params<R: Real>(a: &[Value<R>]) -> Result<(Inertia<R>, EllipticParams<R>), String> {
+pub(super) fn params<R: RealNum>(
+    a: &[Value<R>],
+) -> Result<(Inertia<R>, EllipticParams<R>), String> {
     let i = inertia(a, 0)?;
     let p =
         EllipticParams::new(&i, &a[3].as_real()?, &a[4].as_real()?).map_err(|e| e.to_string())?;
@@ -187,7 +189,7 @@ pub(super) fn params<R: Real>(a: &[Value<R>]) -> Result<(Inertia<R>, EllipticPar
 /// with the numeric phase as its values: a claim about `M²` and `E` alone needs no
 /// regime, and one that uses `φ` is proved only where it holds for every `φ`.  The
 /// undecided sign stays noted, so that a proof can still split the domain by it.
-fn ell_coords<R: Real>(a: &[Value<R>]) -> Result<Value<R>, String> {
+fn ell_coords<R: RealNum>(a: &[Value<R>]) -> Result<Value<R>, String> {
     let i = inertia(a, 1)?;
     let m = v3(&a[0])?;
     if R::BY_RULE {
@@ -225,7 +227,7 @@ pub(super) fn err(e: ModelError) -> String {
 }
 
 impl GenericFunction for ModelFn {
-    fn call<R: Real>(&self, a: &[Value<R>]) -> Result<Value<R>, String> {
+    fn call<R: RealNum>(&self, a: &[Value<R>]) -> Result<Value<R>, String> {
         use ModelFn as F;
         if R::BY_RULE && self.is_implicit() {
             return Err(format!(
@@ -336,7 +338,7 @@ impl ModelFn {
     }
 
     /// One step of a discretization: `(M, h, A, B, C)`.
-    fn step<R: Real>(&self, a: &[Value<R>]) -> Result<Value<R>, String> {
+    fn step<R: RealNum>(&self, a: &[Value<R>]) -> Result<Value<R>, String> {
         let i = inertia(a, 2)?;
         let (m, h) = (v3(&a[0])?, a[1].as_real()?);
         let gamma = match self {
@@ -351,7 +353,7 @@ impl ModelFn {
 }
 
 /// `ell_inverse(Msq, E, phi, s1, s3, A, B, C)`.
-fn ell_inverse<R: Real>(a: &[Value<R>]) -> Result<Value<R>, String> {
+fn ell_inverse<R: RealNum>(a: &[Value<R>]) -> Result<Value<R>, String> {
     let i = inertia(a, 5)?;
     let (m2, en, phi) = (a[0].as_real()?, a[1].as_real()?, a[2].as_real()?);
     let (s1, s3) = (sign_value_of(&a[3])?, sign_value_of(&a[4])?);
@@ -363,7 +365,7 @@ fn ell_inverse<R: Real>(a: &[Value<R>]) -> Result<Value<R>, String> {
 
 /// The sign of a sector argument as a value: ±1, or for the prover a sign symbol
 /// ([`Real::signum_value`]).
-fn sign_value_of<R: Real>(v: &Value<R>) -> Result<R, String> {
+fn sign_value_of<R: RealNum>(v: &Value<R>) -> Result<R, String> {
     let x = v.as_real()?;
     if !x.is_finite() {
         return Ok(x.from_i64(i64::from(sign_of(v)?)));
@@ -376,7 +378,7 @@ fn sign_value_of<R: Real>(v: &Value<R>) -> Result<R, String> {
 }
 
 /// `w(j, u, A, B, C)`.
-fn w<R: Real>(a: &[Value<R>]) -> Result<Value<R>, String> {
+fn w<R: RealNum>(a: &[Value<R>]) -> Result<Value<R>, String> {
     let j = a[0].as_int()?;
     if !(1..=3).contains(&j) {
         return Err(format!("w(j, ...): j = {j} must be 1, 2 or 3"));

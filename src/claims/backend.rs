@@ -251,8 +251,23 @@ fn real_fn_generic<R: Real>(x: &R, f: RealFn) -> Result<R, String> {
     }
 }
 
+/// The real types of the evaluator, which compute every function of the language
+/// through [`Real`]: `f64`, MPFR, balls, dual numbers over them, the prover's symbols
+/// and power series.  (A marker rather than every [`Real`], so that [`Rational`], which
+/// is not one, may have an implementation of [`Num`] of its own: the real types are
+/// defined in `eulertop-numerics`, and only this crate's own trait tells the compiler
+/// that the two implementations do not overlap.)
+pub trait RealNum: Real {}
+
+impl RealNum for f64 {}
+impl RealNum for rug::Float {}
+impl RealNum for crate::numbers::Ball {}
+impl<R: Real> RealNum for crate::numbers::Dual<R> {}
+impl RealNum for crate::algebra::Sym {}
+impl RealNum for crate::algebra::series::Series {}
+
 /// Every real type computes every function of the language.
-impl<R: Real> Num for R {
+impl<R: RealNum> Num for R {
     const EXACT: bool = false;
     const ARITHMETIC: &'static str = "floating-point arithmetic";
     const ENCLOSES: bool = <R as Real>::ENCLOSES;

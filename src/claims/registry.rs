@@ -2,19 +2,19 @@
 //! catalogue (the Euler-top model does, from [`crate::bindings`]), and the catalogue's own
 //! `definition` functions.  The engine itself knows nothing about the Euler top.
 //!
-//! A layer implements [`GenericFunction`] (one generic method over every [`Real`]
+//! A layer implements [`GenericFunction`] (one generic method over every [`RealNum`]
 //! backend, optionally one over every backend with field operations only) and calls
 //! [`Registry::register`].  How a backend reaches the right method of a registered
 //! function is [`HostCall`], implemented here for every backend.
 
 use super::ast::Binding;
-use super::backend::Num;
+use super::backend::{Num, RealNum};
 use super::builtins::Builtin;
 use super::implicit::Implicit;
 use super::value::Value;
 use crate::algebra::Sym;
 use crate::algebra::series::Series;
-use crate::numbers::{Ball, Dual, Rational, Real};
+use crate::numbers::{Ball, Dual, Rational};
 use rug::Float;
 use std::collections::BTreeMap;
 use std::sync::Arc;
@@ -75,7 +75,7 @@ pub const NO_BALLS: &str = "a model function is not evaluated in ball arithmetic
 /// A function written once, generically over the backends.
 pub trait GenericFunction: Send + Sync {
     /// Evaluates on any real backend; errors are one-line messages.
-    fn call<R: Real>(&self, args: &[Value<R>]) -> Result<Value<R>, String>;
+    fn call<R: RealNum>(&self, args: &[Value<R>]) -> Result<Value<R>, String>;
     /// Evaluates in ball arithmetic, as an enclosure of the exact value for every
     /// argument in the argument balls; by default refused (see [`NO_BALLS`]).
     fn call_ball(&self, _args: &[Value<Ball>]) -> Result<Value<Ball>, String> {
@@ -284,12 +284,12 @@ impl Registry {
     /// use eulertop::claims::parser::parse_expr;
     /// use eulertop::claims::registry::{GenericFunction, Registry};
     /// use eulertop::claims::value::Value;
-    /// use eulertop::numbers::Real;
+    /// use eulertop::claims::backend::RealNum;
     ///
     /// /// cube(x) = x³
     /// struct Cube;
     /// impl GenericFunction for Cube {
-    ///     fn call<R: Real>(&self, a: &[Value<R>]) -> Result<Value<R>, String> {
+    ///     fn call<R: RealNum>(&self, a: &[Value<R>]) -> Result<Value<R>, String> {
     ///         let x = a[0].as_real()?;
     ///         Ok(Value::Real(x.clone() * x.clone() * x))
     ///     }

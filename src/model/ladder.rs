@@ -6,7 +6,7 @@
 //! doubling (for the phase steps nine at 4096 bits).
 
 use super::{EllipticParams, Inertia, ModelError};
-use crate::linalg::Vec3;
+pub(crate) use crate::linalg::AtPrec;
 use crate::numbers::Real;
 
 /// The precision up to which the solvers start at their usual predictor; above it, at
@@ -14,25 +14,6 @@ use crate::numbers::Real;
 /// same as without the ladder (the per-claim test runs at 53 and 256 bits).  At 1024 bits
 /// the ladder does not pay: a Veselov–Moser step took 1.1 times as long with it.
 pub const LADDER_BITS: u32 = 1024;
-
-/// A value whose components are rounded to a given precision: a scalar, a vector, the
-/// moments of inertia or the elliptic parameters.
-pub(crate) trait AtPrec {
-    /// The same value with each component rounded to `bits` bits.
-    fn at_prec(&self, bits: u32) -> Self;
-}
-
-impl<R: Real> AtPrec for R {
-    fn at_prec(&self, bits: u32) -> Self {
-        self.with_prec(bits)
-    }
-}
-
-impl<R: Real> AtPrec for Vec3<R> {
-    fn at_prec(&self, bits: u32) -> Self {
-        Vec3(std::array::from_fn(|i| self.0[i].with_prec(bits)))
-    }
-}
 
 impl<R: Real> AtPrec for Inertia<R> {
     fn at_prec(&self, bits: u32) -> Self {

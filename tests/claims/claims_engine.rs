@@ -518,7 +518,10 @@ fn model_functions_register_without_clashes() {
 
 struct Boom;
 impl eulertop::claims::registry::GenericFunction for Boom {
-    fn call<R: eulertop::numbers::Real>(&self, _a: &[Value<R>]) -> Result<Value<R>, String> {
+    fn call<R: eulertop::claims::backend::RealNum>(
+        &self,
+        _a: &[Value<R>],
+    ) -> Result<Value<R>, String> {
         panic!("boom from another layer")
     }
 }

@@ -105,7 +105,7 @@ pub(crate) fn reduced_pi<R: Real>(n: &R, s: &R, c2: &R, k: &R) -> Result<Dd<R>, 
 /// [`SpecialError::ArgumentTooLarge`] as [`ellipf`](super::ellipf).
 ///
 /// ```
-/// use eulertop::special::{ellipf, ellippi};
+/// use eulertop_numerics::special::{ellipf, ellippi};
 /// // mpmath: ellippi(0.5, 1, m=0.25) = 1.22801441431622064261129894629
 /// let p = ellippi(&0.5_f64, &1.0, &0.5).unwrap();
 /// assert!((p - 1.2280144143162206).abs() < 1e-15);

@@ -110,7 +110,7 @@ pub(crate) fn inv_quarter_period_dd<R: Real>(k: &R) -> Result<Dd<R>, SpecialErro
 /// Errors: [`SpecialError::ModulusOutOfRange`] unless `0 ≤ k < 1` (NaN included).
 ///
 /// ```
-/// use eulertop::special::ellipk;
+/// use eulertop_numerics::special::ellipk;
 /// // mpmath: ellipk(0.25) = 1.68575035481259604287120365780
 /// let kk = ellipk(&0.5_f64).unwrap();
 /// assert!((kk - 1.685750354812596).abs() < 1e-15);
@@ -137,7 +137,7 @@ pub fn ellipk<R: Real>(k: &R) -> Result<R, SpecialError> {
 /// [`SpecialError::Pole`] for `k = 0` (`K'(0) = ∞`).
 ///
 /// ```
-/// use eulertop::special::ellipkp;
+/// use eulertop_numerics::special::ellipkp;
 /// // mpmath: ellipk(1 - 0.25) = 2.15651564749964323262...
 /// let kp = ellipkp(&0.5_f64).unwrap();
 /// assert!((kp - 2.1565156474996432).abs() < 1e-15);

@@ -4,7 +4,7 @@
 //! differences.
 //!
 //! ```
-//! use eulertop::numbers::{Dual, Real, Scalar};
+//! use eulertop_numerics::numbers::{Dual, Real, Scalar};
 //! let x = Dual::var(0.5_f64);          // seed dx/dx = 1
 //! let y = x.sin() * x.clone();           // y = x sin x
 //! assert!((y.d - (0.5f64.sin() + 0.5 * 0.5f64.cos())).abs() < 1e-15);

@@ -26,7 +26,7 @@ impl JacobiFn {
     /// so `0` at `m = 1`.
     ///
     /// ```
-    /// use eulertop::special::{JacobiFn, ellipk, sncndn};
+    /// use eulertop_numerics::special::{JacobiFn, ellipk, sncndn};
     /// let (k, u) = (0.8_f64, 0.7_f64);
     /// let (s, c, d) = sncndn(&u, &k).unwrap();
     /// let m = k * k;

@@ -17,7 +17,7 @@ use crate::numbers::Real;
 /// [`SpecialError::NotFinite`].
 ///
 /// ```
-/// use eulertop::special::{jacobi_inverse, sncndn};
+/// use eulertop_numerics::special::{jacobi_inverse, sncndn};
 /// let (s, c, d) = sncndn(&-2.5_f64, &0.8).unwrap();   // K(0.8) ≈ 1.995, so -2.5 is in (-2K, -K)
 /// let u = jacobi_inverse(&s, &c, &d, &0.8).unwrap();
 /// assert!((u + 2.5).abs() < 1e-14);

@@ -15,7 +15,7 @@
 //! is no global precision setting.
 //!
 //! ```
-//! use eulertop::numbers::{Real, Scalar};
+//! use eulertop_numerics::numbers::{Real, Scalar};
 //! let x = rug::Float::with_val(256, 2);
 //! let r = Real::sqrt(&x);          // 256-bit square root of 2
 //! assert_eq!(Real::prec(&r), 256);
@@ -23,7 +23,9 @@
 //! assert!(back.magnitude() < 1e-75);
 //! ```
 
+#[cfg(feature = "arb")]
 mod ball;
+#[cfg(feature = "arb")]
 mod ball_elliptic;
 mod complex;
 mod dual;
@@ -33,6 +35,7 @@ pub mod gmp_kernels;
 mod mpfr;
 mod rational;
 
+#[cfg(feature = "arb")]
 pub use ball::{Ball, Decisions};
 pub use complex::{C64, Cplx};
 pub use dual::Dual;
@@ -49,7 +52,7 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 /// no `inf` or `nan`, no hexadecimal.
 ///
 /// ```
-/// use eulertop::numbers::is_decimal;
+/// use eulertop_numerics::numbers::is_decimal;
 /// assert!(is_decimal("-1.5e-3") && is_decimal(".5") && is_decimal("2."));
 /// assert!(!is_decimal("1_000") && !is_decimal("inf") && !is_decimal("0x10"));
 /// ```
@@ -87,8 +90,8 @@ pub fn is_decimal(s: &str) -> bool {
 /// (Then a value of 0 is an underflow.)
 ///
 /// ```
-/// assert!(eulertop::numbers::nonzero_mantissa("1.5e-324"));
-/// assert!(!eulertop::numbers::nonzero_mantissa("0.0e5"));
+/// assert!(eulertop_numerics::numbers::nonzero_mantissa("1.5e-324"));
+/// assert!(!eulertop_numerics::numbers::nonzero_mantissa("0.0e5"));
 /// ```
 pub fn nonzero_mantissa(t: &str) -> bool {
     let mant = t.split(['e', 'E']).next().unwrap_or("");
@@ -99,7 +102,7 @@ pub fn nonzero_mantissa(t: &str) -> bool {
 /// else, text that is not a decimal included.
 ///
 /// ```
-/// use eulertop::numbers::decimal_is_one;
+/// use eulertop_numerics::numbers::decimal_is_one;
 /// assert!(decimal_is_one("1.000") && decimal_is_one("10e-1"));
 /// assert!(!decimal_is_one("0.99999999999999999999999"));
 /// ```
@@ -286,7 +289,7 @@ pub trait Real: Scalar + PartialOrd {
     /// precision travels with each value and can be raised for intermediate results.
     ///
     /// ```
-    /// use eulertop::numbers::{Dual, Real};
+    /// use eulertop_numerics::numbers::{Dual, Real};
     /// assert!(<f64 as Real>::FIXED && <Dual<f64> as Real>::FIXED);
     /// assert!(!<rug::Float as Real>::FIXED);
     /// ```
@@ -305,7 +308,7 @@ pub trait Real: Scalar + PartialOrd {
     /// derivative parts).
     ///
     /// ```
-    /// use eulertop::numbers::{Dual, Real};
+    /// use eulertop_numerics::numbers::{Dual, Real};
     /// assert!(<f64 as Real>::PLAIN_F64 && !<Dual<f64> as Real>::PLAIN_F64);
     /// ```
     const PLAIN_F64: bool = false;
@@ -314,7 +317,7 @@ pub trait Real: Scalar + PartialOrd {
     /// calls; `None` for every other type.
     ///
     /// ```
-    /// use eulertop::numbers::Real;
+    /// use eulertop_numerics::numbers::Real;
     /// let x = rug::Float::with_val(128, 2);
     /// assert_eq!(x.as_mpfr(), Some(&x));
     /// assert!(2.0_f64.as_mpfr().is_none());
@@ -327,9 +330,10 @@ pub trait Real: Scalar + PartialOrd {
     fn from_mpfr(_x: rug::Float) -> Option<Self> {
         None
     }
-    /// Is every value of this type an enclosure (a [`Ball`], or a dual number over
-    /// balls), so that an algorithm whose result is not an enclosure (an iteration
-    /// stopped after some steps) must not run on it?  `false` for every other type.
+    /// Is every value of this type an enclosure (an Arb ball, `Ball` with the feature
+    /// `arb`, or a dual number over balls), so that an algorithm whose result is not an
+    /// enclosure (an iteration stopped after some steps) must not run on it?  `false`
+    /// for every other type.
     const ENCLOSES: bool = false;
     /// Does this type check the domain of `ln` itself (the prover's symbols: an opaque
     /// symbol whose values are undefined where the argument is not positive), so that
@@ -337,10 +341,12 @@ pub trait Real: Scalar + PartialOrd {
     /// to prove)?  `false` for every numeric type.
     const DEFERS_DOMAIN_CHECKS: bool = false;
     /// The value as a [`Ball`] when the type is one; `None` for every other type.
+    #[cfg(feature = "arb")]
     fn as_ball(&self) -> Option<&Ball> {
         None
     }
     /// A [`Ball`] as a value of this type: `Some` exactly for [`Ball`].
+    #[cfg(feature = "arb")]
     fn from_ball(_x: Ball) -> Option<Self> {
         None
     }
@@ -449,7 +455,7 @@ pub trait Real: Scalar + PartialOrd {
     /// stated range the result is unspecified (but never a panic).
     ///
     /// ```
-    /// use eulertop::numbers::Real;
+    /// use eulertop_numerics::numbers::Real;
     /// let (s, c) = 0.5_f64.sin_cos_kernel();
     /// assert!((s - 0.5_f64.sin()).abs() <= f64::EPSILON / 2.0);
     /// assert!((c - 0.5_f64.cos()).abs() <= f64::EPSILON / 2.0);
@@ -507,7 +513,7 @@ pub trait Real: Scalar + PartialOrd {
     /// may answer a value that is not a constant, such as `σ` for `σ·x` with `x > 0`.
     ///
     /// ```
-    /// use eulertop::numbers::Real;
+    /// use eulertop_numerics::numbers::Real;
     /// assert_eq!((-2.5f64).signum_value(), -1.0);
     /// assert_eq!(0.0f64.signum_value(), 0.0);
     /// ```

@@ -31,8 +31,8 @@ const MAX_STEPS: usize = 64;
 /// [`SpecialError::NoConvergence`] if the chain does not converge in 64 steps.
 ///
 /// ```
-/// use eulertop::numbers::C64;
-/// use eulertop::special::sncndn_complex_modulus;
+/// use eulertop_numerics::numbers::C64;
+/// use eulertop_numerics::special::sncndn_complex_modulus;
 /// // mpmath: ellipfun('sn', mpc(0.7, 0.3), m=mpc(0.6, 0.4)**2)
 /// //   = (0.686872830304476434317506823729 + 0.207606714095479789806181357229j)
 /// let (sn, cn, _) = sncndn_complex_modulus(&C64::new(0.7, 0.3), &C64::new(0.6, 0.4)).unwrap();

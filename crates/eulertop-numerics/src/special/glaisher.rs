@@ -11,7 +11,7 @@ use crate::numbers::{ComplexScalar, Real, Scalar};
 /// nd sc sd cs ds`, each the quotient `p/q` of two of `sn`, `cn`, `dn` and `1`.
 ///
 /// ```
-/// use eulertop::special::JacobiFn;
+/// use eulertop_numerics::special::JacobiFn;
 /// assert_eq!(JacobiFn::ALL.len(), 12);
 /// assert_eq!(JacobiFn::from_name("cd"), Some(JacobiFn::Cd));
 /// assert_eq!(JacobiFn::Cd.name(), "cd");
@@ -87,7 +87,7 @@ impl JacobiFn {
     /// Where `p` and `q` of `pq = p/q` sit in `(sn, cn, dn)`: `None` for `n`, i.e. `1`.
     ///
     /// ```
-    /// use eulertop::special::JacobiFn;
+    /// use eulertop_numerics::special::JacobiFn;
     /// assert_eq!(JacobiFn::Cd.parts(), (Some(1), Some(2))); // cd = cn/dn
     /// assert_eq!(JacobiFn::Ns.parts(), (None, Some(0))); // ns = 1/sn
     /// assert_eq!(JacobiFn::Dn.parts(), (Some(2), None));
@@ -166,7 +166,7 @@ fn quotient<T: crate::numbers::Scalar>(
 /// (e.g. `nc` at `k = 1` for `|u| > 710` in `f64`, where `sech u` underflows).
 ///
 /// ```
-/// use eulertop::special::{jacobi, sncndn, JacobiFn};
+/// use eulertop_numerics::special::{jacobi, sncndn, JacobiFn};
 /// let (s, c, d) = sncndn(&0.7_f64, &0.5).unwrap();
 /// assert!((jacobi(JacobiFn::Sd, &0.7_f64, &0.5).unwrap() - s / d).abs() < 1e-15);
 /// assert!(jacobi(JacobiFn::Ns, &0.0_f64, &0.5).is_err()); // pole
@@ -180,7 +180,7 @@ pub fn jacobi<R: Real>(f: JacobiFn, u: &R, k: &R) -> Result<R, SpecialError> {
 /// each of `fs`, in order.  The first error (pole, overflow) of any of them is returned.
 ///
 /// ```
-/// use eulertop::special::{jacobi, jacobi_set, JacobiFn};
+/// use eulertop_numerics::special::{jacobi, jacobi_set, JacobiFn};
 /// let fs = [JacobiFn::Sn, JacobiFn::Cd, JacobiFn::Ds];
 /// let v = jacobi_set(&fs, &0.7_f64, &0.5).unwrap();
 /// for (f, x) in fs.iter().zip(&v) {
@@ -196,7 +196,7 @@ pub fn jacobi_set<R: Real>(fs: &[JacobiFn], u: &R, k: &R) -> Result<Vec<R>, Spec
 /// [`jacobi`] for the parameter `m = k²`, any real `m` (as [`sncndn_m`](super::sncndn_m)).
 ///
 /// ```
-/// use eulertop::special::{jacobi_m, JacobiFn};
+/// use eulertop_numerics::special::{jacobi_m, JacobiFn};
 /// // mpmath: ellipfun('cd', 0.7, m=-0.5) = 0.67688118364789303415
 /// let cd = jacobi_m(JacobiFn::Cd, &0.7_f64, &-0.5).unwrap();
 /// assert!((cd - 0.676881183647893).abs() < 1e-15);
@@ -208,7 +208,7 @@ pub fn jacobi_m<R: Real>(f: JacobiFn, u: &R, m: &R) -> Result<R, SpecialError> {
 /// [`jacobi_set`] for the parameter `m = k²`, any real `m` (as [`jacobi_m`]).
 ///
 /// ```
-/// use eulertop::special::{jacobi_m, jacobi_m_set, JacobiFn};
+/// use eulertop_numerics::special::{jacobi_m, jacobi_m_set, JacobiFn};
 /// let v = jacobi_m_set(&[JacobiFn::Cd, JacobiFn::Nc], &0.7_f64, &-0.5).unwrap();
 /// assert_eq!(v[0], jacobi_m(JacobiFn::Cd, &0.7_f64, &-0.5).unwrap());
 /// assert_eq!(v[1], jacobi_m(JacobiFn::Nc, &0.7_f64, &-0.5).unwrap());
@@ -276,8 +276,8 @@ fn real<R: Real>(
 /// [`sncndn_complex`]).
 ///
 /// ```
-/// use eulertop::numbers::C64;
-/// use eulertop::special::{jacobi_complex, sncndn_complex, JacobiFn};
+/// use eulertop_numerics::numbers::C64;
+/// use eulertop_numerics::special::{jacobi_complex, sncndn_complex, JacobiFn};
 /// let z = C64::new(0.5, 0.25);
 /// let (s, c, _) = sncndn_complex(&z, &0.5).unwrap();
 /// let sc = jacobi_complex(JacobiFn::Sc, &z, &0.5).unwrap();
@@ -292,8 +292,8 @@ pub fn jacobi_complex<C: ComplexScalar>(f: JacobiFn, u: &C, k: &C::R) -> Result<
 /// `sn, cn, dn`.
 ///
 /// ```
-/// use eulertop::numbers::C64;
-/// use eulertop::special::{jacobi_complex, jacobi_complex_set, JacobiFn};
+/// use eulertop_numerics::numbers::C64;
+/// use eulertop_numerics::special::{jacobi_complex, jacobi_complex_set, JacobiFn};
 /// let z = C64::new(0.5, 0.25);
 /// let v = jacobi_complex_set(&[JacobiFn::Sc, JacobiFn::Dn], &z, &0.5).unwrap();
 /// assert_eq!(v[0], jacobi_complex(JacobiFn::Sc, &z, &0.5).unwrap());
@@ -310,8 +310,8 @@ pub fn jacobi_complex_set<C: ComplexScalar>(
 /// [`sncndn_complex_m`](super::sncndn_complex_m)).
 ///
 /// ```
-/// use eulertop::numbers::C64;
-/// use eulertop::special::{jacobi_complex_m_set, sncndn_complex_m, JacobiFn};
+/// use eulertop_numerics::numbers::C64;
+/// use eulertop_numerics::special::{jacobi_complex_m_set, sncndn_complex_m, JacobiFn};
 /// let z = C64::new(0.5, 0.25);
 /// let (s, _, d) = sncndn_complex_m(&z, &-0.5).unwrap();
 /// let v = jacobi_complex_m_set(&[JacobiFn::Sd], &z, &-0.5).unwrap();

@@ -6,24 +6,34 @@
 //! 4000 bits (`reports/performance.md`).  Arb
 //! returns balls that contain the exact values; their midpoints are rounded to the
 //! target precision, and a ball relatively wider than `2^(−prec)` (which does not happen
-//! for these arguments) falls back to MPFR, so the result is within one ulp.
+//! for these arguments) falls back to MPFR, so the result is within one ulp.  Without
+//! the feature `arb` every evaluation is MPFR's correctly rounded `sin_cos`.
 
+#[cfg(feature = "arb")]
 use flint_sys::arb::{arb_clear, arb_init, arb_rel_accuracy_bits, arb_sin_cos};
+#[cfg(feature = "arb")]
 use flint_sys::arb_types::arb_struct;
+#[cfg(feature = "arb")]
 use flint_sys::arf::{arf_get_mpfr, arf_set_mpfr};
+#[cfg(feature = "arb")]
 use flint_sys::deps::{__mpfr_struct, mpfr_rnd_t_MPFR_RNDN};
 use rug::{Assign, Float};
+#[cfg(feature = "arb")]
 use std::mem::MaybeUninit;
 
 /// Precision (bits) from which Arb is used.
+#[cfg(feature = "arb")]
 const ARB_MIN_PREC: u32 = 64;
 
 /// Extra bits of the Arb evaluation.
+#[cfg(feature = "arb")]
 const ARB_GUARD: u32 = 16;
 
 /// An initialised Arb ball, cleared on drop.
+#[cfg(feature = "arb")]
 struct Ball(arb_struct);
 
+#[cfg(feature = "arb")]
 impl Ball {
     fn new() -> Self {
         let mut b = MaybeUninit::<arb_struct>::uninit();
@@ -35,6 +45,7 @@ impl Ball {
     }
 }
 
+#[cfg(feature = "arb")]
 impl Drop for Ball {
     fn drop(&mut self) {
         // SAFETY: the ball was initialised by arb_init and is cleared once.
@@ -43,6 +54,7 @@ impl Drop for Ball {
 }
 
 /// `(sin z, cos z)` into `s` and `c` (which keep their precisions).
+#[cfg(feature = "arb")]
 pub(crate) fn sin_cos_into(z: &Float, s: &mut Float, c: &mut Float) {
     let p = s.prec().max(c.prec());
     if p < ARB_MIN_PREC || z.is_zero() || !z.is_finite() || !arb_sin_cos_into(z, s, c, p) {
@@ -50,8 +62,15 @@ pub(crate) fn sin_cos_into(z: &Float, s: &mut Float, c: &mut Float) {
     }
 }
 
+/// `(sin z, cos z)` into `s` and `c` (which keep their precisions), from MPFR.
+#[cfg(not(feature = "arb"))]
+pub(crate) fn sin_cos_into(z: &Float, s: &mut Float, c: &mut Float) {
+    (s, c).assign(z.sin_cos_ref());
+}
+
 /// Arb's `sin_cos` at `p + ARB_GUARD` bits; `false` (nothing written) when a ball is
 /// relatively wider than `2^(−p)`.
+#[cfg(feature = "arb")]
 fn arb_sin_cos_into(z: &Float, s: &mut Float, c: &mut Float, p: u32) -> bool {
     let (mut x, mut bs, mut bc) = (Ball::new(), Ball::new(), Ball::new());
     let prec = i64::from(p + ARB_GUARD);

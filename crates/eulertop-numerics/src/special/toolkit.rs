@@ -9,7 +9,7 @@ use crate::numbers::Real;
 /// `jtheta(j, z, q)`.
 ///
 /// ```
-/// use eulertop::special::{ToolkitFn, ellipe};
+/// use eulertop_numerics::special::{ToolkitFn, ellipe};
 /// let f = ToolkitFn::from_name("ellipe").unwrap();
 /// assert_eq!(f.arity(), 1);
 /// assert_eq!(f.eval(&[0.5_f64]).unwrap(), ellipe(&0.5_f64).unwrap());

@@ -3,7 +3,7 @@
 //! engine uses (two consecutive steps at working precision, or an exact zero).
 //!
 //! ```
-//! use eulertop::linalg::newton::{newton, Limits, System};
+//! use eulertop_numerics::linalg::newton::{newton, Limits, System};
 //! // x² − 2 = 0 from x = 1
 //! struct Root2;
 //! impl System<f64> for Root2 {
@@ -31,7 +31,7 @@ fn abs<T: Scalar + PartialOrd>(x: &T) -> T {
 /// is exactly zero (a singular matrix).
 ///
 /// ```
-/// use eulertop::linalg::newton::solve;
+/// use eulertop_numerics::linalg::newton::solve;
 /// let x = solve(vec![vec![2.0, 1.0], vec![1.0, 3.0]], vec![3.0, 5.0]).unwrap();
 /// assert_eq!(x, vec![0.8, 1.4]);
 /// ```

@@ -17,7 +17,7 @@
 //! cn, dn are sin, cos, 1) is refused with a message.
 //!
 //! ```
-//! use eulertop::numbers::{Ball, Real};
+//! use eulertop_numerics::numbers::{Ball, Real};
 //! let (u, k) = (Ball::exact(0.7, 128), Ball::exact(0.8, 128));
 //! let (s, c, d) = Real::sncndn_by_rule(&u, &k).unwrap();
 //! // mpmath: ellipfun('sn', 0.7, m=0.64) = 0.618755648952545342744...

@@ -14,14 +14,21 @@
 //! The amplitude of `E(u)` is the continuous one: `atan2(sn, cn)` plus the whole turns
 //! `2π·round((u − F(atan2(sn, cn), k))/(4K))`.
 //!
+//! With the feature `arb` (balls):
+//!
 //! ```
-//! use eulertop::numbers::{Ball, Dual, Real};
+//! # #[cfg(feature = "arb")]
+//! # fn main() {
+//! use eulertop_numerics::numbers::{Ball, Dual, Real};
 //! // d/dk sn(0.7, k) at k = 0.8, against the same derivative of f64 dual numbers
 //! let k = Dual::new(Ball::exact(0.8, 128), Ball::exact(1.0, 128));
 //! let u = Dual::constant(Ball::exact(0.7, 128));
 //! let (s, _, _) = Real::sncndn_by_rule(&u, &k).unwrap();
-//! let (sf, _, _) = eulertop::special::sncndn(&Dual::constant(0.7_f64), &Dual::new(0.8, 1.0)).unwrap();
+//! let (sf, _, _) = eulertop_numerics::special::sncndn(&Dual::constant(0.7_f64), &Dual::new(0.8, 1.0)).unwrap();
 //! assert!((s.d.mid_f64() - sf.d).abs() < 1e-13);
+//! # }
+//! # #[cfg(not(feature = "arb"))]
+//! # fn main() {}
 //! ```
 
 use super::{Dual, Real};
@@ -99,7 +106,7 @@ pub(super) fn jacobi_inverse<R: Real>(
     ellipf(&s.atan2(c), k)
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "arb"))]
 mod tests {
     use super::*;
     use crate::numbers::Ball;

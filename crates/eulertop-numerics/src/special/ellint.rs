@@ -130,7 +130,7 @@ fn f_agm_tangent<R: Real>(q0: i64, r0: &R, kp: &R) -> Result<R, SpecialError> {
 /// [`SpecialError::ArgumentTooLarge`] for `|φ|/(π/2) ≥ 2⁴⁰`.
 ///
 /// ```
-/// use eulertop::special::{ellipf, ellipk};
+/// use eulertop_numerics::special::{ellipf, ellipk};
 /// // mpmath: ellipf(1, m=0.25) = 1.03735612000217729162882159570
 /// let f = ellipf(&1.0_f64, &0.5).unwrap();
 /// assert!((f - 1.0373561200021773).abs() < 1e-15);

@@ -55,7 +55,7 @@ fn zeta_times_k<R: Real>(
 /// `|φ|/(π/2) ≥ 2⁴⁰`.
 ///
 /// ```
-/// use eulertop::special::{ellipe, ellipeinc, ellipf, ellipk, jacobizeta};
+/// use eulertop_numerics::special::{ellipe, ellipeinc, ellipf, ellipk, jacobizeta};
 /// let (phi, k) = (0.8_f64, 0.6_f64);
 /// let z = jacobizeta(&phi, &k).unwrap();
 /// let direct = ellipeinc(&phi, &k).unwrap()
@@ -101,7 +101,7 @@ pub fn jacobizeta<R: Real>(phi: &R, k: &R) -> Result<R, SpecialError> {
 /// `|φ|/(π/2) ≥ 2⁴⁰`.
 ///
 /// ```
-/// use eulertop::special::heumanlambda;
+/// use eulertop_numerics::special::heumanlambda;
 /// // mpmath, from the definition: Λ₀(1, 0.5) = 0.792745183008071035953588061453
 /// let l = heumanlambda(&1.0_f64, &0.5).unwrap();
 /// assert!((l - 0.792745183008071).abs() < 1e-15);

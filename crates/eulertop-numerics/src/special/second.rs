@@ -37,7 +37,7 @@ pub(crate) fn complete_e<R: Real>(k: &R) -> Result<R, SpecialError> {
 /// Errors: [`SpecialError::ModulusOutOfRange`] unless `0 ≤ k ≤ 1` (NaN included).
 ///
 /// ```
-/// use eulertop::special::ellipe;
+/// use eulertop_numerics::special::ellipe;
 /// // mpmath: ellipe(0.25) = 1.46746220933942715545979526699
 /// let e = ellipe(&0.5_f64).unwrap();
 /// assert!((e - 1.4674622093394272).abs() < 1e-15);
@@ -91,7 +91,7 @@ pub(crate) fn reduced_e<R: Real>(s: &R, c2: &R, k: &R) -> Result<R, SpecialError
 /// `|φ|/(π/2) ≥ 2⁴⁰`.
 ///
 /// ```
-/// use eulertop::special::{ellipe, ellipeinc};
+/// use eulertop_numerics::special::{ellipe, ellipeinc};
 /// // mpmath: ellipe(1, m=0.25) = 0.964876454268627485458878625679
 /// let e = ellipeinc(&1.0_f64, &0.5).unwrap();
 /// assert!((e - 0.9648764542686275).abs() < 1e-15);

@@ -17,7 +17,7 @@
 //!   refused.
 //!
 //! ```
-//! use eulertop::numbers::{Ball, Decisions, Real, Scalar};
+//! use eulertop_numerics::numbers::{Ball, Decisions, Real, Scalar};
 //! let two = Ball::exact(2.0, 128);
 //! let r = Real::sqrt(&two);
 //! // the ball of √2 is tight (it excludes the nearest double) and its square holds 2
@@ -52,7 +52,7 @@ fn undecided() {
 /// own): the count of undecided comparisons only grows.
 ///
 /// ```
-/// use eulertop::numbers::{Ball, Decisions};
+/// use eulertop_numerics::numbers::{Ball, Decisions};
 /// let outer = Decisions::start();
 /// let _ = Ball::with_radius(1.0, 0.5, 64) < Ball::exact(1.2, 64); // undecided
 /// let inner = Decisions::start();
@@ -76,7 +76,7 @@ impl Decisions {
 /// A real ball of Arb at a working precision (bits).
 ///
 /// ```
-/// use eulertop::numbers::{Ball, Real};
+/// use eulertop_numerics::numbers::{Ball, Real};
 /// let x = Ball::with_radius(0.5, 1e-10, 128); // [0.5 ± 1e-10]
 /// let s = Real::sin(&x);                       // every sin of the ball
 /// assert!(s.contains_f64(0.479425538604203) && s.rad_f64() < 2e-10);

@@ -3,10 +3,11 @@
 //! and Newton's method for small square systems.  Part of the numbers layer: it knows
 //! nothing about the Euler top.
 
+#[cfg(feature = "arb")]
 pub mod krawczyk;
 pub mod newton;
 
-use crate::numbers::{ComplexScalar, Scalar};
+use crate::numbers::{ComplexScalar, Real, Scalar};
 use std::ops::{Add, Mul, Neg, Sub};
 
 /// The ring operations that sums, products, determinants and commutators need.  Every
@@ -33,6 +34,34 @@ pub struct Mat3<S>(pub [[S; 3]; 3]);
 /// A 2×2 matrix, row-major.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Mat2<S>(pub [[S; 2]; 2]);
+
+/// A value whose components are rounded to a given precision: a real scalar or a
+/// [`Vec3`] of them (and, downstream, anything built of them).
+///
+/// ```
+/// use eulertop_numerics::linalg::{AtPrec, Vec3};
+/// let f = |x: f64| rug::Float::with_val(256, x);
+/// let v = Vec3::new(f(1.0), f(2.0), f(3.0));
+/// assert!(v.at_prec(64).0.iter().all(|x| x.prec() == 64));
+/// assert_eq!(0.5_f64.at_prec(64), 0.5);
+/// ```
+pub trait AtPrec {
+    /// The same value with each component rounded to `bits` bits (a fixed-precision
+    /// type such as `f64` is unchanged).
+    fn at_prec(&self, bits: u32) -> Self;
+}
+
+impl<R: Real> AtPrec for R {
+    fn at_prec(&self, bits: u32) -> Self {
+        self.with_prec(bits)
+    }
+}
+
+impl<R: Real> AtPrec for Vec3<R> {
+    fn at_prec(&self, bits: u32) -> Self {
+        Vec3(std::array::from_fn(|i| self.0[i].with_prec(bits)))
+    }
+}
 
 impl<S: Scalar> Vec3<S> {
     /// `(x, y, z)`.
@@ -166,7 +195,7 @@ impl<S: Scalar> Mat3<S> {
     /// of rows `i+1` and `i+2` (indices mod 3), each entry one [`Scalar::det2`].
     ///
     /// ```
-    /// use eulertop::linalg::Mat3;
+    /// use eulertop_numerics::linalg::Mat3;
     /// let a = Mat3([[2.0, 0.0, 1.0], [1.0, 3.0, 0.0], [0.0, 1.0, 4.0]]);
     /// // adj(A) = cof(A)ᵀ, and A·adj(A) = det(A)·I
     /// let p = a.clone() * a.cofactors().transpose();
@@ -193,7 +222,7 @@ impl<S: Scalar> Mat3<S> {
     /// of `Pᵢⱼ + Pⱼᵢ`).
     ///
     /// ```
-    /// use eulertop::linalg::Mat3;
+    /// use eulertop_numerics::linalg::Mat3;
     /// let a = Mat3([[2.0, 0.0, 1.0], [1.0, 3.0, 0.0], [0.0, 1.0, 4.0]]);
     /// let p = Mat3([[0.0, -3.0, 2.0], [3.0, 0.0, -1.0], [-2.0, 1.0, 0.0]]);
     /// let plain = a.clone() * p.clone() * a.transpose();

@@ -60,7 +60,7 @@ fn nome_landen<R: Real>(k: &R) -> R {
 /// Errors: [`SpecialError::ModulusOutOfRange`] unless `0 ≤ k < 1`.
 ///
 /// ```
-/// use eulertop::special::nome;
+/// use eulertop_numerics::special::nome;
 /// // mpmath: qfrom(m=0.25) = 0.0179723870089672399988196929490
 /// let q = nome(&0.5_f64).unwrap();
 /// assert!((q - 0.01797238700896724).abs() < 1e-17);
@@ -229,7 +229,7 @@ fn transformed<R: Real>(j: u32, theta: &R, q: &R) -> Result<R, SpecialError> {
 /// `|z|/π ≥ 2³⁹`.
 ///
 /// ```
-/// use eulertop::special::jtheta;
+/// use eulertop_numerics::special::jtheta;
 /// // mpmath: jtheta(3, 0.5, 0.1) = 1.10797722982633339705325175845
 /// let t3 = jtheta(3, &0.5_f64, &0.1).unwrap();
 /// assert!((t3 - 1.1079772298263334).abs() < 1e-15);

@@ -14,8 +14,8 @@
 //! sound; a good one makes `K(X)` small), and the products are formed in balls.
 //!
 //! ```
-//! use eulertop::linalg::krawczyk::{krawczyk, BallSystem};
-//! use eulertop::numbers::{Ball, Scalar};
+//! use eulertop_numerics::linalg::krawczyk::{krawczyk, BallSystem};
+//! use eulertop_numerics::numbers::{Ball, Scalar};
 //! // x² − 2 = 0
 //! struct Root2;
 //! impl BallSystem for Root2 {

@@ -143,7 +143,7 @@ mod imp {
 /// it did.  Call it once, at the start of `main`, before any other thread runs.
 ///
 /// ```
-/// let k = eulertop::numbers::gmp_kernels::select();
+/// let k = eulertop_numerics::numbers::gmp_kernels::select();
 /// // the results of GMP are the same either way
 /// let x = rug::Float::with_val(8192, 3).sqrt();
 /// let err = (x.clone() * &x - 3u32).abs();

@@ -29,8 +29,8 @@ use crate::numbers::{ComplexScalar, Real, Scalar};
 /// (argument at a pole).
 ///
 /// ```
-/// use eulertop::numbers::C64;
-/// use eulertop::special::sncndn_complex;
+/// use eulertop_numerics::numbers::C64;
+/// use eulertop_numerics::special::sncndn_complex;
 /// // mpmath: ellipfun('sn', mpc(0.5, 0.25), m=0.25)
 /// //   = (0.492218840478357096475607622427 + 0.215722356526344564680618469113j)
 /// let (sn, cn, dn) = sncndn_complex(&C64::new(0.5, 0.25), &0.5).unwrap();
@@ -95,8 +95,8 @@ fn part(label: &'static str, period: &'static str) -> impl Fn(SpecialError) -> S
 /// Errors: as [`sncndn_complex`].
 ///
 /// ```
-/// use eulertop::numbers::C64;
-/// use eulertop::special::sncndn_complex_m;
+/// use eulertop_numerics::numbers::C64;
+/// use eulertop_numerics::special::sncndn_complex_m;
 /// // mpmath: ellipfun('cn', mpc(0.5, 0.25), m=-0.5)
 /// //   = (0.906711785018456790013598506369 - 0.128651621685050470852382626965j)
 /// let (_, cn, _) = sncndn_complex_m(&C64::new(0.5, 0.25), &-0.5).unwrap();

@@ -100,7 +100,7 @@ fn sncndn_mp<R: Real>(u: &R, spec: Spec<'_, R>, n: u32, w: u32) -> Result<(R, R,
 /// Errors: as [`sncndn`]; an argument error names its index in `us`.
 ///
 /// ```
-/// use eulertop::special::{sncndn, sncndn_many};
+/// use eulertop_numerics::special::{sncndn, sncndn_many};
 /// let us = [0.1_f64, 0.7, 2.5, -40.0];
 /// let many = sncndn_many(&us, &0.8).unwrap();
 /// for (u, v) in us.iter().zip(&many) {
@@ -151,7 +151,7 @@ pub fn sncndn_many<R: Real>(us: &[R], k: &R) -> Result<Vec<(R, R, R)>, SpecialEr
 /// [`SpecialError::ArgumentTooLarge`] if `|u|/K ≥ 2⁵⁰`.
 ///
 /// ```
-/// use eulertop::special::sncndn;
+/// use eulertop_numerics::special::sncndn;
 /// // mpmath: ellipfun('sn', 0.7, m=0.25) = 0.634293276335112372021362809680
 /// //         ellipfun('cn', 0.7, m=0.25) = 0.773092516841334311031368435940
 /// let (sn, cn, dn) = sncndn(&0.7_f64, &0.5).unwrap();
@@ -191,7 +191,7 @@ pub fn sncndn<R: Real>(u: &R, k: &R) -> Result<(R, R, R), SpecialError> {
 /// [`sncndn`].
 ///
 /// ```
-/// use eulertop::special::sncndn_m;
+/// use eulertop_numerics::special::sncndn_m;
 /// // mpmath: ellipfun('sn', 0.7, m=-0.5) = 0.66395932651367945152
 /// let (sn, cn, dn) = sncndn_m(&0.7_f64, &-0.5).unwrap();
 /// assert!((sn - 0.6639593265136795).abs() < 1e-15);
@@ -224,7 +224,7 @@ pub fn sncndn_m<R: Real>(u: &R, m: &R) -> Result<(R, R, R), SpecialError> {
 /// Errors: as [`sncndn`]; [`SpecialError::ModulusOutOfRange`] also for `k > 1`.
 ///
 /// ```
-/// use eulertop::special::{am, ellipk};
+/// use eulertop_numerics::special::{am, ellipk};
 /// // mpmath: ellipf(am, m) inverts am; am(K, k) = π/2
 /// let k = 0.9_f64;
 /// let kk = ellipk(&k).unwrap();
