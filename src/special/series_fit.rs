@@ -40,38 +40,84 @@ fn estrin10(c: &[f64], x: f64, x2: f64, x4: f64, x8: f64) -> f64 {
     a4.mul_add(x8, b1.mul_add(x4, b0))
 }
 
+/// `x = m + m_lo − c` on the interval `i` of `m` and what the sums need of it:
+/// `x = xs + xr` (`|xr| ≤ ulp(xs)`), `x² = x2 + x2e`, `x³ = x3 + x3e` (exact), `x⁴`, `x⁸`.
+struct Offset {
+    i: usize,
+    xs: f64,
+    xr: f64,
+    x2: f64,
+    x2e: f64,
+    x3: f64,
+    x3e: f64,
+    x4: f64,
+    x8: f64,
+}
+
+impl Offset {
+    /// The offset of `m + m_lo` (`0 < m < last/64`, `|m_lo| ≤ ulp(m)`) from the midpoint
+    /// of its interval `⌊64m⌋` (`min(⌊64m⌋, last − 1)`).
+    #[inline(always)]
+    fn new(m: f64, m_lo: f64, last: usize) -> Self {
+        // `0 ≤ f < last`: the conversion is exact (`as i32` is shorter than `as usize`)
+        let f = (m * 64.0).floor().min((last - 1) as f64);
+        let (xh, xe) = two_sum(m, -f.mul_add(1.0 / 64.0, 1.0 / 128.0));
+        let (xs, xr) = fast_two_sum(xh, xe + m_lo);
+        let (x2, x2e) = two_prod(xs, xs);
+        let (x3, x3e) = two_prod(x2, xs);
+        Offset {
+            i: f as i32 as usize,
+            xs,
+            xr,
+            x2,
+            x2e,
+            x3,
+            x3e: x2e.mul_add(xs, x3e),
+            x4: x2 * x2,
+            x8: x2 * x2 * (x2 * x2),
+        }
+    }
+
+    /// `c₀ + … + c₉x⁹` ([`estrin10`]).
+    #[inline(always)]
+    fn poly10(&self, c: &[f64]) -> f64 {
+        estrin10(c, self.xs, self.x2, self.x4, self.x8)
+    }
+
+    /// The low parts of `cⱼxʲ` for `j = 1, 2, 3` (`c` = `[c₁, c₁ₗₒ, c₂, …]`, `p` the low
+    /// halves of the exact products `cⱼ·xʲ` of the leading parts): `p + cⱼ·(xʲ)ₗₒ +
+    /// cⱼₗₒ·xʲ` with `(xʲ)ₗₒ` including `j·xʲ⁻¹·xr`.
+    #[inline(always)]
+    fn low_parts(&self, c: &[f64], p: [f64; 3]) -> f64 {
+        let l1 = c[1].mul_add(self.xs, c[0].mul_add(self.xr, p[0]));
+        let x2l = (2.0 * self.xs).mul_add(self.xr, self.x2e);
+        let l2 = c[3].mul_add(self.x2, c[2].mul_add(x2l, p[1]));
+        let x3l = (3.0 * self.x2).mul_add(self.xr, self.x3e);
+        let l3 = c[5].mul_add(self.x3, c[4].mul_add(x3l, p[2]));
+        l1 + (l2 + l3)
+    }
+}
+
 /// The nome `q` and the scale `π/(2K)` as a double-double `(hi, lo)` of the modulus with
 /// `κ² = m + m_lo` (`0 < m < FIT_MAX_M`, `|m_lo| ≤ ulp(m)`): `q` to about an ulp, the
 /// scale to [`SCALE_BOUND`] relative.
 ///
-/// With `x = m + m_lo − c = xs + xr` (`|xr| ≤ ulp(xs)`), `x² = x2 + x2ₑ` and
-/// `x³ = x3 + x3ₑ` (exact products), the terms `cⱼxʲ`, `j = 1, 2, 3`, are `pⱼ + pⱼₑ` (the
-/// exact products of the leading parts) plus the lower parts of `cⱼ`, `xʲ` and
-/// `j·xʲ⁻¹·xr` in `f64`; `x⁴·T(x)` (`|x⁴T| < 2⁻²⁴`) in `f64`.  Every `pⱼ` is smaller
-/// than the sum before it, so the leading parts are added by fast two-sums.
+/// The terms `cⱼxʲ`, `j = 1, 2, 3`, are the exact products `pⱼ + pⱼₑ` of the leading
+/// parts plus [`Offset::low_parts`]; `x⁴·T(x)` (`|x⁴T| < 2⁻²⁴`) in `f64`.  Every `pⱼ`
+/// is smaller than the sum before it, so the leading parts are added by fast two-sums.
 #[inline(always)]
 pub(crate) fn series_data(m: f64, m_lo: f64) -> (f64, (f64, f64)) {
-    // the interval `f = ⌊64m⌋` (`0 ≤ f < INTERVALS`: the conversion is exact; `as i32`
-    // is a shorter conversion than `as usize`)
-    let f = (m * 64.0).floor().min((INTERVALS - 1) as f64);
-    let i = f as i32 as usize;
-    let (s, n) = (&SCALE[i], &NOME[i]);
-    let (xh, xe) = two_sum(m, -f.mul_add(1.0 / 64.0, 1.0 / 128.0));
-    let (xs, xr) = fast_two_sum(xh, xe + m_lo);
-    let (x2, x2e) = two_prod(xs, xs);
-    let (x3, x3e) = two_prod(x2, xs);
-    let x3e = x2e.mul_add(xs, x3e);
-    let (x4, x8) = (x2 * x2, x2 * x2 * (x2 * x2));
-    let qm = xs.mul_add(estrin10(&n[1..], xs, x2, x4, x8), n[0]);
+    let o = Offset::new(m, m_lo, INTERVALS);
+    let (s, n) = (&SCALE[o.i], &NOME[o.i]);
+    let qm = o.xs.mul_add(o.poly10(&n[1..]), n[0]);
     let q = m.mul_add(qm, m_lo * qm);
-    let tail = estrin10(&s[8..], xs, x2, x4, x8);
-    let (p1, p1e) = two_prod(s[2], xs);
-    let (p2, p2e) = two_prod(s[4], x2);
-    let (p3, p3e) = two_prod(s[6], x3);
-    let l1 = s[3].mul_add(xs, s[2].mul_add(xr, p1e));
-    let l2 = s[5].mul_add(x2, s[4].mul_add((2.0 * xs).mul_add(xr, x2e), p2e));
-    let l3 = s[7].mul_add(x3, s[6].mul_add((3.0 * x2).mul_add(xr, x3e), p3e));
-    let lo = x4.mul_add(tail, s[1] + l1 + (l2 + l3));
+    let (p1, p1e) = two_prod(s[2], o.xs);
+    let (p2, p2e) = two_prod(s[4], o.x2);
+    let (p3, p3e) = two_prod(s[6], o.x3);
+    let lo = o.x4.mul_add(
+        o.poly10(&s[8..]),
+        s[1] + o.low_parts(&s[2..8], [p1e, p2e, p3e]),
+    );
     let (h1, e1) = fast_two_sum(s[0], p1);
     let (h2, e2) = fast_two_sum(h1, p2);
     let (h3, e3) = fast_two_sum(h2, p3);
