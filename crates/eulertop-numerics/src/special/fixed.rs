@@ -252,26 +252,29 @@ impl FixedModulus<f64> {
     #[inline(always)]
     fn with_cached<T>(spec: Spec<'_, f64>, f: impl FnOnce(&FixedModulus<f64>) -> T) -> T {
         let key = spec.key();
-        FIXED_F64.with(|c| {
-            with_fma(
-                #[inline(always)]
-                || {
-                    let mut c = c.borrow_mut();
-                    let c = &mut *c;
-                    if let Some((_, data)) = c.slots.iter().flatten().find(|e| e.0 == key) {
-                        return f(data);
-                    }
-                    if !c.seen.contains(&key) {
-                        c.seen = [key, c.seen[0]];
-                        return f(&FixedModulus::new(spec));
-                    }
-                    let i = c.next;
-                    c.next = 1 - i;
-                    let (_, data) = c.slots[i].insert((key, FixedModulus::new(spec)));
-                    f(data)
-                },
-            )
-        })
+        FIXED_F64.with(
+            #[inline(always)]
+            |c| {
+                with_fma(
+                    #[inline(always)]
+                    || {
+                        let mut c = c.borrow_mut();
+                        let c = &mut *c;
+                        if let Some((_, data)) = c.slots.iter().flatten().find(|e| e.0 == key) {
+                            return f(data);
+                        }
+                        if !c.seen.contains(&key) {
+                            c.seen = [key, c.seen[0]];
+                            return f(&FixedModulus::new(spec));
+                        }
+                        let i = c.next;
+                        c.next = 1 - i;
+                        let (_, data) = c.slots[i].insert((key, FixedModulus::new(spec)));
+                        f(data)
+                    },
+                )
+            },
+        )
     }
 }
 

@@ -36,7 +36,9 @@
 //!   per-modulus quantity (the nome from Jacobi's series in `ε = (1−√κ')/(2(1+√κ'))`,
 //!   `π/(2K)` from two AGM steps, the period at imaginary argument from a table-driven
 //!   logarithm) is computed in `f64` / double-double (module `dd`), so a new modulus
-//!   costs about as much as one evaluation; the last few are cached per thread.
+//!   costs about as much as one evaluation; for `f64` the series takes the nome and
+//!   `π/(2K)` from piecewise polynomial fits in `κ²` instead (module `series_fit`, no
+//!   square root or division); the last few are cached per thread.
 //!   Measured (dense sweeps, `reports/accuracy.md`): absolute error below 2 ε for every
 //!   `k`.
 //! * **Moduli chain** (module `landen`, multi-precision): the descending Landen / Gauss
@@ -139,6 +141,8 @@ mod multi;
 mod phase;
 mod reduce;
 mod second;
+mod series_fit;
+mod series_fit_table;
 mod sincos;
 #[cfg(test)]
 mod tests;

@@ -40,9 +40,14 @@
 //! is exact enough for `|u| ≤ 256 K` with the cancellation the fast reduction accepts
 //! ([`Theta::with_bottom`]).  At imaginary argument the period in `y = πt/(2K')` is
 //! `πK/(2K') = −ln(q')/2`, also in double-double ([`Dd::ln`]).
+//!
+//! For `f64` the series (`κ² < 0.8125`) takes the nome and the scale from piecewise
+//! polynomial fits in `κ²` instead (module `series_fit`, [`Theta::with_bottom`]): no
+//! square root, division or series on the way to the evaluation.
 
 use super::bottom::Bottom;
 use super::dd::{Dd, fast_two_sum, two_prod, two_sum, with_value};
+use super::series_fit::{FIT_MAX_M, SCALE_BOUND, series_data};
 use crate::numbers::Real;
 
 /// `π/2` as a double-double.
@@ -146,8 +151,14 @@ impl<R: Real> Theta<R> {
     /// `κ² = 0.81`, where the fast reduction accepts 15 bits of cancellation rather
     /// than 20.  `precise` asks for the scale to about `2⁻⁸⁵` for every modulus
     /// (through `1/θ₃(0, q⁴)` in double-double; the retry of a declined reduction).
+    /// The series of `f64` (not `precise`) for `κ² < FIT_MAX_M` takes the fits instead
+    /// ([`Theta::fitted`]); `Dual` numbers keep the formulas, whose derivative parts
+    /// are exact.
     #[inline(always)]
     pub(crate) fn with_bottom(m: &Dd<R>, mc: &Dd<R>, imaginary: bool, precise: bool) -> Self {
+        if R::PLAIN_F64 && !imaginary && !precise && m.v() > 0.0 && m.v() < FIT_MAX_M {
+            return Self::fitted(m);
+        }
         let (a, b) = if imaginary { (mc, m) } else { (m, mc) };
         let kind = if precise {
             ScaleKind::Precise
@@ -194,6 +205,33 @@ impl<R: Real> Theta<R> {
             scale,
             period,
             kp: if imaginary { mc.hi.sqrt() } else { one.zero() },
+        }
+    }
+
+    /// The series data of an `f64` modulus with `κ² = m < FIT_MAX_M` from the fits in `m`
+    /// (module `series_fit`): the scale good to `SCALE_BOUND = 2⁻⁷³`, so the fast
+    /// reduction accepts `|j| ≤ 256` and 16 bits of cancellation (`w` keeps `2⁻⁵⁷`).
+    #[inline(always)]
+    fn fitted(m: &Dd<R>) -> Self {
+        let one = m.hi.one();
+        let (q, (s_hi, s_lo)) = series_data(m.v(), m.lo);
+        let pow = powers(&one.from_f64(q));
+        Theta {
+            cancel: SCALE_BOUND * 2f64.powi(57),
+            bottom: Bottom::Series,
+            j_max: J_FAST,
+            inv_period: std::f64::consts::FRAC_2_PI,
+            ratio: ratios(&pow, false),
+            pow,
+            scale: Dd {
+                hi: one.from_f64(s_hi),
+                lo: s_lo,
+            },
+            period: Dd {
+                hi: one.from_f64(PI_2.0),
+                lo: PI_2.1,
+            },
+            kp: one.zero(),
         }
     }
 
