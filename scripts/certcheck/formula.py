@@ -271,12 +271,9 @@ def series_binding(cert, src, catalogue=None):
             cert.chart_counts = series_eval.chart_residuals(tr, catalogue, env_of)
         except ValueError as e:
             raise FormulaMismatch(str(e))
-    try:
-        comps = series_components(cert, src)
-    except Unsupported as e:
-        return f"text (order, variable and coefficients bound; on power series: {e})"
-    except Exception as e:  # noqa: BLE001 - whatever the evaluator cannot do binds by text only
-        return f"text (order, variable and coefficients bound; not evaluated: {type(e).__name__} {e})"
+    comps, text = evaluated_components(cert, src, "coefficients")
+    if text:
+        return text
     if len(comps) != len(tr.claims):
         raise FormulaMismatch(f"the formula has {len(comps)} component(s), the sclaim lines {len(tr.claims)}")
     z = cert.zero
@@ -300,12 +297,9 @@ def refuted_series_binding(cert, src, below):
     if e >= below:
         raise FormulaMismatch(f"srefute {name}: the coefficient of t^{e} is not below the claimed order "
                               f"(t^{below}), so it cannot refute it")
-    try:
-        comps = series_components(cert, src)
-    except Unsupported as e:
-        return f"text (order, variable and coefficient bound; on power series: {e})"
-    except Exception as e:  # noqa: BLE001 - whatever the evaluator cannot do binds by text only
-        return f"text (order, variable and coefficient bound; not evaluated: {type(e).__name__} {e})"
+    comps, text = evaluated_components(cert, src, "coefficient")
+    if text:
+        return text
     if not 1 <= j <= len(comps):
         raise FormulaMismatch(f"srefute {name}: component {j} of a formula with {len(comps)}")
     if comps[j - 1].hi <= e or not cert.eq(comps[j - 1].coef(e, cert.zero), coef):
@@ -363,6 +357,17 @@ def existence_binding(cert, src, catalogue=None):
     except Unsupported as e:
         raise FormulaMismatch(f"the existence proof is not evaluated here: {e}")
     return "evaluated"
+
+
+def evaluated_components(cert, src, what):
+    """(the components of series_components, None), or (None, the text binding) where
+    the evaluator does not reach the formula on power series."""
+    try:
+        return series_components(cert, src), None
+    except Unsupported as e:
+        return None, f"text (order, variable and {what} bound; on power series: {e})"
+    except Exception as e:  # noqa: BLE001 - whatever the evaluator cannot do binds by text only
+        return None, f"text (order, variable and {what} bound; not evaluated: {type(e).__name__} {e})"
 
 
 def series_components(cert, src):
